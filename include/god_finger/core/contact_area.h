@@ -1,0 +1,75 @@
+// The god-finger contact area (paper, section 3): from one contact point, normal, depth and
+// the coupling vector v = p_I - p_GO, the positions of n_SGO sub-god-objects on the mesh.
+//
+// Conventions (all vectors in the mesh frame, metres):
+//  - c_n is the unit contact normal pointing OUT of the touched object (towards the finger).
+//    Pressing pushes the interface into the object, so v . c_n < 0.
+//  - Eq. 1: r = r_max (1 - exp(-s / D0')) with s = max(0, -v . c_n), the coupling spring's
+//    compression along the normal. The paper's -v.c_n sign with c_n outward; s is clamped so
+//    that r = 0 when the finger pulls away and r is never negative; r -> r_max as s grows.
+//  - Eq. 2: d_i = r * alpha^(-(v/|v|) . r_i), with the exponent 0 when |v| = 0 (then d_i = r).
+//    r_i is the radial vector orthogonal to c_n, before it is carried onto a face; a
+//    tangential push along r_i shortens d_i and lengthens the opposite side (the area spreads
+//    backwards, the paper's Fig. 4).
+//  - Every sub-god-object has the true contact's normal and depth (the paper, end of 3.2).
+//  - Edge and vertex contacts: each radial vector goes to the incident face whose wedge at
+//    the contact contains it (chooseStartFace); it is dropped if that face is beyond tau_a
+//    or the friction cone (kDropped). Dropped entries stay in the array, flagged.
+//  - No heap allocation: the result has a fixed capacity of ContactParams::kMaxSubGodObjects.
+#pragma once
+
+#include "god_finger/core/contact_params.h"
+#include "god_finger/core/surface_walk.h"
+
+#include <array>
+
+namespace god_finger
+{
+struct ContactQuery
+{
+  SurfaceLocation location;                              // c_p on the mesh (face, barycentric, feature)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();     // c_n, unit, outward
+  double depth = 0.0;                                    // c_d (m), copied to every sub-god-object
+  Eigen::Vector3d coupling = Eigen::Vector3d::Zero();    // v = p_I - p_GO (m)
+  // The previous step's first radial vector, for a basis continuous in time (radial_frame.h);
+  // zero for none.
+  Eigen::Vector3d reference_tangent = Eigen::Vector3d::Zero();
+};
+
+struct SubGodObject
+{
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, on the mesh
+  Eigen::Vector3d radial = Eigen::Vector3d::Zero();    // r_i, unit, orthogonal to c_n
+  double target_distance = 0.0;                        // d_i (m)
+  WalkResult walk;                                     // where and why the walk ended
+  bool dropped() const
+  {
+    return walk.stop == WalkStop::kDropped;
+  }
+};
+
+struct ContactArea
+{
+  bool valid = false;         // false: bad input (non-finite, location off the mesh); count = 0
+  double radius = 0.0;        // r (m), Eq. 1
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  double depth = 0.0;
+  Eigen::Vector3d first_tangent = Eigen::Vector3d::UnitX();  // pass back as reference_tangent
+  int count = 0;                                             // entries used in sub_god_objects
+  int active = 0;                                            // entries not dropped
+  std::array<SubGodObject, ContactParams::kMaxSubGodObjects> sub_god_objects;
+};
+
+// Eq. 1. `coupling` is v, `normal` is c_n (unit, outward). Never negative, never NaN for
+// finite input.
+double contactRadius(const Eigen::Vector3d& coupling, const Eigen::Vector3d& normal, const ContactParams& params);
+// Eq. 2 for one unit radial vector.
+double radialDistance(double radius, const Eigen::Vector3d& coupling, const Eigen::Vector3d& radial,
+                      const ContactParams& params);
+
+// The whole method for one contact. `params` must be valid (validate()); `out` is
+// overwritten. Never allocates, never throws.
+void computeContactArea(const TriangleMesh& mesh, const ContactQuery& query, const ContactParams& params,
+                        ContactArea* out);
+}  // namespace god_finger

@@ -1,0 +1,20 @@
+// Loads triangle meshes from files through assimp (STL, OBJ, PLY, DAE, OFF and whatever
+// else assimp reads). All meshes of a file are merged into one soup in the file's own
+// coordinates (node transforms applied), triangles in the file's order; `scale` multiplies
+// coordinates (URDF <mesh scale>). Units are the file's, taken as metres.
+//
+// Errors: a missing file, an unreadable or corrupt file, or a file with no triangles throw
+// InputError with one line naming the file and the reason.
+#pragma once
+
+#include "god_finger/core/triangle_mesh.h"
+
+#include <string>
+
+namespace god_finger
+{
+TriangleSoup loadTriangleSoup(const std::string& path, const Eigen::Vector3d& scale = Eigen::Vector3d::Ones());
+// loadTriangleSoup + TriangleMesh::build; build errors are reported with the file name.
+TriangleMesh loadTriangleMesh(const std::string& path, const Eigen::Vector3d& scale = Eigen::Vector3d::Ones(),
+                              const MeshBuildOptions& options = MeshBuildOptions());
+}  // namespace god_finger
