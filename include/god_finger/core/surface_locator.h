@@ -18,7 +18,7 @@ namespace god_finger
 {
 class SurfaceLocator
 {
-public:
+ public:
   static constexpr int kLeafSize = 4;
 
   explicit SurfaceLocator(const TriangleMesh& mesh);
@@ -38,7 +38,7 @@ public:
     return depth_;
   }
 
-private:
+ private:
   struct Node
   {
     Eigen::Vector3d lower;
@@ -46,7 +46,7 @@ private:
     int first;  // internal: index of the left child (right = first + 1); leaf: first entry in order_
     int count;  // 0 for internal nodes
   };
-  int buildNode(int begin, int end, std::vector<Eigen::Vector3d>& centroids, int level);
+  void buildNode(int index, int begin, int end, const std::vector<Eigen::Vector3d>& centroids, int level);
 
   const TriangleMesh* mesh_;
   std::vector<Node> nodes_;
