@@ -172,8 +172,14 @@ FaceChoice chooseFaceAround(const TriangleMesh& mesh, const int* feature_vertice
 WalkResult finish(const TriangleMesh& mesh, int face, const Eigen::Vector3d& barycentric, double walked, int crossings,
                   WalkStop stop)
 {
+  // The feature label uses the usual tolerance, but the position is not snapped onto it:
+  // a sub-god-object 1e-9 m from an edge stays 1e-9 m from it.
   WalkResult result;
   result.location = locationFromBarycentric(mesh, face, barycentric);
+  const Eigen::Vector3d lambda = barycentric.cwiseMax(0.0) / barycentric.cwiseMax(0.0).sum();
+  result.location.barycentric = lambda;
+  result.location.point =
+      lambda[0] * mesh.corner(face, 0) + lambda[1] * mesh.corner(face, 1) + lambda[2] * mesh.corner(face, 2);
   result.position = result.location.point;
   result.walked = walked;
   result.crossings = crossings;

@@ -1,0 +1,93 @@
+// Closest-point location: the tree agrees with brute force, features are classified at
+// exact vertices and edges, and the tree is balanced (depth grows like log n).
+#include "god_finger/core/mesh_primitives.h"
+#include "god_finger/core/surface_locator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace god_finger
+{
+namespace
+{
+TEST(SurfaceLocator, AgreesWithBruteForce)
+{
+  const TriangleMesh mesh = TriangleMesh::build(makeTorus(0.06, 0.02, 48, 24));
+  const SurfaceLocator locator(mesh);
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> coordinate(-0.1, 0.1);
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    const Eigen::Vector3d query(coordinate(random), coordinate(random), 0.5 * coordinate(random));
+    const SurfaceLocation found = locator.closest(query);
+    double best = std::numeric_limits<double>::infinity();
+    for (int face = 0; face < mesh.triangleCount(); ++face)
+    {
+      best = std::min(best, locateOnFace(mesh, face, query).distance);
+    }
+    ASSERT_GE(found.face, 0);
+    EXPECT_EQ(found.distance, best) << "query " << query.transpose();
+    EXPECT_NEAR((found.point - query).norm(), found.distance, 1e-15);
+    EXPECT_NEAR(found.barycentric.sum(), 1.0, 1e-15);
+    EXPECT_GE(found.barycentric.minCoeff(), 0.0);
+  }
+}
+
+TEST(SurfaceLocator, ClassifiesVerticesEdgesAndFaces)
+{
+  const TriangleMesh mesh = TriangleMesh::build(makeBox(Eigen::Vector3d(0.5, 0.5, 0.5)));
+  const SurfaceLocator locator(mesh);
+  SurfaceLocation location = locator.closest(Eigen::Vector3d(0.7, -0.9, 0.8));
+  EXPECT_EQ(location.feature, FeatureKind::kVertex);
+  EXPECT_EQ(location.point, Eigen::Vector3d(0.5, -0.5, 0.5));
+  EXPECT_EQ(location.barycentric.maxCoeff(), 1.0);
+  EXPECT_EQ(mesh.corner(location.face, location.feature_index), Eigen::Vector3d(0.5, -0.5, 0.5));
+
+  location = locator.closest(Eigen::Vector3d(0.9, 0.25, 0.9));
+  EXPECT_EQ(location.feature, FeatureKind::kEdge);
+  EXPECT_NEAR((location.point - Eigen::Vector3d(0.5, 0.25, 0.5)).norm(), 0.0, 1e-15);
+  const int k = location.feature_index;
+  EXPECT_EQ(location.barycentric[(k + 2) % 3], 0.0);  // exactly zero opposite the edge
+
+  // Within the tolerance of an edge counts as on it; outside it does not.
+  location = locator.closest(Eigen::Vector3d(0.5 - 1e-9, 0.25, 0.9));
+  EXPECT_EQ(location.feature, FeatureKind::kEdge);
+  location = locator.closest(Eigen::Vector3d(0.5 - 1e-5, 0.25, 0.9));
+  EXPECT_EQ(location.feature, FeatureKind::kFace);
+  location = locator.closest(Eigen::Vector3d(0.1, 0.3, 0.9));
+  EXPECT_EQ(location.feature, FeatureKind::kFace);
+  EXPECT_NEAR(location.distance, 0.4, 1e-15);
+}
+
+TEST(SurfaceLocator, TreeDepthGrowsLogarithmically)
+{
+  for (int subdivisions = 1; subdivisions <= 6; ++subdivisions)
+  {
+    const TriangleMesh mesh = TriangleMesh::build(makeIcosphere(1.0, subdivisions));
+    const SurfaceLocator locator(mesh);
+    const double n = mesh.triangleCount();
+    // Median splits: depth = ceil(log2(n / leaf)) + 1.
+    EXPECT_LE(locator.depth(), std::ceil(std::log2(n / SurfaceLocator::kLeafSize)) + 1) << n;
+    // About 64 bytes per leaf-sized group: well under the 200 bytes/triangle budget.
+    EXPECT_LT(static_cast<double>(locator.memoryBytes()) / n, 40.0);
+  }
+}
+
+TEST(SurfaceLocator, FarFromTheOrigin)
+{
+  TriangleSoup soup = makeIcosphere(0.05, 3);
+  for (Eigen::Vector3d& v : soup.vertices)
+  {
+    v += Eigen::Vector3d(1e4, 1e4, -1e4);
+  }
+  const TriangleMesh mesh = TriangleMesh::build(soup);
+  const SurfaceLocator locator(mesh);
+  const Eigen::Vector3d query = Eigen::Vector3d(1e4, 1e4, -1e4) + Eigen::Vector3d(0.0, 0.0, 0.08);
+  const SurfaceLocation location = locator.closest(query);
+  EXPECT_NEAR(location.distance, 0.03, 1e-3);  // the icosphere's pole vertex is at 0.05
+  EXPECT_TRUE(location.point.allFinite());
+}
+}  // namespace
+}  // namespace god_finger
