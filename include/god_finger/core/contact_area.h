@@ -27,10 +27,10 @@ namespace god_finger
 {
 struct ContactQuery
 {
-  SurfaceLocation location;                              // c_p on the mesh (face, barycentric, feature)
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();     // c_n, unit, outward
-  double depth = 0.0;                                    // c_d (m), copied to every sub-god-object
-  Eigen::Vector3d coupling = Eigen::Vector3d::Zero();    // v = p_I - p_GO (m)
+  SurfaceLocation location;                            // c_p on the mesh (face, barycentric, feature)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();   // c_n, unit, outward
+  double depth = 0.0;                                  // c_d (m), copied to every sub-god-object
+  Eigen::Vector3d coupling = Eigen::Vector3d::Zero();  // v = p_I - p_GO (m)
   // The previous step's first radial vector, for a basis continuous in time (radial_frame.h);
   // zero for none.
   Eigen::Vector3d reference_tangent = Eigen::Vector3d::Zero();
@@ -50,8 +50,8 @@ struct SubGodObject
 
 struct ContactArea
 {
-  bool valid = false;         // false: bad input (non-finite, location off the mesh); count = 0
-  double radius = 0.0;        // r (m), Eq. 1
+  bool valid = false;   // false: bad input (non-finite, location off the mesh); count = 0
+  double radius = 0.0;  // r (m), Eq. 1
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   double depth = 0.0;

@@ -10,9 +10,7 @@ namespace god_finger
 {
 class InputError : public std::runtime_error
 {
-public:
-  explicit InputError(const std::string& message) : std::runtime_error(message)
-  {
-  }
+ public:
+  explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
 }  // namespace god_finger

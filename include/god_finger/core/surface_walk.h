@@ -44,9 +44,9 @@ const char* walkStopName(WalkStop stop);
 struct WalkResult
 {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, on the surface
-  SurfaceLocation location;                              // where it ended (face, feature)
-  double walked = 0.0;                                   // m, along the surface
-  int crossings = 0;                                     // edges crossed
+  SurfaceLocation location;                            // where it ended (face, feature)
+  double walked = 0.0;                                 // m, along the surface
+  int crossings = 0;                                   // edges crossed
   WalkStop stop = WalkStop::kDistanceReached;
 };
 
@@ -54,9 +54,9 @@ struct WalkResult
 struct WalkLimits
 {
   Eigen::Vector3d contact_normal = Eigen::Vector3d::UnitZ();  // unit, outward
-  double normal_sign = 1.0;        // +1 or -1: orientation of the mesh against the contact normal
-  double cos_max_angle = 0.5;      // cos(tau_a)
-  double cos_friction = 0.7071;    // cos(atan(theta)); -2 when theta = +inf
+  double normal_sign = 1.0;      // +1 or -1: orientation of the mesh against the contact normal
+  double cos_max_angle = 0.5;    // cos(tau_a)
+  double cos_friction = 0.7071;  // cos(atan(theta)); -2 when theta = +inf
   WalkVariant variant = WalkVariant::kUnfold;
   int max_crossings = 4096;
 };

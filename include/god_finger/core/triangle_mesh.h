@@ -34,14 +34,14 @@ struct MeshHealth
 {
   int input_vertices = 0;
   int input_triangles = 0;
-  int welded_vertices = 0;            // repaired: duplicate vertices merged
-  int degenerate_triangles = 0;       // repaired: removed (zero area or repeated vertex)
-  int duplicate_triangles = 0;        // repaired: removed (same three vertices as another)
-  int flipped_triangles = 0;          // repaired: winding made consistent / outward
-  int boundary_edges = 0;             // reported: edges with one triangle (holes, open meshes)
-  int non_manifold_edges = 0;         // reported: edges with more than two triangles
-  int inconsistent_winding_edges = 0; // reported: left after repair (non-orientable surface)
-  int components = 0;                 // connected through manifold edges
+  int welded_vertices = 0;             // repaired: duplicate vertices merged
+  int degenerate_triangles = 0;        // repaired: removed (zero area or repeated vertex)
+  int duplicate_triangles = 0;         // repaired: removed (same three vertices as another)
+  int flipped_triangles = 0;           // repaired: winding made consistent / outward
+  int boundary_edges = 0;              // reported: edges with one triangle (holes, open meshes)
+  int non_manifold_edges = 0;          // reported: edges with more than two triangles
+  int inconsistent_winding_edges = 0;  // reported: left after repair (non-orientable surface)
+  int components = 0;                  // connected through manifold edges
 };
 
 struct MeshBuildOptions
@@ -55,7 +55,7 @@ struct MeshBuildOptions
 
 class TriangleMesh
 {
-public:
+ public:
   static constexpr int kBoundaryEdge = -1;
   static constexpr int kNonManifoldEdge = -2;
 
@@ -121,7 +121,7 @@ public:
   // Bytes held by this mesh (vertices, triangles, normals, neighbour and vertex tables).
   std::size_t memoryBytes() const;
 
-private:
+ private:
   std::vector<Eigen::Vector3d> vertices_;
   std::vector<Eigen::Vector3i> triangles_;
   std::vector<Eigen::Vector3d> normals_;
