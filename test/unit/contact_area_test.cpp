@@ -4,8 +4,10 @@
 #include "god_finger/core/mesh_primitives.h"
 #include "god_finger/core/radial_frame.h"
 #include "god_finger/core/surface_locator.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <atomic>
 #include <cmath>
@@ -14,7 +16,7 @@
 #include <new>
 
 // Counts heap allocations in this test binary, to prove the steady state allocates nothing.
-static std::atomic<long> g_allocations{ 0 };
+static std::atomic<long> g_allocations{0};
 void* operator new(std::size_t size)
 {
   ++g_allocations;
@@ -43,17 +45,9 @@ constexpr double kDegree = M_PI / 180.0;
 TriangleMesh bigFlatTriangle()
 {
   TriangleSoup soup;
-  soup.vertices = { { -10, -10, 0 }, { 10, -10, 0 }, { 0, 10, 0 } };
-  soup.triangles = { { 0, 1, 2 } };
+  soup.vertices = {{-10, -10, 0}, {10, -10, 0}, {0, 10, 0}};
+  soup.triangles = {{0, 1, 2}};
   return TriangleMesh::build(soup);
-}
-
-ContactParams unlimitedParams()
-{
-  ContactParams params;
-  params.max_angle = M_PI;
-  params.friction = std::numeric_limits<double>::infinity();
-  return params;
 }
 
 TEST(ContactRadius, Equation1Limits)
@@ -183,10 +177,8 @@ TEST(ContactArea, NonFiniteInputIsRejectedWithoutOutput)
 
 class CubeContact : public ::testing::Test
 {
-protected:
-  CubeContact() : mesh_(TriangleMesh::build(makeBox(Eigen::Vector3d(0.5, 0.5, 0.5)))), locator_(mesh_)
-  {
-  }
+ protected:
+  CubeContact() : mesh_(TriangleMesh::build(makeBox(Eigen::Vector3d(0.5, 0.5, 0.5)))), locator_(mesh_) {}
   // True when p lies on the cube's surface (one coordinate at +-0.5, the others inside).
   static bool onCubeSurface(const Eigen::Vector3d& p)
   {
@@ -291,7 +283,7 @@ TEST_F(CubeContact, VertexContactSpreadsOverTheThreeFaces)
   computeContactArea(mesh_, query, params, &area);
   ASSERT_TRUE(area.valid);
   EXPECT_EQ(area.active, 9);
-  int faces_used[3] = { 0, 0, 0 };
+  int faces_used[3] = {0, 0, 0};
   for (int i = 0; i < area.count; ++i)
   {
     const SubGodObject& sgo = area.sub_god_objects[i];
@@ -313,46 +305,47 @@ TEST_F(CubeContact, VertexContactSpreadsOverTheThreeFaces)
 
 TEST(ContactArea, InvariantUnderScaleAndOffset)
 {
+  // A contact inside a face of a tessellated sphere (so that the located face, hence the
+  // contact normal, is unambiguous), repeated on the same mesh scaled and moved far away.
   const TriangleSoup base = makeIcosphere(0.05, 3);
-  const Eigen::Vector3d probe(0.013, -0.021, 0.06);
-  const Eigen::Vector3d coupling(0.002, 0.001, -0.004);
+  const TriangleMesh base_mesh = TriangleMesh::build(base);
+  const int face = 100;
+  const Eigen::Vector3d probe =
+      (base_mesh.corner(face, 0) + 2.0 * base_mesh.corner(face, 1) + 3.0 * base_mesh.corner(face, 2)) / 6.0;
+  const Eigen::Vector3d normal = base_mesh.normals()[face];
+  const Eigen::Vector3d coupling = Eigen::Vector3d(0.002, 0.001, -0.001) - 0.004 * normal;
   ContactParams params;
   params.sub_god_objects = 12;
   ContactArea reference;
-  Eigen::Vector3d reference_point;
   {
-    const TriangleMesh mesh = TriangleMesh::build(base);
-    const SurfaceLocator locator(mesh);
+    const SurfaceLocator locator(base_mesh);
     ContactQuery query;
     query.location = locator.closest(probe);
-    query.normal = mesh.normals()[query.location.face];
+    ASSERT_EQ(query.location.face, face);
+    query.normal = normal;
     query.coupling = coupling;
-    computeContactArea(mesh, query, params, &reference);
-    reference_point = query.location.point;
+    computeContactArea(base_mesh, query, params, &reference);
     ASSERT_TRUE(reference.valid);
-    ASSERT_GT(reference.active, 0);
+    ASSERT_EQ(reference.active, 12);
   }
   const struct
   {
     double scale;
     Eigen::Vector3d offset;
-  } cases[] = { { 1.0, Eigen::Vector3d(1e4, -1e4, 1e4) }, { 1e-3, Eigen::Vector3d::Zero() },
-                { 1e3, Eigen::Vector3d::Zero() }, { 1e-3, Eigen::Vector3d(3.0, 2.0, 1.0) } };
+  } cases[] = {{1.0, Eigen::Vector3d(1e4, -1e4, 1e4)},
+               {1e-3, Eigen::Vector3d::Zero()},
+               {1e3, Eigen::Vector3d::Zero()},
+               {1e-3, Eigen::Vector3d(3.0, 2.0, 1.0)}};
   for (const auto& c : cases)
   {
-    TriangleSoup soup = base;
-    for (Eigen::Vector3d& v : soup.vertices)
-    {
-      v = c.scale * v + c.offset;
-    }
-    const TriangleMesh mesh = TriangleMesh::build(soup);
+    const TriangleMesh mesh = TriangleMesh::build(test::transformed(base, c.scale, c.offset));
     const SurfaceLocator locator(mesh);
     ContactParams scaled = params;
     scaled.max_radius *= c.scale;
     scaled.distance_constant *= c.scale;
     ContactQuery query;
     query.location = locator.closest(c.scale * probe + c.offset);
-    query.normal = mesh.normals()[query.location.face];
+    query.normal = normal;
     query.coupling = c.scale * coupling;
     ContactArea area;
     computeContactArea(mesh, query, scaled, &area);
@@ -366,10 +359,10 @@ TEST(ContactArea, InvariantUnderScaleAndOffset)
       worst = std::max(worst, (area.sub_god_objects[i].position - expected).norm() / (c.scale * reference.radius));
       EXPECT_EQ(area.sub_god_objects[i].walk.stop, reference.sub_god_objects[i].walk.stop);
     }
-    // Relative to the contact radius; at 1e4 m from the origin double precision alone gives
-    // about 1e4 * 2e-16 / 5e-3 = 4e-10.
+    // Relative to the contact radius. Double precision alone limits it: at 1e4 m from the
+    // origin a coordinate carries 1e4 * 1.1e-16 = 1.8e-12 m, that is 3e-10 of a 6 mm radius.
     EXPECT_LT(worst, 1e-8) << "scale " << c.scale << " offset " << c.offset.transpose();
-    std::printf("[ scale %g offset %g ] worst SGO error / radius = %.3g\n", c.scale, c.offset.norm(), worst);
+    std::printf("[ scale %g offset %g m ] worst SGO error / radius = %.3g\n", c.scale, c.offset.norm(), worst);
   }
 }
 

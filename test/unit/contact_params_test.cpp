@@ -29,22 +29,21 @@ TEST(ContactParams, EveryBadValueIsNamedWithItsRange)
     std::string expected;
   };
   const Case cases[] = {
-    { [](ContactParams& p) { p.max_radius = 0.0; }, "parameter 'r_max' = 0 is out of range (0, 1000] (m)" },
-    { [&](ContactParams& p) { p.max_radius = nan; }, "parameter 'r_max' = nan is out of range (0, 1000] (m)" },
-    { [&](ContactParams& p) { p.max_radius = inf; }, "parameter 'r_max' = inf is out of range (0, 1000] (m)" },
-    { [](ContactParams& p) { p.distance_constant = -0.004; },
-      "parameter 'd0' = -0.004 is out of range (0, 1000] (m)" },
-    { [](ContactParams& p) { p.alpha = 0.5; }, "parameter 'alpha' = 0.5 is out of range [1, 100] (dimensionless)" },
-    { [](ContactParams& p) { p.sub_god_objects = 2; }, "parameter 'n_sgo' = 2 is out of range [3, 64] (count)" },
-    { [](ContactParams& p) { p.sub_god_objects = 65; }, "parameter 'n_sgo' = 65 is out of range [3, 64] (count)" },
-    { [](ContactParams& p) { p.max_angle = 4.0; }, "parameter 'tau_a' = 4 is out of range (0, pi] (rad)" },
-    { [](ContactParams& p) { p.max_angle = 0.0; }, "parameter 'tau_a' = 0 is out of range (0, pi] (rad)" },
-    { [](ContactParams& p) { p.friction = -1.0; },
-      "parameter 'friction' = -1 is out of range [0, inf] (dimensionless)" },
-    { [&](ContactParams& p) { p.friction = nan; },
-      "parameter 'friction' = nan is out of range [0, inf] (dimensionless)" },
-    { [](ContactParams& p) { p.max_crossings = 0; },
-      "parameter 'max_crossings' = 0 is out of range [1, 1000000] (count)" },
+      {[](ContactParams& p) { p.max_radius = 0.0; }, "parameter 'r_max' = 0 is out of range (0, 1000] (m)"},
+      {[&](ContactParams& p) { p.max_radius = nan; }, "parameter 'r_max' = nan is out of range (0, 1000] (m)"},
+      {[&](ContactParams& p) { p.max_radius = inf; }, "parameter 'r_max' = inf is out of range (0, 1000] (m)"},
+      {[](ContactParams& p) { p.distance_constant = -0.004; }, "parameter 'd0' = -0.004 is out of range (0, 1000] (m)"},
+      {[](ContactParams& p) { p.alpha = 0.5; }, "parameter 'alpha' = 0.5 is out of range [1, 100] (dimensionless)"},
+      {[](ContactParams& p) { p.sub_god_objects = 2; }, "parameter 'n_sgo' = 2 is out of range [3, 64] (count)"},
+      {[](ContactParams& p) { p.sub_god_objects = 65; }, "parameter 'n_sgo' = 65 is out of range [3, 64] (count)"},
+      {[](ContactParams& p) { p.max_angle = 4.0; }, "parameter 'tau_a' = 4 is out of range (0, pi] (rad)"},
+      {[](ContactParams& p) { p.max_angle = 0.0; }, "parameter 'tau_a' = 0 is out of range (0, pi] (rad)"},
+      {[](ContactParams& p) { p.friction = -1.0; },
+       "parameter 'friction' = -1 is out of range [0, inf] (dimensionless)"},
+      {[&](ContactParams& p) { p.friction = nan; },
+       "parameter 'friction' = nan is out of range [0, inf] (dimensionless)"},
+      {[](ContactParams& p) { p.max_crossings = 0; },
+       "parameter 'max_crossings' = 0 is out of range [1, 1000000] (count)"},
   };
   for (const Case& c : cases)
   {

@@ -2,8 +2,8 @@
 // first tangent is transported, including through the fixed basis's singular direction.
 #include "god_finger/core/radial_frame.h"
 
-#include <Eigen/Geometry>
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <random>
@@ -34,7 +34,7 @@ TEST(RadialFrame, RadialVectorsAreEvenlySpacedAndOrthogonal)
 {
   const Eigen::Vector3d n = Eigen::Vector3d(0.3, -0.4, 0.8).normalized();
   const Eigen::Vector3d t = defaultTangent(n);
-  for (int count : { 3, 8, 64 })
+  for (int count : {3, 8, 64})
   {
     for (int i = 0; i < count; ++i)
     {

@@ -1,11 +1,12 @@
 // Algorithm 1 (the sub-god-object walk) on the hard parts of real meshes: creases, many small
 // coplanar triangles, curved tessellations against the exact geodesic, borders, non-manifold
 // edges, needles, vertices, and runaway walks.
+#include "god_finger/core/surface_walk.h"
 #include "god_finger/core/mesh_primitives.h"
 #include "god_finger/core/surface_locator.h"
-#include "god_finger/core/surface_walk.h"
 
 #include <gtest/gtest.h>
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <cstdio>
@@ -36,8 +37,8 @@ TriangleMesh valley(double angle)
   TriangleSoup soup;
   const double c = std::cos(angle);
   const double s = std::sin(angle);
-  soup.vertices = { { -1, -1, 0 }, { 0, -1, 0 }, { 0, 1, 0 }, { -1, 1, 0 }, { c, -1, s }, { c, 1, s } };
-  soup.triangles = { { 0, 1, 2 }, { 0, 2, 3 }, { 1, 4, 5 }, { 1, 5, 2 } };
+  soup.vertices = {{-1, -1, 0}, {0, -1, 0}, {0, 1, 0}, {-1, 1, 0}, {c, -1, s}, {c, 1, s}};
+  soup.triangles = {{0, 1, 2}, {0, 2, 3}, {1, 4, 5}, {1, 5, 2}};
   return TriangleMesh::build(soup);
 }
 
@@ -69,8 +70,7 @@ TEST(SurfaceWalk, ConcaveCreaseUnfoldsAndProjects)
   EXPECT_GT((projected - unfolded).norm(), 1e-3);  // the two variants really differ here
 
   // tau_a below the crease angle: stop on the crease; the friction cone likewise.
-  walk = walkSurface(mesh, locator.closest(start), direction, distance,
-                     limitsFor(WalkVariant::kUnfold, angle - 1e-6));
+  walk = walkSurface(mesh, locator.closest(start), direction, distance, limitsFor(WalkVariant::kUnfold, angle - 1e-6));
   EXPECT_EQ(walk.stop, WalkStop::kAngleLimit);
   EXPECT_NEAR((walk.position - crossing).norm(), 0.0, 1e-14);
   EXPECT_NEAR(walk.walked, to_crease, 1e-14);
@@ -107,18 +107,18 @@ TEST(SurfaceWalk, ManySmallCoplanarTrianglesEqualOneBigTriangle)
     }
     const Eigen::Vector3d direction(std::cos(a), std::sin(a), 0.0);
     const double distance = length(random);
-    const WalkResult on_fine = walkSurface(fine, fine_locator.closest(start), direction, distance,
-                                           limitsFor(WalkVariant::kUnfold));
-    const WalkResult on_coarse = walkSurface(coarse, coarse_locator.closest(start), direction, distance,
-                                             limitsFor(WalkVariant::kUnfold));
+    const WalkResult on_fine =
+        walkSurface(fine, fine_locator.closest(start), direction, distance, limitsFor(WalkVariant::kUnfold));
+    const WalkResult on_coarse =
+        walkSurface(coarse, coarse_locator.closest(start), direction, distance, limitsFor(WalkVariant::kUnfold));
     ASSERT_EQ(on_fine.stop, WalkStop::kDistanceReached) << "trial " << trial;
     ASSERT_EQ(on_coarse.stop, WalkStop::kDistanceReached);
     const Eigen::Vector3d exact = start + distance * direction;
     worst = std::max(worst, (on_fine.position - exact).norm());
     worst = std::max(worst, (on_coarse.position - exact).norm());
     most_crossings = std::max(most_crossings, on_fine.crossings);
-    const WalkResult projected = walkSurface(fine, fine_locator.closest(start), direction, distance,
-                                             limitsFor(WalkVariant::kProject));
+    const WalkResult projected =
+        walkSurface(fine, fine_locator.closest(start), direction, distance, limitsFor(WalkVariant::kProject));
     EXPECT_NEAR((projected.position - exact).norm(), 0.0, 1e-12);
   }
   std::printf("[ grid 40x40 ] worst error %.3g m over up to %d crossings\n", worst, most_crossings);
@@ -138,12 +138,12 @@ TEST(SurfaceWalk, TessellatedSphereApproachesTheGreatCircle)
   const double distance = 0.3;
   std::mt19937_64 random(3);
   std::normal_distribution<double> gaussian;
-  double previous_error[2] = { 1e9, 1e9 };
+  double previous_error[2] = {1e9, 1e9};
   for (int subdivisions = 2; subdivisions <= 5; ++subdivisions)
   {
     const TriangleMesh mesh = TriangleMesh::build(makeIcosphere(radius, subdivisions));
     const SurfaceLocator locator(mesh);
-    double error[2] = { 0.0, 0.0 };
+    double error[2] = {0.0, 0.0};
     const int trials = 100;
     for (int trial = 0; trial < trials; ++trial)
     {
@@ -213,8 +213,8 @@ TEST(SurfaceWalk, NonManifoldEdgeStopsTheWalk)
 {
   TriangleSoup soup;
   // A flat square of two triangles, plus a fin standing on its diagonal.
-  soup.vertices = { { -1, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { -1, 1, 0 }, { 0, 0, 1 } };
-  soup.triangles = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 2, 4 } };
+  soup.vertices = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}};
+  soup.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 2, 4}};
   const TriangleMesh mesh = TriangleMesh::build(soup);
   ASSERT_EQ(mesh.health().non_manifold_edges, 1);
   const SurfaceLocator locator(mesh);
@@ -229,8 +229,8 @@ TEST(SurfaceWalk, NeedleTrianglesAreCrossedExactly)
   // A flat square whose middle is a sliver of height 1e-6 over a base of 2 (aspect 1e-6).
   TriangleSoup soup;
   const double h = 1e-6;
-  soup.vertices = { { -1, -1, 0 }, { 1, -1, 0 }, { 1, 0, 0 }, { 0, h, 0 }, { -1, 0, 0 }, { 1, 1, 0 }, { -1, 1, 0 } };
-  soup.triangles = { { 0, 1, 2 }, { 0, 2, 4 }, { 4, 2, 3 }, { 4, 3, 6 }, { 3, 2, 5 }, { 3, 5, 6 } };
+  soup.vertices = {{-1, -1, 0}, {1, -1, 0}, {1, 0, 0}, {0, h, 0}, {-1, 0, 0}, {1, 1, 0}, {-1, 1, 0}};
+  soup.triangles = {{0, 1, 2}, {0, 2, 4}, {4, 2, 3}, {4, 3, 6}, {3, 2, 5}, {3, 5, 6}};
   const TriangleMesh mesh = TriangleMesh::build(soup);
   ASSERT_EQ(mesh.triangleCount(), 6);
   ASSERT_EQ(mesh.health().degenerate_triangles, 0);
@@ -258,7 +258,7 @@ TEST(SurfaceWalk, ThroughAHighValenceVertex)
   }
   for (int i = 0; i < n; ++i)
   {
-    soup.triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+    soup.triangles.push_back({0, 1 + i, 1 + (i + 1) % n});
   }
   const TriangleMesh mesh = TriangleMesh::build(soup);
   ASSERT_EQ(mesh.vertexFacesEnd(0) - mesh.vertexFacesBegin(0), n);
@@ -268,7 +268,7 @@ TEST(SurfaceWalk, ThroughAHighValenceVertex)
     const double a = M_PI * i / n;  // half of them exactly along spokes
     const Eigen::Vector3d direction(std::cos(a), std::sin(a), 0.0);
     const Eigen::Vector3d start = -0.3 * direction;
-    for (WalkVariant variant : { WalkVariant::kProject, WalkVariant::kUnfold })
+    for (WalkVariant variant : {WalkVariant::kProject, WalkVariant::kUnfold})
     {
       const WalkResult walk = walkSurface(mesh, locator.closest(start), direction, 0.6, limitsFor(variant));
       EXPECT_EQ(walk.stop, WalkStop::kDistanceReached) << i;

@@ -1,0 +1,410 @@
+#include "god_finger/core/triangle_mesh.h"
+
+#include "god_finger/core/input_error.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <queue>
+#include <sstream>
+#include <tuple>
+#include <unordered_map>
+
+namespace god_finger
+{
+namespace
+{
+struct EdgeRecord
+{
+  int low;
+  int high;
+  int triangle;
+  int local;  // edge k of the triangle: corner k -> corner k+1
+  bool operator<(const EdgeRecord& other) const
+  {
+    return std::tie(low, high, triangle, local) < std::tie(other.low, other.high, other.triangle, other.local);
+  }
+};
+
+std::vector<EdgeRecord> sortedEdges(const std::vector<Eigen::Vector3i>& triangles)
+{
+  std::vector<EdgeRecord> edges;
+  edges.reserve(3 * triangles.size());
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = triangles[t][k];
+      const int b = triangles[t][(k + 1) % 3];
+      edges.push_back({std::min(a, b), std::max(a, b), t, k});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+// Welds vertices closer than `tolerance` (grid hashing; the first vertex of a cluster wins).
+std::vector<int> weld(const std::vector<Eigen::Vector3d>& vertices, double tolerance,
+                      std::vector<Eigen::Vector3d>* kept)
+{
+  std::vector<int> map(vertices.size());
+  std::unordered_map<std::int64_t, std::vector<int>> grid;
+  const double cell = tolerance > 0.0 ? tolerance : 1.0;
+  auto key = [](std::int64_t x, std::int64_t y, std::int64_t z)
+  { return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791); };
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    const Eigen::Vector3d& v = vertices[i];
+    const std::int64_t cx = static_cast<std::int64_t>(std::floor(v.x() / cell));
+    const std::int64_t cy = static_cast<std::int64_t>(std::floor(v.y() / cell));
+    const std::int64_t cz = static_cast<std::int64_t>(std::floor(v.z() / cell));
+    int found = -1;
+    for (int dx = -1; dx <= 1 && found < 0; ++dx)
+    {
+      for (int dy = -1; dy <= 1 && found < 0; ++dy)
+      {
+        for (int dz = -1; dz <= 1 && found < 0; ++dz)
+        {
+          const auto bucket = grid.find(key(cx + dx, cy + dy, cz + dz));
+          if (bucket == grid.end())
+          {
+            continue;
+          }
+          for (int candidate : bucket->second)
+          {
+            if (((*kept)[candidate] - v).norm() <= tolerance)
+            {
+              found = candidate;
+              break;
+            }
+          }
+        }
+      }
+    }
+    if (found < 0)
+    {
+      found = static_cast<int>(kept->size());
+      kept->push_back(v);
+      grid[key(cx, cy, cz)].push_back(found);
+    }
+    map[i] = found;
+  }
+  return map;
+}
+
+// True when triangle t has the directed edge a -> b.
+bool hasDirectedEdge(const Eigen::Vector3i& t, int a, int b)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    if (t[k] == a && t[(k + 1) % 3] == b)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+}  // namespace
+
+TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOptions& options)
+{
+  TriangleMesh mesh;
+  MeshHealth& health = mesh.health_;
+  health.input_vertices = static_cast<int>(soup.vertices.size());
+  health.input_triangles = static_cast<int>(soup.triangles.size());
+
+  Eigen::Vector3d lower = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d upper = -lower;
+  for (std::size_t i = 0; i < soup.vertices.size(); ++i)
+  {
+    const Eigen::Vector3d& v = soup.vertices[i];
+    if (!v.allFinite())
+    {
+      std::ostringstream message;
+      message << "vertex " << i << " has a non-finite coordinate (" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+      throw InputError(message.str());
+    }
+    lower = lower.cwiseMin(v);
+    upper = upper.cwiseMax(v);
+  }
+  const int vertex_count = static_cast<int>(soup.vertices.size());
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int index = soup.triangles[t][k];
+      if (index < 0 || index >= vertex_count)
+      {
+        std::ostringstream message;
+        message << "triangle " << t << " refers to vertex " << index << ", out of range [0, " << vertex_count << ")";
+        throw InputError(message.str());
+      }
+    }
+  }
+  if (soup.triangles.empty())
+  {
+    throw InputError("no triangles");
+  }
+  mesh.bounding_box_diagonal_ = (upper - lower).norm();
+
+  // Weld duplicate vertices.
+  std::vector<Eigen::Vector3d> welded;
+  const std::vector<int> remap =
+      weld(soup.vertices, options.relative_weld_tolerance * mesh.bounding_box_diagonal_, &welded);
+  health.welded_vertices = vertex_count - static_cast<int>(welded.size());
+
+  // Drop degenerate and duplicate triangles, remembering where each kept one came from.
+  std::vector<Eigen::Vector3i> triangles;
+  std::vector<int> source;
+  std::vector<std::array<int, 4>> seen;  // sorted corners + index, to find duplicates
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t)
+  {
+    const Eigen::Vector3i corners(remap[soup.triangles[t][0]], remap[soup.triangles[t][1]],
+                                  remap[soup.triangles[t][2]]);
+    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2])
+    {
+      ++health.degenerate_triangles;
+      continue;
+    }
+    const Eigen::Vector3d& a = welded[corners[0]];
+    const Eigen::Vector3d& b = welded[corners[1]];
+    const Eigen::Vector3d& c = welded[corners[2]];
+    const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+    if (!((b - a).cross(c - a).norm() >= options.relative_area_tolerance * longest) || longest == 0.0)
+    {
+      ++health.degenerate_triangles;
+      continue;
+    }
+    triangles.push_back(corners);
+    source.push_back(static_cast<int>(t));
+  }
+  {
+    std::vector<std::array<int, 4>> keys;
+    keys.reserve(triangles.size());
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
+    {
+      std::array<int, 3> sorted = {triangles[t][0], triangles[t][1], triangles[t][2]};
+      std::sort(sorted.begin(), sorted.end());
+      keys.push_back({sorted[0], sorted[1], sorted[2], t});
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<bool> duplicate(triangles.size(), false);
+    for (std::size_t i = 1; i < keys.size(); ++i)
+    {
+      if (keys[i][0] == keys[i - 1][0] && keys[i][1] == keys[i - 1][1] && keys[i][2] == keys[i - 1][2])
+      {
+        duplicate[keys[i][3]] = true;  // keys sorted by index last: the first one is kept
+      }
+    }
+    std::vector<Eigen::Vector3i> unique_triangles;
+    std::vector<int> unique_source;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      if (duplicate[t])
+      {
+        ++health.duplicate_triangles;
+        continue;
+      }
+      unique_triangles.push_back(triangles[t]);
+      unique_source.push_back(source[t]);
+    }
+    triangles.swap(unique_triangles);
+    source.swap(unique_source);
+  }
+  if (triangles.empty())
+  {
+    throw InputError("no non-degenerate triangles (" + std::to_string(health.input_triangles) +
+                     " in the input, all degenerate or repeated)");
+  }
+
+  // Manifold adjacency, then consistent winding by breadth-first search over it.
+  const int n = static_cast<int>(triangles.size());
+  auto buildAdjacency = [&](std::vector<Eigen::Vector3i>* neighbours, int* boundary, int* non_manifold)
+  {
+    neighbours->assign(n, Eigen::Vector3i(kBoundaryEdge, kBoundaryEdge, kBoundaryEdge));
+    *boundary = 0;
+    *non_manifold = 0;
+    const std::vector<EdgeRecord> edges = sortedEdges(triangles);
+    for (std::size_t i = 0; i < edges.size();)
+    {
+      std::size_t j = i;
+      while (j < edges.size() && edges[j].low == edges[i].low && edges[j].high == edges[i].high)
+      {
+        ++j;
+      }
+      const std::size_t count = j - i;
+      if (count == 1)
+      {
+        ++*boundary;
+      }
+      else if (count == 2)
+      {
+        (*neighbours)[edges[i].triangle][edges[i].local] = edges[i + 1].triangle;
+        (*neighbours)[edges[i + 1].triangle][edges[i + 1].local] = edges[i].triangle;
+      }
+      else
+      {
+        ++*non_manifold;
+        for (std::size_t e = i; e < j; ++e)
+        {
+          (*neighbours)[edges[e].triangle][edges[e].local] = kNonManifoldEdge;
+        }
+      }
+      i = j;
+    }
+  };
+  std::vector<Eigen::Vector3i> neighbours;
+  int boundary = 0;
+  int non_manifold = 0;
+  buildAdjacency(&neighbours, &boundary, &non_manifold);
+
+  std::vector<int> component(n, -1);
+  std::vector<bool> flipped(n, false);
+  int components = 0;
+  for (int seed = 0; seed < n; ++seed)
+  {
+    if (component[seed] >= 0)
+    {
+      continue;
+    }
+    std::queue<int> queue;
+    queue.push(seed);
+    component[seed] = components;
+    while (!queue.empty())
+    {
+      const int t = queue.front();
+      queue.pop();
+      for (int k = 0; k < 3; ++k)
+      {
+        const int u = neighbours[t][k];
+        if (u < 0 || component[u] >= 0)
+        {
+          continue;
+        }
+        const int a = triangles[t][k];
+        const int b = triangles[t][(k + 1) % 3];
+        // Consistent neighbours run the shared edge the other way (b -> a).
+        if (hasDirectedEdge(triangles[u], a, b))
+        {
+          // Swapping corners 1 and 2 reverses the triangle: its edge 0 becomes the old edge 2
+          // and edge 2 the old edge 0, so the neighbour row is permuted alike.
+          std::swap(triangles[u][1], triangles[u][2]);
+          std::swap(neighbours[u][0], neighbours[u][2]);
+          flipped[u] = !flipped[u];
+        }
+        component[u] = components;
+        queue.push(u);
+      }
+    }
+    ++components;
+  }
+  buildAdjacency(&neighbours, &boundary, &non_manifold);
+
+  // Closed components with negative volume are inside out: flip them whole.
+  std::vector<double> volume(components, 0.0);
+  std::vector<bool> closed(components, true);
+  for (int t = 0; t < n; ++t)
+  {
+    const Eigen::Vector3d& a = welded[triangles[t][0]];
+    const Eigen::Vector3d& b = welded[triangles[t][1]];
+    const Eigen::Vector3d& c = welded[triangles[t][2]];
+    // Relative to the first vertex of the box, so that far-away meshes keep their precision.
+    volume[component[t]] += (a - lower).dot((b - lower).cross(c - lower)) / 6.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (neighbours[t][k] < 0)
+      {
+        closed[component[t]] = false;
+      }
+    }
+  }
+  bool any_inverted = false;
+  for (int t = 0; t < n; ++t)
+  {
+    if (closed[component[t]] && volume[component[t]] < 0.0)
+    {
+      std::swap(triangles[t][1], triangles[t][2]);
+      flipped[t] = !flipped[t];
+      any_inverted = true;
+    }
+  }
+  if (any_inverted)
+  {
+    buildAdjacency(&neighbours, &boundary, &non_manifold);
+  }
+  health.flipped_triangles = static_cast<int>(std::count(flipped.begin(), flipped.end(), true));
+  health.boundary_edges = boundary;
+  health.non_manifold_edges = non_manifold;
+  health.components = components;
+  int conflicts = 0;
+  for (int t = 0; t < n; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int u = neighbours[t][k];
+      if (u > t && hasDirectedEdge(triangles[u], triangles[t][k], triangles[t][(k + 1) % 3]))
+      {
+        ++conflicts;
+      }
+    }
+  }
+  health.inconsistent_winding_edges = conflicts;
+
+  // Keep only the vertices that triangles use, in their first-use order.
+  std::vector<int> compact(welded.size(), -1);
+  for (Eigen::Vector3i& t : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (compact[t[k]] < 0)
+      {
+        compact[t[k]] = static_cast<int>(mesh.vertices_.size());
+        mesh.vertices_.push_back(welded[t[k]]);
+      }
+      t[k] = compact[t[k]];
+    }
+  }
+  mesh.triangles_ = std::move(triangles);
+  mesh.neighbours_ = std::move(neighbours);
+  mesh.source_triangle_ = std::move(source);
+  mesh.normals_.resize(n);
+  for (int t = 0; t < n; ++t)
+  {
+    const Eigen::Vector3d& a = mesh.vertices_[mesh.triangles_[t][0]];
+    mesh.normals_[t] =
+        (mesh.vertices_[mesh.triangles_[t][1]] - a).cross(mesh.vertices_[mesh.triangles_[t][2]] - a).normalized();
+  }
+  const int used_vertices = static_cast<int>(mesh.vertices_.size());
+  mesh.vertex_face_offsets_.assign(used_vertices + 1, 0);
+  for (const Eigen::Vector3i& t : mesh.triangles_)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++mesh.vertex_face_offsets_[t[k] + 1];
+    }
+  }
+  for (int v = 0; v < used_vertices; ++v)
+  {
+    mesh.vertex_face_offsets_[v + 1] += mesh.vertex_face_offsets_[v];
+  }
+  mesh.vertex_faces_.resize(mesh.vertex_face_offsets_[used_vertices]);
+  std::vector<int> fill(mesh.vertex_face_offsets_.begin(), mesh.vertex_face_offsets_.end() - 1);
+  for (int t = 0; t < n; ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh.vertex_faces_[fill[mesh.triangles_[t][k]]++] = t;
+    }
+  }
+  return mesh;
+}
+
+std::size_t TriangleMesh::memoryBytes() const
+{
+  return vertices_.capacity() * sizeof(Eigen::Vector3d) + triangles_.capacity() * sizeof(Eigen::Vector3i) +
+         normals_.capacity() * sizeof(Eigen::Vector3d) + neighbours_.capacity() * sizeof(Eigen::Vector3i) +
+         vertex_face_offsets_.capacity() * sizeof(int) + vertex_faces_.capacity() * sizeof(int) +
+         source_triangle_.capacity() * sizeof(int) + sizeof(*this);
+}
+}  // namespace god_finger
