@@ -1,0 +1,333 @@
+#include "contact_tool.h"
+
+#include "god_finger/core/contact_area.h"
+#include "god_finger/core/input_error.h"
+#include "god_finger/core/radial_frame.h"
+#include "god_finger/core/surface_locator.h"
+#include "god_finger/mesh_io/mesh_loader.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <vector>
+
+namespace god_finger
+{
+namespace
+{
+bool parseDouble(const std::string& text, double* value)
+{
+  char* end = nullptr;
+  const double parsed = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size())
+  {
+    return false;
+  }
+  *value = parsed;
+  return true;
+}
+
+bool parseInteger(const std::string& text, long long* value)
+{
+  char* end = nullptr;
+  const long long parsed = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || end != text.c_str() + text.size())
+  {
+    return false;
+  }
+  *value = parsed;
+  return true;
+}
+
+// A number as JSON: non-finite values become null (and are counted by the caller).
+std::string jsonNumber(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "null";
+  }
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.9g", value);
+  return buffer;
+}
+
+double percentile(std::vector<double> values, double fraction)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  const std::size_t index = std::min(values.size() - 1, static_cast<std::size_t>(fraction * (values.size() - 1) + 0.5));
+  std::nth_element(values.begin(), values.begin() + index, values.end());
+  return values[index];
+}
+}  // namespace
+
+const char* contactToolUsage()
+{
+  return "usage: god_finger_contact --mesh FILE [--samples N] [--seed S] [--r-max M] [--d0 M] [--alpha A]\n"
+         "                          [--n-sgo N] [--tau-a RAD] [--friction MU] [--walk project|unfold]\n"
+         "                          [--dump FILE.csv]\n"
+         "Samples N random contacts on the mesh, computes each god-finger contact area and prints\n"
+         "one JSON object on stdout (the mesh's health report goes to stderr).\n";
+}
+
+std::string parseContactToolOptions(int argc, const char* const* argv, ContactToolOptions* options)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string flag = argv[i];
+    if (flag == "--help" || flag == "-h")
+    {
+      options->help = true;
+      return std::string();
+    }
+    if (i + 1 >= argc)
+    {
+      return flag.rfind("--", 0) == 0 ? "option " + flag + " needs a value" : "unexpected argument '" + flag + "'";
+    }
+    const std::string value = argv[++i];
+    double number = 0.0;
+    long long integer = 0;
+    if (flag == "--mesh")
+    {
+      options->mesh = value;
+    }
+    else if (flag == "--dump")
+    {
+      options->dump = value;
+    }
+    else if (flag == "--walk")
+    {
+      if (!parseWalkVariant(value, &options->params.walk))
+      {
+        return "--walk must be 'project' or 'unfold', got '" + value + "'";
+      }
+    }
+    else if (flag == "--samples" || flag == "--seed" || flag == "--n-sgo")
+    {
+      if (!parseInteger(value, &integer))
+      {
+        return flag + " needs an integer, got '" + value + "'";
+      }
+      if (flag == "--samples")
+      {
+        if (integer < 1 || integer > 10000000)
+        {
+          return "--samples = " + value + " is out of range [1, 10000000]";
+        }
+        options->samples = static_cast<int>(integer);
+      }
+      else if (flag == "--seed")
+      {
+        if (integer < 0)
+        {
+          return "--seed must not be negative, got " + value;
+        }
+        options->seed = static_cast<std::uint64_t>(integer);
+      }
+      else
+      {
+        options->params.sub_god_objects =
+            static_cast<int>(std::max<long long>(std::min<long long>(integer, 1 << 20), -1));
+      }
+    }
+    else if (flag == "--r-max" || flag == "--d0" || flag == "--alpha" || flag == "--tau-a" || flag == "--friction")
+    {
+      if (!parseDouble(value, &number))
+      {
+        return flag + " needs a number, got '" + value + "'";
+      }
+      double* target = flag == "--r-max"   ? &options->params.max_radius
+                       : flag == "--d0"    ? &options->params.distance_constant
+                       : flag == "--alpha" ? &options->params.alpha
+                       : flag == "--tau-a" ? &options->params.max_angle
+                                           : &options->params.friction;
+      *target = number;
+    }
+    else
+    {
+      return "unknown option '" + flag + "' (see --help)";
+    }
+  }
+  if (options->mesh.empty())
+  {
+    return "--mesh FILE is required (see --help)";
+  }
+  const std::string error = validate(options->params);
+  if (!error.empty())
+  {
+    return error;
+  }
+  return std::string();
+}
+
+int runContactTool(const ContactToolOptions& options, std::ostream& out, std::ostream& report)
+{
+  TriangleMesh mesh;
+  try
+  {
+    mesh = loadTriangleMesh(options.mesh);
+  }
+  catch (const InputError& error)
+  {
+    report << "god_finger_contact: " << error.what() << "\n";
+    return 2;
+  }
+  std::ofstream dump;
+  if (!options.dump.empty())
+  {
+    dump.open(options.dump);
+    if (!dump.good())
+    {
+      report << "god_finger_contact: cannot write '" << options.dump << "'\n";
+      return 2;
+    }
+    dump << "sample,cx,cy,cz,nx,ny,nz,vx,vy,vz,sx,sy,sz,face\n";
+    dump.precision(17);
+  }
+  const MeshHealth& health = mesh.health();
+  report << "mesh " << options.mesh << ": " << health.input_vertices << " vertices and " << health.input_triangles
+         << " triangles read; " << mesh.vertexCount() << " vertices and " << mesh.triangleCount() << " triangles kept\n"
+         << "  repaired: " << health.welded_vertices << " duplicate vertices welded, " << health.degenerate_triangles
+         << " degenerate and " << health.duplicate_triangles << " duplicate triangles removed, "
+         << health.flipped_triangles << " triangles re-wound\n"
+         << "  reported: " << health.boundary_edges << " boundary edges, " << health.non_manifold_edges
+         << " non-manifold edges, " << health.inconsistent_winding_edges << " edges of inconsistent winding, "
+         << health.components << " connected components\n";
+
+  const SurfaceLocator locator(mesh);
+  std::vector<double> cumulative_area(mesh.triangleCount());
+  double total_area = 0.0;
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+  {
+    total_area += 0.5 * (mesh.corner(t, 1) - mesh.corner(t, 0)).cross(mesh.corner(t, 2) - mesh.corner(t, 0)).norm();
+    cumulative_area[t] = total_area;
+  }
+  std::mt19937_64 random(options.seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const ContactParams& params = options.params;
+  const double surface_tolerance = 1e-9 * std::max(mesh.boundingBoxDiagonal(), 1e-300);
+  ContactArea area;
+  std::vector<double> times;
+  times.reserve(options.samples);
+  std::map<std::string, int> stops;
+  int failures = 0;
+  long nan_count = 0;
+  long active_total = 0;
+  double radius_total = 0.0;
+  for (int sample = 0; sample < options.samples; ++sample)
+  {
+    const double pick = unit(random) * total_area;
+    const int face = static_cast<int>(std::min<std::ptrdiff_t>(
+        std::upper_bound(cumulative_area.begin(), cumulative_area.end(), pick) - cumulative_area.begin(),
+        mesh.triangleCount() - 1));
+    const double r1 = std::sqrt(unit(random));
+    const double r2 = unit(random);
+    const Eigen::Vector3d barycentric(1.0 - r1, r1 * (1.0 - r2), r1 * r2);
+    ContactQuery query;
+    query.location = locationFromBarycentric(mesh, face, barycentric);
+    query.normal = mesh.normals()[face];
+    const double compression = 3.0 * params.distance_constant * unit(random);
+    const double tangential = compression * unit(random);
+    const double angle = 2.0 * M_PI * unit(random);
+    const Eigen::Vector3d t1 = defaultTangent(query.normal);
+    const Eigen::Vector3d t2 = query.normal.cross(t1);
+    query.coupling = -compression * query.normal + tangential * (std::cos(angle) * t1 + std::sin(angle) * t2);
+    query.depth = compression;
+
+    const auto start = std::chrono::steady_clock::now();
+    computeContactArea(mesh, query, params, &area);
+    const auto stop = std::chrono::steady_clock::now();
+    times.push_back(std::chrono::duration<double, std::nano>(stop - start).count());
+
+    bool failed = !area.valid;
+    nan_count += std::isfinite(area.radius) ? 0 : 1;
+    radius_total += std::isfinite(area.radius) ? area.radius : 0.0;
+    active_total += area.active;
+    if (area.valid && area.radius > 0.0 && area.active == 0 && params.friction > 0.0)
+    {
+      failed = true;  // a face contact always spreads onto its own face
+    }
+    for (int i = 0; i < area.count; ++i)
+    {
+      const SubGodObject& sgo = area.sub_god_objects[i];
+      ++stops[walkStopName(sgo.walk.stop)];
+      if (!sgo.position.allFinite())
+      {
+        nan_count += 3 - sgo.position.array().isFinite().count();
+        failed = true;
+        continue;
+      }
+      if (sgo.dropped())
+      {
+        continue;
+      }
+      // On the surface, and no farther (straight) than the distance it walked.
+      if (locator.closest(sgo.position).distance > surface_tolerance ||
+          (sgo.position - query.location.point).norm() > sgo.walk.walked + surface_tolerance ||
+          sgo.walk.walked > sgo.target_distance * (1.0 + 1e-12) + surface_tolerance)
+      {
+        failed = true;
+      }
+      if (dump.is_open())
+      {
+        const Eigen::Vector3d& c = query.location.point;
+        const Eigen::Vector3d& n = query.normal;
+        const Eigen::Vector3d& v = query.coupling;
+        const Eigen::Vector3d& s = sgo.position;
+        dump << sample << ',' << c.x() << ',' << c.y() << ',' << c.z() << ',' << n.x() << ',' << n.y() << ',' << n.z()
+             << ',' << v.x() << ',' << v.y() << ',' << v.z() << ',' << s.x() << ',' << s.y() << ',' << s.z() << ','
+             << mesh.sourceTriangle(sgo.walk.location.face) << '\n';
+      }
+    }
+    failures += failed ? 1 : 0;
+  }
+  if (dump.is_open())
+  {
+    dump.close();
+    if (dump.fail())
+    {
+      report << "god_finger_contact: writing '" << options.dump << "' failed\n";
+      return 2;
+    }
+  }
+
+  std::ostringstream json;
+  json << "{\"mesh\": {\"file\": \"" << options.mesh << "\", \"vertices\": " << mesh.vertexCount()
+       << ", \"triangles\": " << mesh.triangleCount() << ", \"degenerate\": " << health.degenerate_triangles
+       << ", \"boundary_edges\": " << health.boundary_edges << ", \"non_manifold_edges\": " << health.non_manifold_edges
+       << ", \"welded_vertices\": " << health.welded_vertices
+       << ", \"duplicate_triangles\": " << health.duplicate_triangles
+       << ", \"flipped_triangles\": " << health.flipped_triangles
+       << ", \"inconsistent_winding_edges\": " << health.inconsistent_winding_edges
+       << ", \"components\": " << health.components << "}, ";
+  json << "\"params\": {\"r_max\": " << jsonNumber(params.max_radius)
+       << ", \"d0\": " << jsonNumber(params.distance_constant) << ", \"alpha\": " << jsonNumber(params.alpha)
+       << ", \"n_sgo\": " << params.sub_god_objects << ", \"tau_a\": " << jsonNumber(params.max_angle)
+       << ", \"friction\": " << (std::isinf(params.friction) ? std::string("\"inf\"") : jsonNumber(params.friction))
+       << ", \"walk\": \"" << walkVariantName(params.walk) << "\"}, ";
+  json << "\"samples\": " << options.samples << ", \"seed\": " << options.seed << ", \"failures\": " << failures
+       << ", \"nan\": " << nan_count
+       << ", \"sgo_per_contact_mean\": " << jsonNumber(static_cast<double>(active_total) / options.samples)
+       << ", \"radius_mean_m\": " << jsonNumber(radius_total / options.samples)
+       << ", \"walk_ns_median\": " << jsonNumber(percentile(times, 0.5))
+       << ", \"walk_ns_p99\": " << jsonNumber(percentile(times, 0.99)) << ", \"stops\": {";
+  bool first = true;
+  for (const auto& entry : stops)
+  {
+    json << (first ? "" : ", ") << "\"" << entry.first << "\": " << entry.second;
+    first = false;
+  }
+  json << "}}\n";
+  out << json.str();
+  return 0;
+}
+}  // namespace god_finger
