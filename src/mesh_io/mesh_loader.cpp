@@ -55,10 +55,10 @@ TriangleSoup loadTriangleSoup(const std::string& path, const Eigen::Vector3d& sc
     throw InputError(name + "scale must be finite and non-zero");
   }
   Assimp::Importer importer;
-  // Drop points and lines; keep the file's vertices and triangle order (no welding here:
-  // TriangleMesh::build welds and reports it).
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType);
+  // Polygons become triangles; points and lines are skipped while collecting (so that a file
+  // of lines says "no triangles"). No welding here: TriangleMesh::build welds and reports it,
+  // and the file's triangle order is kept.
+  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
   if (scene == nullptr)
   {
     std::string reason = importer.GetErrorString();
