@@ -1,0 +1,37 @@
+// Bullet collision shapes for scene geometry. Primitives collide as Bullet's primitives. A
+// mesh collides as: its own triangles (btBvhTriangleMeshShape) when the body is static; its
+// convex hull when it is convex (hull volume within 0.5 % of the mesh's); otherwise a convex
+// decomposition by HACD (Bullet's Extras), computed once per file and scale and cached for
+// the life of the process. The walk surface stays the original mesh in every case.
+//
+// Margins: Bullet rounds convex shapes by a collision margin (default 4 cm, far too large for
+// a finger on a 5 cm object): every shape gets `margin` (m), primitives keep their true size.
+#pragma once
+
+#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/physics/scene_description.h"
+
+#include <btBulletCollisionCommon.h>
+
+#include <memory>
+#include <vector>
+
+namespace god_finger
+{
+struct CollisionShape
+{
+  btCollisionShape* shape = nullptr;  // the top shape (owned through `owned`)
+  int convex_parts = 1;               // hulls in a decomposition, 1 otherwise
+  bool exact = true;                  // false when collision uses a hull or a decomposition
+  std::vector<std::unique_ptr<btCollisionShape>> owned;
+  std::unique_ptr<btTriangleIndexVertexArray> triangle_array;
+  std::vector<int> indices;
+  std::vector<btScalar> vertices;
+};
+
+std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, const TriangleMesh& walk_surface,
+                                                   bool is_static, double margin = 0.0005);
+
+// Volume enclosed by a closed mesh (m^3); meaningless for open meshes.
+double enclosedVolume(const TriangleMesh& mesh);
+}  // namespace god_finger

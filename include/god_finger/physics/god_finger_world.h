@@ -1,0 +1,106 @@
+// A Bullet world of rigid objects touched by god-object proxies with god-finger contact areas.
+//
+// One step (fixed time step, deterministic: the same calls give the same trajectory bit for
+// bit):
+//  1. each proxy gets the coupling force k (p_I - p_GO) + b (v_I - v_GO), saturated;
+//  2. Bullet's collision detection finds the proxies' contacts;
+//  3. kGodFinger: for the deepest contact of each (proxy, object) pair, the contact area is
+//     computed on the object's walk surface and every active sub-god-object is added to the
+//     solver as a contact point with the true contact's normal and depth, in manifolds of our
+//     own (Bullet's manifolds keep at most 4 points and merge close ones);
+//  4. the solver runs; the force on the user is the opposite of the coupling force.
+//
+// Invariants: proxies never rotate and ignore gravity; every scene body has a walk surface
+// (its mesh, or a tessellation of its primitive fine enough for r_max); the walk runs on the
+// original triangle mesh even where collision uses a convex decomposition.
+#pragma once
+
+#include "god_finger/core/contact_area.h"
+#include "god_finger/physics/scene_description.h"
+#include "god_finger/physics/world_params.h"
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <vector>
+
+namespace god_finger
+{
+// A contact area in world coordinates, for output (markers, messages, metrics).
+struct WorldContactArea
+{
+  int body = -1;                                      // scene body index
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // c_p (m, world)
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // c_n (world, out of the object)
+  double depth = 0.0;                                 // m, > 0 when penetrating
+  double radius = 0.0;                                // r (m)
+  FeatureKind feature = FeatureKind::kFace;
+  int sub_god_object_count = 0;                                             // active ones, in positions
+  std::array<Eigen::Vector3d, ContactParams::kMaxSubGodObjects> positions;  // world
+};
+
+struct InterfaceState
+{
+  Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();  // p_I (m, world)
+  Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();      // p_GO (m, world)
+  Eigen::Vector3d proxy_velocity = Eigen::Vector3d::Zero();      // m/s
+  Eigen::Vector3d user_force = Eigen::Vector3d::Zero();          // N on the hand (world)
+  bool saturated = false;                                        // coupling force hit max_force
+  int contact_count = 0;                                         // entries used in contacts
+  static constexpr int kMaxContacts = 4;                         // bodies touched at once
+  std::array<WorldContactArea, kMaxContacts> contacts;
+};
+
+struct BodyState
+{
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // link frame in world
+  Eigen::Vector3d center_of_mass = Eigen::Vector3d::Zero();
+  Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   // of the centre of mass
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world
+  Eigen::Vector3d net_force =
+      Eigen::Vector3d::Zero();  // N on the centre of mass, m dv/dt over the last step (gravity included)
+};
+
+class GodFingerWorld
+{
+ public:
+  // Throws InputError on bad parameters or scene (naming the body and the problem).
+  GodFingerWorld(const SceneDescription& scene, const WorldParams& params);
+  ~GodFingerWorld();
+  GodFingerWorld(const GodFingerWorld&) = delete;
+  GodFingerWorld& operator=(const GodFingerWorld&) = delete;
+
+  // Adds a finger: a proxy at `position` (m, world). Returns its index.
+  int addInterface(const Eigen::Vector3d& position);
+  // The device's position in the world for the next step; non-finite values are ignored
+  // (and counted), the previous target stays.
+  void setInterfaceTarget(int interface, const Eigen::Vector3d& position);
+  void step();
+  // Back to the scene's initial state, proxies at their interfaces, time 0.
+  void reset();
+
+  void setContactModel(ContactModel model);
+  ContactModel contactModel() const;
+  // Throws InputError on invalid parameters; keeps the old ones then.
+  void setContactParams(const ContactParams& params);
+  const WorldParams& params() const;
+
+  int interfaceCount() const;
+  const InterfaceState& interfaceState(int interface) const;
+  int bodyCount() const;
+  BodyState bodyState(int body) const;
+  const SceneDescription& scene() const;
+  const TriangleMesh& walkSurface(int body) const;
+  // Contact points the solver received in the last step, all pairs (test hook for the
+  // Bullet manifold limits).
+  int solverContactPoints() const;
+  // Of those, points between a proxy and an object.
+  int solverProxyContactPoints() const;
+  double time() const;
+  long steps() const;
+  long rejectedTargets() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+}  // namespace god_finger

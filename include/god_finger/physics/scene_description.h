@@ -1,0 +1,71 @@
+// A physics scene as plain data, independent of where it came from (URDF, code) and of
+// Bullet: rigid bodies with one collision geometry each, mass properties and contact
+// materials. Units SI; frames per REP-103 (z up); poses are of the body's link frame in
+// `world`.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+namespace god_finger
+{
+enum class GeometryKind
+{
+  kBox,       // size = full extents (m)
+  kSphere,    // radius (m)
+  kCylinder,  // radius, length (m), axis = z of the geometry frame (URDF convention)
+  kMesh,      // mesh_path, scale
+};
+
+struct Geometry
+{
+  GeometryKind kind = GeometryKind::kBox;
+  Eigen::Vector3d size = Eigen::Vector3d::Ones();
+  double radius = 0.0;
+  double length = 0.0;
+  std::string mesh_path;  // absolute, resolved
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+};
+
+// Contact material of a body. Bullet combines two bodies' values by multiplication for
+// friction, rolling and spinning friction, and by multiplication for restitution.
+struct ContactMaterial
+{
+  double friction = 0.8;           // Coulomb coefficient (1)
+  double rolling_friction = 0.0;   // (m), Bullet's rolling resistance
+  double spinning_friction = 0.0;  // (m), Bullet's torsional friction
+  double restitution = 0.0;        // (1)
+};
+
+struct BodyDescription
+{
+  std::string name;
+  Geometry geometry;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();              // link frame in world
+  Eigen::Isometry3d collision_origin = Eigen::Isometry3d::Identity();  // geometry in link frame
+  bool is_static = false;                                              // fixed to world
+  double mass = 0.0;                                                   // kg, > 0 unless static
+  Eigen::Isometry3d inertial_origin = Eigen::Isometry3d::Identity();   // centre of mass in link frame
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();                   // kg m^2 at the centre of mass
+  ContactMaterial material;
+};
+
+struct SceneDescription
+{
+  std::string name;
+  std::vector<BodyDescription> bodies;
+  // Index of a body by name, -1 if absent.
+  int find(const std::string& body_name) const
+  {
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      if (bodies[i].name == body_name)
+      {
+        return static_cast<int>(i);
+      }
+    }
+    return -1;
+  }
+};
+}  // namespace god_finger

@@ -1,0 +1,28 @@
+// Scenes from URDF (through urdfdom).
+//
+// Conventions:
+//  - The root link is `world` (or any link without geometry): every link joined to it by a
+//    `fixed` joint is static; by a `floating` joint, a free rigid body starting at the joint
+//    origin. Other joint types, and chains deeper than one joint, are rejected: scenes are
+//    sets of rigid objects, not robots.
+//  - Each body has exactly one <collision> (box, sphere, cylinder, or mesh with scale);
+//    dynamic bodies need an <inertial> with mass > 0 and a positive-definite inertia.
+//  - Contact materials come from PyBullet's URDF extension, the documented source Bullet
+//    users already know: <link><contact><lateral_friction value=".."/>
+//    <rolling_friction value=".."/><spinning_friction value=".."/>
+//    <restitution value=".."/></contact></link>. Missing values keep ContactMaterial's defaults.
+//  - Mesh file names: absolute, relative to the URDF file, file://..., or package://NAME/...
+//    (NAME looked up in ROS_PACKAGE_PATH, then in the folders above the URDF file).
+//
+// Errors: InputError with one line naming the file, the link and the problem.
+#pragma once
+
+#include "god_finger/physics/scene_description.h"
+
+namespace god_finger
+{
+SceneDescription loadUrdfScene(const std::string& urdf_path);
+// Same, from a string; relative mesh paths are resolved against `base_directory`.
+SceneDescription parseUrdfScene(const std::string& urdf_xml, const std::string& base_directory,
+                                const std::string& source_name = "<string>");
+}  // namespace god_finger

@@ -1,0 +1,14 @@
+// The triangle mesh a body's sub-god-objects walk on, in the body's geometry frame (m).
+// Meshes walk on themselves (never on their convex decomposition). Primitives walk on a
+// tessellation whose largest edge is at most `max_edge`: a box is exact with 12 triangles; a
+// sphere is an icosphere (vertices on the sphere); a cylinder has `ceil(2 pi r / max_edge)`
+// segments (at least 16). Tessellations are capped at 81920 triangles.
+#pragma once
+
+#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/physics/scene_description.h"
+
+namespace god_finger
+{
+TriangleMesh makeWalkSurface(const Geometry& geometry, double max_edge);
+}  // namespace god_finger

@@ -1,0 +1,605 @@
+#include "god_finger/physics/god_finger_world.h"
+
+#include "god_finger/core/input_error.h"
+#include "god_finger/core/surface_locator.h"
+#include "god_finger/physics/collision_shape.h"
+#include "god_finger/physics/walk_surface.h"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <functional>
+
+namespace god_finger
+{
+namespace
+{
+// Collision groups: proxies touch scene bodies, never each other.
+constexpr int kBodyGroup = btBroadphaseProxy::DefaultFilter | btBroadphaseProxy::StaticFilter;
+constexpr int kProxyGroup = btBroadphaseProxy::CharacterFilter;
+// btCollisionObject user index: what an object is; user index 2: its index.
+constexpr int kKindBody = 1;
+constexpr int kKindProxy = 2;
+// Sub-god-objects closer than this to the contact point (m) duplicate it and are not added.
+constexpr double kCoincident = 1e-7;
+
+btVector3 toBullet(const Eigen::Vector3d& v)
+{
+  return btVector3(v.x(), v.y(), v.z());
+}
+Eigen::Vector3d toEigen(const btVector3& v)
+{
+  return Eigen::Vector3d(v.x(), v.y(), v.z());
+}
+btTransform toBullet(const Eigen::Isometry3d& t)
+{
+  const Eigen::Matrix3d& r = t.linear();
+  return btTransform(btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)),
+                     toBullet(t.translation()));
+}
+Eigen::Isometry3d toEigen(const btTransform& t)
+{
+  Eigen::Isometry3d result = Eigen::Isometry3d::Identity();
+  const btMatrix3x3& b = t.getBasis();
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      result.linear()(i, j) = b[i][j];
+    }
+  }
+  result.translation() = toEigen(t.getOrigin());
+  return result;
+}
+
+// Counts the contact points the solver receives.
+class CountingSolver : public btSequentialImpulseConstraintSolver
+{
+ public:
+  btScalar solveGroup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds, int num_manifolds,
+                      btTypedConstraint** constraints, int num_constraints, const btContactSolverInfo& info,
+                      btIDebugDraw* debug_draw, btDispatcher* dispatcher) override
+  {
+    for (int i = 0; i < num_manifolds; ++i)
+    {
+      points_ += manifolds[i]->getNumContacts();
+      if (manifolds[i]->getBody0()->getUserIndex() == kKindProxy ||
+          manifolds[i]->getBody1()->getUserIndex() == kKindProxy)
+      {
+        proxy_points_ += manifolds[i]->getNumContacts();
+      }
+    }
+    return btSequentialImpulseConstraintSolver::solveGroup(bodies, num_bodies, manifolds, num_manifolds, constraints,
+                                                           num_constraints, info, debug_draw, dispatcher);
+  }
+  void resetCounts()
+  {
+    points_ = 0;
+    proxy_points_ = 0;
+  }
+  int points() const
+  {
+    return points_;
+  }
+  int proxyPoints() const
+  {
+    return proxy_points_;
+  }
+
+ private:
+  int points_ = 0;
+  int proxy_points_ = 0;
+};
+
+// Runs a hook between collision detection and the solver: where sub-god-objects join.
+class HookedWorld : public btDiscreteDynamicsWorld
+{
+ public:
+  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+  std::function<void()> after_collision;
+  void performDiscreteCollisionDetection() override
+  {
+    btDiscreteDynamicsWorld::performDiscreteCollisionDetection();
+    if (after_collision)
+    {
+      after_collision();
+    }
+  }
+};
+}  // namespace
+
+struct GodFingerWorld::Impl
+{
+  struct Body
+  {
+    std::unique_ptr<TriangleMesh> walk;
+    std::unique_ptr<SurfaceLocator> locator;
+    std::unique_ptr<CollisionShape> collision;
+    std::unique_ptr<btCompoundShape> placed;  // the collision shape placed in the centre-of-mass frame
+    std::unique_ptr<btRigidBody> rigid;
+    Eigen::Isometry3d com_in_link = Eigen::Isometry3d::Identity();
+    Eigen::Isometry3d geometry_in_com = Eigen::Isometry3d::Identity();
+    btVector3 principal_inertia = btVector3(0, 0, 0);
+    Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
+    Eigen::Vector3d net_force = Eigen::Vector3d::Zero();
+  };
+  struct Proxy
+  {
+    std::unique_ptr<btSphereShape> shape;
+    std::unique_ptr<btRigidBody> rigid;
+    Eigen::Vector3d initial = Eigen::Vector3d::Zero();
+    Eigen::Vector3d target = Eigen::Vector3d::Zero();
+    Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();
+    InterfaceState state;
+    // Per touched body: the last first radial vector (a continuous basis in time).
+    std::vector<Eigen::Vector3d> reference_tangents;
+  };
+
+  WorldParams params;
+  SceneDescription scene;
+  std::vector<Body> bodies;
+  std::vector<Proxy> proxies;
+  std::unique_ptr<btDefaultCollisionConfiguration> configuration;
+  std::unique_ptr<btCollisionDispatcher> dispatcher;
+  std::unique_ptr<btDbvtBroadphase> broadphase;
+  std::unique_ptr<CountingSolver> solver;
+  std::unique_ptr<HookedWorld> world;
+  std::vector<btPersistentManifold*> injected;
+  ContactArea scratch;
+  double time = 0.0;
+  long steps = 0;
+  long rejected_targets = 0;
+
+  void buildBodies()
+  {
+    const double max_edge = params.walk_edge_per_max_radius * params.contact.max_radius;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    {
+      const BodyDescription& description = scene.bodies[i];
+      Body body;
+      body.walk = std::make_unique<TriangleMesh>(makeWalkSurface(description.geometry, max_edge));
+      body.locator = std::make_unique<SurfaceLocator>(*body.walk);
+      body.collision = makeCollisionShape(description.geometry, *body.walk, description.is_static);
+      if (!description.is_static)
+      {
+        // Bullet's body frame is the centre of mass on the principal axes of inertia.
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(description.inertia);
+        Eigen::Matrix3d axes = solver.eigenvectors();
+        if (axes.determinant() < 0.0)
+        {
+          axes.col(2) = -axes.col(2);
+        }
+        body.com_in_link = description.inertial_origin;
+        body.com_in_link.linear() = description.inertial_origin.linear() * axes;
+        const Eigen::Vector3d moments = solver.eigenvalues();
+        body.principal_inertia = toBullet(moments);
+      }
+      body.geometry_in_com = body.com_in_link.inverse() * description.collision_origin;
+      bodies.push_back(std::move(body));
+    }
+  }
+
+  void buildWorld()
+  {
+    configuration = std::make_unique<btDefaultCollisionConfiguration>();
+    dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
+    broadphase = std::make_unique<btDbvtBroadphase>();
+    solver = std::make_unique<CountingSolver>();
+    world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
+    world->setGravity(toBullet(params.gravity));
+    world->getSolverInfo().m_numIterations = params.solver_iterations;
+    world->after_collision = [this]() { injectContactAreas(); };
+    injected.clear();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      Body& body = bodies[i];
+      const BodyDescription& description = scene.bodies[i];
+      body.placed = std::make_unique<btCompoundShape>();
+      body.placed->addChildShape(toBullet(body.geometry_in_com), body.collision->shape);
+      const double mass = description.is_static ? 0.0 : description.mass;
+      btRigidBody::btRigidBodyConstructionInfo info(
+          mass, nullptr, body.placed.get(), description.is_static ? btVector3(0, 0, 0) : body.principal_inertia);
+      info.m_startWorldTransform = toBullet(description.pose * body.com_in_link);
+      info.m_friction = description.material.friction;
+      info.m_rollingFriction = description.material.rolling_friction;
+      info.m_spinningFriction = description.material.spinning_friction;
+      info.m_restitution = description.material.restitution;
+      body.rigid = std::make_unique<btRigidBody>(info);
+      body.rigid->setUserIndex(kKindBody);
+      body.rigid->setUserIndex2(static_cast<int>(i));
+      body.rigid->setActivationState(DISABLE_DEACTIVATION);
+      world->addRigidBody(body.rigid.get(), kBodyGroup, btBroadphaseProxy::AllFilter);
+      body.previous_velocity = Eigen::Vector3d::Zero();
+      body.net_force = Eigen::Vector3d::Zero();
+    }
+    for (std::size_t i = 0; i < proxies.size(); ++i)
+    {
+      addProxyToWorld(static_cast<int>(i));
+    }
+  }
+
+  void addProxyToWorld(int index)
+  {
+    Proxy& proxy = proxies[index];
+    const CouplingParams& coupling = params.coupling;
+    proxy.shape = std::make_unique<btSphereShape>(coupling.proxy_radius);
+    btVector3 inertia(0, 0, 0);
+    proxy.shape->calculateLocalInertia(coupling.proxy_mass, inertia);
+    btRigidBody::btRigidBodyConstructionInfo info(coupling.proxy_mass, nullptr, proxy.shape.get(), inertia);
+    info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), toBullet(proxy.initial));
+    info.m_friction = 1.0;  // Bullet multiplies: the object's coefficient applies
+    proxy.rigid = std::make_unique<btRigidBody>(info);
+    proxy.rigid->setUserIndex(kKindProxy);
+    proxy.rigid->setUserIndex2(index);
+    proxy.rigid->setAngularFactor(0.0);
+    proxy.rigid->setActivationState(DISABLE_DEACTIVATION);
+    proxy.rigid->setFlags(proxy.rigid->getFlags() | BT_DISABLE_WORLD_GRAVITY);
+    // Continuous collision so that a fast hand does not tunnel through thin objects.
+    proxy.rigid->setCcdMotionThreshold(0.5 * coupling.proxy_radius);
+    proxy.rigid->setCcdSweptSphereRadius(0.9 * coupling.proxy_radius);
+    world->addRigidBody(proxy.rigid.get(), kProxyGroup, kBodyGroup);
+    proxy.rigid->setGravity(btVector3(0, 0, 0));
+    applyModelToProxy(proxy);
+    proxy.target = proxy.initial;
+    proxy.previous_target = proxy.initial;
+    proxy.state = InterfaceState();
+    proxy.state.interface_position = proxy.initial;
+    proxy.state.proxy_position = proxy.initial;
+    proxy.reference_tangents.assign(bodies.size(), Eigen::Vector3d::Zero());
+  }
+
+  void applyModelToProxy(Proxy& proxy)
+  {
+    const bool soft = params.model == ContactModel::kSoftFinger;
+    proxy.rigid->setRollingFriction(soft ? params.soft_finger.rolling_friction : 0.0);
+    proxy.rigid->setSpinningFriction(soft ? params.soft_finger.spinning_friction : 0.0);
+  }
+
+  Eigen::Isometry3d geometryToWorld(const Body& body) const
+  {
+    return toEigen(body.rigid->getWorldTransform()) * body.geometry_in_com;
+  }
+
+  void releaseInjected()
+  {
+    for (btPersistentManifold* manifold : injected)
+    {
+      dispatcher->releaseManifold(manifold);
+    }
+    injected.clear();
+  }
+
+  // Between collision detection and the solver: contact areas for every (proxy, body) pair in
+  // contact; with kGodFinger their sub-god-objects join the solver.
+  void injectContactAreas()
+  {
+    releaseInjected();
+    for (Proxy& proxy : proxies)
+    {
+      proxy.state.contact_count = 0;
+    }
+    const int manifold_count = dispatcher->getNumManifolds();
+    for (int m = 0; m < manifold_count; ++m)
+    {
+      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      const btCollisionObject* a = manifold->getBody0();
+      const btCollisionObject* b = manifold->getBody1();
+      const bool proxy_is_a = a->getUserIndex() == kKindProxy && b->getUserIndex() == kKindBody;
+      const bool proxy_is_b = b->getUserIndex() == kKindProxy && a->getUserIndex() == kKindBody;
+      if (!proxy_is_a && !proxy_is_b)
+      {
+        continue;
+      }
+      int deepest = -1;
+      for (int p = 0; p < manifold->getNumContacts(); ++p)
+      {
+        if (manifold->getContactPoint(p).getDistance() <= 0.0 &&
+            (deepest < 0 ||
+             manifold->getContactPoint(p).getDistance() < manifold->getContactPoint(deepest).getDistance()))
+        {
+          deepest = p;
+        }
+      }
+      if (deepest < 0)
+      {
+        continue;
+      }
+      Proxy& proxy = proxies[(proxy_is_a ? a : b)->getUserIndex2()];
+      const int body_index = (proxy_is_a ? b : a)->getUserIndex2();
+      addContactArea(manifold, manifold->getContactPoint(deepest), proxy_is_a, proxy, body_index);
+    }
+  }
+
+  void addContactArea(btPersistentManifold* manifold, const btManifoldPoint& contact, bool proxy_is_a, Proxy& proxy,
+                      int body_index)
+  {
+    InterfaceState& state = proxy.state;
+    if (state.contact_count >= InterfaceState::kMaxContacts)
+    {
+      return;
+    }
+    const Body& body = bodies[body_index];
+    // Bullet's normal points from B to A: out of the object when the object is B.
+    const Eigen::Vector3d normal_world = (proxy_is_a ? 1.0 : -1.0) * toEigen(contact.m_normalWorldOnB);
+    const Eigen::Vector3d point_world =
+        toEigen(proxy_is_a ? contact.getPositionWorldOnB() : contact.getPositionWorldOnA());
+    const Eigen::Isometry3d to_world = geometryToWorld(body);
+    const Eigen::Isometry3d to_local = to_world.inverse();
+    ContactQuery query;
+    query.location = body.locator->closest(to_local * point_world);
+    query.normal = to_local.linear() * normal_world;
+    query.depth = -contact.getDistance();
+    query.coupling = to_local.linear() * (proxy.target - toEigen(proxy.rigid->getWorldTransform().getOrigin()));
+    query.reference_tangent = proxy.reference_tangents[body_index];
+    computeContactArea(*body.walk, query, params.contact, &scratch);
+    if (!scratch.valid)
+    {
+      return;
+    }
+    proxy.reference_tangents[body_index] = scratch.first_tangent;
+
+    WorldContactArea& area = state.contacts[state.contact_count++];
+    area.body = body_index;
+    area.point = point_world;
+    area.normal = normal_world;
+    area.depth = query.depth;
+    area.radius = scratch.radius;
+    area.feature = query.location.feature;
+    area.sub_god_object_count = 0;
+    for (int i = 0; i < scratch.count; ++i)
+    {
+      const SubGodObject& sgo = scratch.sub_god_objects[i];
+      if (sgo.dropped() || (sgo.position - query.location.point).norm() < kCoincident)
+      {
+        continue;
+      }
+      area.positions[area.sub_god_object_count++] = to_world * sgo.position;
+    }
+    if (params.model != ContactModel::kGodFinger)
+    {
+      return;
+    }
+    const btCollisionObject* a = manifold->getBody0();
+    const btCollisionObject* b = manifold->getBody1();
+    btPersistentManifold* target = nullptr;
+    for (int i = 0; i < area.sub_god_object_count; ++i)
+    {
+      if (target == nullptr || target->getNumContacts() == MANIFOLD_CACHE_SIZE)
+      {
+        target = dispatcher->getNewManifold(a, b);
+        injected.push_back(target);
+      }
+      // Same normal and distance as the true contact; the object's point is the
+      // sub-god-object, the proxy's point is offset along the normal by the distance.
+      const btVector3 on_object = toBullet(area.positions[i]);
+      const btVector3 on_proxy = on_object + toBullet(normal_world) * contact.getDistance();
+      const btVector3 on_a = proxy_is_a ? on_proxy : on_object;
+      const btVector3 on_b = proxy_is_a ? on_object : on_proxy;
+      btManifoldPoint point(a->getWorldTransform().invXform(on_a), b->getWorldTransform().invXform(on_b),
+                            contact.m_normalWorldOnB, contact.getDistance());
+      point.m_positionWorldOnA = on_a;
+      point.m_positionWorldOnB = on_b;
+      point.m_combinedFriction = contact.m_combinedFriction;
+      point.m_combinedRestitution = contact.m_combinedRestitution;
+      point.m_combinedRollingFriction = contact.m_combinedRollingFriction;
+      point.m_combinedSpinningFriction = contact.m_combinedSpinningFriction;
+      target->addManifoldPoint(point);
+    }
+  }
+
+  void step()
+  {
+    const double dt = params.time_step;
+    const CouplingParams& coupling = params.coupling;
+    for (Proxy& proxy : proxies)
+    {
+      const Eigen::Vector3d position = toEigen(proxy.rigid->getWorldTransform().getOrigin());
+      const Eigen::Vector3d velocity = toEigen(proxy.rigid->getLinearVelocity());
+      const Eigen::Vector3d target_velocity = (proxy.target - proxy.previous_target) / dt;
+      Eigen::Vector3d force =
+          coupling.stiffness * (proxy.target - position) + coupling.damping * (target_velocity - velocity);
+      const double magnitude = force.norm();
+      proxy.state.saturated = magnitude > coupling.max_force;
+      if (proxy.state.saturated)
+      {
+        force *= coupling.max_force / magnitude;
+      }
+      proxy.rigid->applyCentralForce(toBullet(force));
+      proxy.state.user_force = -force;
+      proxy.state.interface_position = proxy.target;
+      proxy.previous_target = proxy.target;
+    }
+    for (Body& body : bodies)
+    {
+      body.previous_velocity = toEigen(body.rigid->getLinearVelocity());
+    }
+    solver->resetCounts();
+    world->stepSimulation(dt, 0);
+    time = (steps + 1) * dt;
+    ++steps;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      Body& body = bodies[i];
+      if (!scene.bodies[i].is_static)
+      {
+        body.net_force =
+            scene.bodies[i].mass * (toEigen(body.rigid->getLinearVelocity()) - body.previous_velocity) / dt;
+      }
+    }
+    for (Proxy& proxy : proxies)
+    {
+      proxy.state.proxy_position = toEigen(proxy.rigid->getWorldTransform().getOrigin());
+      proxy.state.proxy_velocity = toEigen(proxy.rigid->getLinearVelocity());
+    }
+  }
+
+  void teardownWorld()
+  {
+    if (!world)
+    {
+      return;
+    }
+    releaseInjected();
+    for (Proxy& proxy : proxies)
+    {
+      world->removeRigidBody(proxy.rigid.get());
+      proxy.rigid.reset();
+      proxy.shape.reset();
+    }
+    for (Body& body : bodies)
+    {
+      world->removeRigidBody(body.rigid.get());
+      body.rigid.reset();
+      body.placed.reset();
+    }
+    world.reset();
+    solver.reset();
+    broadphase.reset();
+    dispatcher.reset();
+    configuration.reset();
+  }
+};
+
+GodFingerWorld::GodFingerWorld(const SceneDescription& scene, const WorldParams& params) : impl_(new Impl)
+{
+  validateOrThrow(params);
+  impl_->params = params;
+  impl_->scene = scene;
+  impl_->buildBodies();
+  impl_->buildWorld();
+}
+
+GodFingerWorld::~GodFingerWorld()
+{
+  impl_->teardownWorld();
+}
+
+int GodFingerWorld::addInterface(const Eigen::Vector3d& position)
+{
+  if (!position.allFinite())
+  {
+    throw InputError("interface start position must be finite");
+  }
+  Impl::Proxy proxy;
+  proxy.initial = position;
+  impl_->proxies.push_back(std::move(proxy));
+  const int index = static_cast<int>(impl_->proxies.size()) - 1;
+  impl_->addProxyToWorld(index);
+  return index;
+}
+
+void GodFingerWorld::setInterfaceTarget(int interface, const Eigen::Vector3d& position)
+{
+  if (!position.allFinite())
+  {
+    ++impl_->rejected_targets;
+    return;
+  }
+  impl_->proxies.at(interface).target = position;
+}
+
+void GodFingerWorld::step()
+{
+  impl_->step();
+}
+
+void GodFingerWorld::reset()
+{
+  // Rebuilding Bullet's objects (not the shapes or walk surfaces) is the only way to clear
+  // every cache (broadphase pairs, manifolds, warm starts), so that a reset run repeats the
+  // first one bit for bit.
+  impl_->teardownWorld();
+  impl_->time = 0.0;
+  impl_->steps = 0;
+  impl_->buildWorld();
+}
+
+void GodFingerWorld::setContactModel(ContactModel model)
+{
+  impl_->params.model = model;
+  for (Impl::Proxy& proxy : impl_->proxies)
+  {
+    impl_->applyModelToProxy(proxy);
+  }
+}
+
+ContactModel GodFingerWorld::contactModel() const
+{
+  return impl_->params.model;
+}
+
+void GodFingerWorld::setContactParams(const ContactParams& params)
+{
+  validateOrThrow(params);
+  impl_->params.contact = params;
+}
+
+const WorldParams& GodFingerWorld::params() const
+{
+  return impl_->params;
+}
+
+int GodFingerWorld::interfaceCount() const
+{
+  return static_cast<int>(impl_->proxies.size());
+}
+
+const InterfaceState& GodFingerWorld::interfaceState(int interface) const
+{
+  return impl_->proxies.at(interface).state;
+}
+
+int GodFingerWorld::bodyCount() const
+{
+  return static_cast<int>(impl_->bodies.size());
+}
+
+BodyState GodFingerWorld::bodyState(int body) const
+{
+  const Impl::Body& b = impl_->bodies.at(body);
+  BodyState state;
+  const Eigen::Isometry3d com = toEigen(b.rigid->getWorldTransform());
+  state.pose = com * b.com_in_link.inverse();
+  state.center_of_mass = com.translation();
+  state.linear_velocity = toEigen(b.rigid->getLinearVelocity());
+  state.angular_velocity = toEigen(b.rigid->getAngularVelocity());
+  state.net_force = b.net_force;
+  return state;
+}
+
+const SceneDescription& GodFingerWorld::scene() const
+{
+  return impl_->scene;
+}
+
+const TriangleMesh& GodFingerWorld::walkSurface(int body) const
+{
+  return *impl_->bodies.at(body).walk;
+}
+
+int GodFingerWorld::solverContactPoints() const
+{
+  return impl_->solver->points();
+}
+
+int GodFingerWorld::solverProxyContactPoints() const
+{
+  return impl_->solver->proxyPoints();
+}
+
+double GodFingerWorld::time() const
+{
+  return impl_->time;
+}
+
+long GodFingerWorld::steps() const
+{
+  return impl_->steps;
+}
+
+long GodFingerWorld::rejectedTargets() const
+{
+  return impl_->rejected_targets;
+}
+}  // namespace god_finger

@@ -1,0 +1,48 @@
+#include "god_finger/physics/walk_surface.h"
+
+#include "god_finger/core/mesh_primitives.h"
+#include "god_finger/mesh_io/mesh_loader.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace god_finger
+{
+namespace
+{
+constexpr int kMaxIcosphereSubdivisions = 6;  // 81920 triangles
+constexpr int kMinCylinderSegments = 16;
+constexpr int kMaxCylinderSegments = 4096;
+// Edge of an icosahedron inscribed in a unit sphere.
+constexpr double kIcosahedronEdge = 1.0514622242382672;
+}  // namespace
+
+TriangleMesh makeWalkSurface(const Geometry& geometry, double max_edge)
+{
+  switch (geometry.kind)
+  {
+    case GeometryKind::kBox:
+      return TriangleMesh::build(makeBox(geometry.size / 2.0));
+    case GeometryKind::kSphere:
+    {
+      int subdivisions = 0;
+      while (subdivisions < kMaxIcosphereSubdivisions &&
+             geometry.radius * kIcosahedronEdge / std::pow(2.0, subdivisions) > max_edge)
+      {
+        ++subdivisions;
+      }
+      return TriangleMesh::build(makeIcosphere(geometry.radius, subdivisions));
+    }
+    case GeometryKind::kCylinder:
+    {
+      const double segments = std::ceil(2.0 * M_PI * geometry.radius / max_edge);
+      const int count =
+          static_cast<int>(std::clamp(segments, double(kMinCylinderSegments), double(kMaxCylinderSegments)));
+      return TriangleMesh::build(makeCylinder(geometry.radius, geometry.length, count));
+    }
+    case GeometryKind::kMesh:
+      return loadTriangleMesh(geometry.mesh_path, geometry.scale);
+  }
+  return TriangleMesh::build(makeBox(Eigen::Vector3d::Constant(0.5)));
+}
+}  // namespace god_finger

@@ -1,0 +1,78 @@
+#include "god_finger/physics/world_params.h"
+
+#include "god_finger/core/input_error.h"
+
+#include <sstream>
+
+namespace god_finger
+{
+namespace
+{
+std::string outOfRange(const char* name, double value, const char* range, const char* unit)
+{
+  std::ostringstream message;
+  message << "parameter '" << name << "' = " << value << " is out of range " << range << " (" << unit << ")";
+  return message.str();
+}
+}  // namespace
+
+std::string validate(const WorldParams& params)
+{
+  // Written as !(in range) so that NaN is out of range.
+  if (!(params.time_step >= 1e-5 && params.time_step <= 0.1))
+  {
+    return outOfRange("time_step", params.time_step, "[1e-05, 0.1]", "s");
+  }
+  if (!(params.solver_iterations >= 1 && params.solver_iterations <= 1000))
+  {
+    return outOfRange("solver_iterations", params.solver_iterations, "[1, 1000]", "count");
+  }
+  if (!params.gravity.allFinite())
+  {
+    return "parameter 'gravity' must be finite (m/s^2)";
+  }
+  const CouplingParams& c = params.coupling;
+  if (!(c.stiffness > 0.0 && c.stiffness <= 1e5))
+  {
+    return outOfRange("coupling_stiffness", c.stiffness, "(0, 1e+05]", "N/m");
+  }
+  if (!(c.damping >= 0.0 && c.damping <= 1e3))
+  {
+    return outOfRange("coupling_damping", c.damping, "[0, 1000]", "N s/m");
+  }
+  if (!(c.proxy_mass > 0.0 && c.proxy_mass <= 10.0))
+  {
+    return outOfRange("proxy_mass", c.proxy_mass, "(0, 10]", "kg");
+  }
+  if (!(c.proxy_radius > 0.0 && c.proxy_radius <= 0.1))
+  {
+    return outOfRange("proxy_radius", c.proxy_radius, "(0, 0.1]", "m");
+  }
+  if (!(c.max_force > 0.0 && c.max_force <= 1e4))
+  {
+    return outOfRange("max_force", c.max_force, "(0, 1e+04]", "N");
+  }
+  if (!(params.soft_finger.spinning_friction >= 0.0 && params.soft_finger.spinning_friction <= 1.0))
+  {
+    return outOfRange("spinning_friction", params.soft_finger.spinning_friction, "[0, 1]", "m");
+  }
+  if (!(params.soft_finger.rolling_friction > 0.0 && params.soft_finger.rolling_friction <= 1.0))
+  {
+    return outOfRange("rolling_friction", params.soft_finger.rolling_friction, "(0, 1]", "m");
+  }
+  if (!(params.walk_edge_per_max_radius > 0.0 && params.walk_edge_per_max_radius <= 10.0))
+  {
+    return outOfRange("walk_edge_per_max_radius", params.walk_edge_per_max_radius, "(0, 10]", "dimensionless");
+  }
+  return validate(params.contact);
+}
+
+void validateOrThrow(const WorldParams& params)
+{
+  const std::string error = validate(params);
+  if (!error.empty())
+  {
+    throw InputError(error);
+  }
+}
+}  // namespace god_finger
