@@ -148,6 +148,7 @@ struct GodFingerWorld::Impl
   std::vector<btPersistentManifold*> injected;
   ContactArea scratch;
   double time = 0.0;
+  double deepest_penetration = 0.0;
   long steps = 0;
   long rejected_targets = 0;
 
@@ -280,9 +281,14 @@ struct GodFingerWorld::Impl
       proxy.state.contact_count = 0;
     }
     const int manifold_count = dispatcher->getNumManifolds();
+    deepest_penetration = 0.0;
     for (int m = 0; m < manifold_count; ++m)
     {
       btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      for (int p = 0; p < manifold->getNumContacts(); ++p)
+      {
+        deepest_penetration = std::max(deepest_penetration, -double(manifold->getContactPoint(p).getDistance()));
+      }
       const btCollisionObject* a = manifold->getBody0();
       const btCollisionObject* b = manifold->getBody1();
       const bool proxy_is_a = a->getUserIndex() == kKindProxy && b->getUserIndex() == kKindBody;
@@ -586,6 +592,11 @@ int GodFingerWorld::solverContactPoints() const
 int GodFingerWorld::solverProxyContactPoints() const
 {
   return impl_->solver->proxyPoints();
+}
+
+double GodFingerWorld::deepestPenetration() const
+{
+  return impl_->deepest_penetration;
 }
 
 double GodFingerWorld::time() const

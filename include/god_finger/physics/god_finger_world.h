@@ -95,6 +95,8 @@ class GodFingerWorld
   int solverContactPoints() const;
   // Of those, points between a proxy and an object.
   int solverProxyContactPoints() const;
+  // Deepest penetration (m, >= 0) among all contacts found in the last step, before the solver.
+  double deepestPenetration() const;
   double time() const;
   long steps() const;
   long rejectedTargets() const;

@@ -1,0 +1,69 @@
+// The paper's experiments as scripted, deterministic runs (no ROS): a scripted hand moves the
+// interfaces, the world steps at a fixed rate, metrics come out.
+//
+// Scenarios (scenes in urdf/scenes; z is up, REP-103):
+//  - kSlide (Fig. 5): a finger presses on a ball (r = 4 cm) resting on the table and pushes it
+//    10 cm sideways. Metrics: translation_m, rolled_rad, rolling_ratio = rolled arc / translation.
+//  - kLiftOne (Fig. 6): a finger comes from under a light plate resting on two rails and lifts
+//    it 10 cm in 2 s (fast: in 0.2 s), then holds. Metrics: lift_height_m, held_s,
+//    max_tilt_rad, dropped.
+//  - kLiftTwo (Fig. 7): the same with two fingers side by side.
+//  - kPinchCylinder (Fig. 8): two fingers moving along x press the two flat ends of a lying
+//    cylinder 5 mm under its axis, lift it 10 cm in 2 s, then stop; 25 s in all. Metrics:
+//    rotation_about_normal_rad, angular_velocity_about_normal_max (after the lift),
+//    fz_oscillation_amplitude_N (vertical net force on the centre of mass, last 10 s), held_s.
+// Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
+// ever tips in a deterministic simulation), so every scenario has the small offset a human
+// hand makes, the same for every model: 2 mm of the finger(s) off the centre line (plus up to
+// +-0.5 mm drawn from the seed), documented per scenario in experiment.cpp.
+#pragma once
+
+#include "god_finger/physics/world_params.h"
+
+#include <cstdint>
+#include <map>
+#include <string>
+
+namespace god_finger
+{
+enum class Scenario
+{
+  kSlide,
+  kLiftOne,
+  kLiftTwo,
+  kPinchCylinder,
+};
+const char* scenarioName(Scenario scenario);
+bool parseScenario(const std::string& text, Scenario* scenario);
+
+struct ExperimentOptions
+{
+  Scenario scenario = Scenario::kSlide;
+  ContactModel model = ContactModel::kGodFinger;
+  double duration = 0.0;  // s; <= 0: the scenario's own length
+  double time_step = 1e-3;
+  bool fast = false;  // lift scenarios: lift ten times faster
+  std::uint64_t seed = 1;
+  std::string csv;          // time series path, empty for none
+  std::string scenes_dir;   // folder of the scene URDFs (urdf/scenes of the package)
+};
+
+struct ExperimentResult
+{
+  std::string scenario;
+  std::string model;
+  double duration_s = 0.0;
+  long steps = 0;
+  double step_us_median = 0.0;
+  double step_us_p99 = 0.0;
+  double max_penetration_m = 0.0;
+  long nan = 0;
+  std::map<std::string, double> metrics;
+};
+
+// The world parameters a scenario runs with (its contact parameters, documented there).
+WorldParams scenarioParams(const ExperimentOptions& options);
+// Throws InputError on a bad scene or option.
+ExperimentResult runExperiment(const ExperimentOptions& options);
+std::string toJson(const ExperimentResult& result);
+}  // namespace god_finger
