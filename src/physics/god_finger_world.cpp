@@ -124,6 +124,18 @@ struct GodFingerWorld::Impl
     Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
     Eigen::Vector3d net_force = Eigen::Vector3d::Zero();
   };
+  struct WarmStart
+  {
+    long step = -1;  // the step the impulses are from
+    double normal = 0.0;
+    double lateral1 = 0.0;
+    double lateral2 = 0.0;
+  };
+  struct PadShape
+  {
+    long last_step = -2;
+    Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();
+  };
   struct Proxy
   {
     std::unique_ptr<btSphereShape> shape;
@@ -134,6 +146,22 @@ struct GodFingerWorld::Impl
     InterfaceState state;
     // Per touched body: the last first radial vector (a continuous basis in time).
     std::vector<Eigen::Vector3d> reference_tangents;
+    // Per touched body and sub-god-object index: the impulses the solver gave it in the last
+    // step, to warm-start the next one as Bullet does for its own persistent points.
+    std::vector<std::array<WarmStart, ContactParams::kMaxSubGodObjects>> warm_starts;
+    // Per touched body: the pad, the shape the finger took when the contact began. It moves
+    // with the proxy and never rotates; `orientation` is the object's (world) when the contact
+    // began, `last_step` the last step the contact existed.
+    std::vector<PadShape> pads;
+  };
+  // Where an injected point sits, to read its impulses back after the solver.
+  struct InjectedPoint
+  {
+    btPersistentManifold* manifold = nullptr;
+    int point = 0;
+    int proxy = 0;
+    int body = 0;
+    int sub_god_object = 0;
   };
 
   WorldParams params;
@@ -146,6 +174,7 @@ struct GodFingerWorld::Impl
   std::unique_ptr<CountingSolver> solver;
   std::unique_ptr<HookedWorld> world;
   std::vector<btPersistentManifold*> injected;
+  std::vector<InjectedPoint> injected_points;
   ContactArea scratch;
   double time = 0.0;
   double deepest_penetration = 0.0;
@@ -190,6 +219,10 @@ struct GodFingerWorld::Impl
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
     world->setGravity(toBullet(params.gravity));
     world->getSolverInfo().m_numIterations = params.solver_iterations;
+    // Two friction directions per point: an area resists twisting only if each of its points
+    // resists sliding in every tangential direction (Bullet's default is one direction, along
+    // the sliding velocity).
+    world->getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
     world->after_collision = [this]() { injectContactAreas(); };
     injected.clear();
     for (std::size_t i = 0; i < bodies.size(); ++i)
@@ -234,6 +267,7 @@ struct GodFingerWorld::Impl
     proxy.rigid->setUserIndex(kKindProxy);
     proxy.rigid->setUserIndex2(index);
     proxy.rigid->setAngularFactor(0.0);
+    proxy.rigid->setContactStiffnessAndDamping(params.pad.stiffness, params.pad.damping);
     proxy.rigid->setActivationState(DISABLE_DEACTIVATION);
     proxy.rigid->setFlags(proxy.rigid->getFlags() | BT_DISABLE_WORLD_GRAVITY);
     // Continuous collision so that a fast hand does not tunnel through thin objects.
@@ -248,6 +282,8 @@ struct GodFingerWorld::Impl
     proxy.state.interface_position = proxy.initial;
     proxy.state.proxy_position = proxy.initial;
     proxy.reference_tangents.assign(bodies.size(), Eigen::Vector3d::Zero());
+    proxy.warm_starts.assign(bodies.size(), {});
+    proxy.pads.assign(bodies.size(), PadShape());
   }
 
   void applyModelToProxy(Proxy& proxy)
@@ -262,8 +298,23 @@ struct GodFingerWorld::Impl
     return toEigen(body.rigid->getWorldTransform()) * body.geometry_in_com;
   }
 
+  // After the solver: keep each injected point's impulses for the next step's warm start.
+  void recordImpulses()
+  {
+    for (const InjectedPoint& record : injected_points)
+    {
+      const btManifoldPoint& point = record.manifold->getContactPoint(record.point);
+      WarmStart& warm = proxies[record.proxy].warm_starts[record.body][record.sub_god_object];
+      warm.step = steps;
+      warm.normal = point.m_appliedImpulse;
+      warm.lateral1 = point.m_appliedImpulseLateral1;
+      warm.lateral2 = point.m_appliedImpulseLateral2;
+    }
+  }
+
   void releaseInjected()
   {
+    injected_points.clear();
     for (btPersistentManifold* manifold : injected)
     {
       dispatcher->releaseManifold(manifold);
@@ -300,7 +351,10 @@ struct GodFingerWorld::Impl
       int deepest = -1;
       for (int p = 0; p < manifold->getNumContacts(); ++p)
       {
-        if (manifold->getContactPoint(p).getDistance() <= 0.0 &&
+        // Touching, not only penetrating: the solver keeps a resting contact at a distance
+        // of about zero on either side, and skipping the positive side would make the
+        // contact area flicker from one step to the next.
+        if (manifold->getContactPoint(p).getDistance() <= manifold->getContactBreakingThreshold() &&
             (deepest < 0 ||
              manifold->getContactPoint(p).getDistance() < manifold->getContactPoint(deepest).getDistance()))
         {
@@ -311,15 +365,16 @@ struct GodFingerWorld::Impl
       {
         continue;
       }
-      Proxy& proxy = proxies[(proxy_is_a ? a : b)->getUserIndex2()];
+      const int proxy_index = (proxy_is_a ? a : b)->getUserIndex2();
       const int body_index = (proxy_is_a ? b : a)->getUserIndex2();
-      addContactArea(manifold, manifold->getContactPoint(deepest), proxy_is_a, proxy, body_index);
+      addContactArea(manifold, manifold->getContactPoint(deepest), proxy_is_a, proxy_index, body_index);
     }
   }
 
-  void addContactArea(btPersistentManifold* manifold, const btManifoldPoint& contact, bool proxy_is_a, Proxy& proxy,
+  void addContactArea(btPersistentManifold* manifold, const btManifoldPoint& contact, bool proxy_is_a, int proxy_index,
                       int body_index)
   {
+    Proxy& proxy = proxies[proxy_index];
     InterfaceState& state = proxy.state;
     if (state.contact_count >= InterfaceState::kMaxContacts)
     {
@@ -344,6 +399,14 @@ struct GodFingerWorld::Impl
       return;
     }
     proxy.reference_tangents[body_index] = scratch.first_tangent;
+    PadShape& pad = proxy.pads[body_index];
+    if (pad.last_step != steps - 1)
+    {
+      pad.orientation = to_world.linear();
+    }
+    pad.last_step = steps;
+    // The object's rotation relative to the pad since the contact began.
+    const Eigen::Matrix3d object_to_pad = pad.orientation * to_world.linear().transpose();
 
     WorldContactArea& area = state.contacts[state.contact_count++];
     area.body = body_index;
@@ -353,6 +416,7 @@ struct GodFingerWorld::Impl
     area.radius = scratch.radius;
     area.feature = query.location.feature;
     area.sub_god_object_count = 0;
+    std::array<int, ContactParams::kMaxSubGodObjects> radial_index;
     for (int i = 0; i < scratch.count; ++i)
     {
       const SubGodObject& sgo = scratch.sub_god_objects[i];
@@ -360,6 +424,7 @@ struct GodFingerWorld::Impl
       {
         continue;
       }
+      radial_index[area.sub_god_object_count] = i;
       area.positions[area.sub_god_object_count++] = to_world * sgo.position;
     }
     if (params.model != ContactModel::kGodFinger)
@@ -378,19 +443,40 @@ struct GodFingerWorld::Impl
       }
       // Same normal and distance as the true contact; the object's point is the
       // sub-god-object, the proxy's point is offset along the normal by the distance.
+      // Distance: the true contact's, plus how far the object has tilted away from (or into)
+      // the pad at this point since the contact began. Without the tilt term (the paper's
+      // "same distance") a tilt never shows as penetration, and the solver's small velocity
+      // errors add up to a slow, uncorrected tipping (README, "Sub-god-object distances").
+      const Eigen::Vector3d lever = area.positions[i] - point_world;
+      const double distance = contact.getDistance() + normal_world.dot(object_to_pad * lever - lever);
       const btVector3 on_object = toBullet(area.positions[i]);
-      const btVector3 on_proxy = on_object + toBullet(normal_world) * contact.getDistance();
+      const btVector3 on_proxy = on_object + toBullet(normal_world) * distance;
       const btVector3 on_a = proxy_is_a ? on_proxy : on_object;
       const btVector3 on_b = proxy_is_a ? on_object : on_proxy;
       btManifoldPoint point(a->getWorldTransform().invXform(on_a), b->getWorldTransform().invXform(on_b),
-                            contact.m_normalWorldOnB, contact.getDistance());
+                            contact.m_normalWorldOnB, distance);
       point.m_positionWorldOnA = on_a;
       point.m_positionWorldOnB = on_b;
       point.m_combinedFriction = contact.m_combinedFriction;
       point.m_combinedRestitution = contact.m_combinedRestitution;
       point.m_combinedRollingFriction = contact.m_combinedRollingFriction;
       point.m_combinedSpinningFriction = contact.m_combinedSpinningFriction;
-      target->addManifoldPoint(point);
+      // The pad's compliance (see FingerPadParams), as on the true contact.
+      point.m_contactPointFlags = contact.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+      point.m_combinedContactStiffness1 = contact.m_combinedContactStiffness1;
+      point.m_combinedContactDamping1 = contact.m_combinedContactDamping1;
+      // Warm start from the same sub-god-object's impulses of the previous step, if it was
+      // there (without it the solver's 30 iterations leave a slow creep, see README).
+      const int sgo_index = radial_index[i];
+      const WarmStart& warm = proxy.warm_starts[body_index][sgo_index];
+      if (warm.step == steps - 1)
+      {
+        point.m_appliedImpulse = warm.normal;
+        point.m_appliedImpulseLateral1 = warm.lateral1;
+        point.m_appliedImpulseLateral2 = warm.lateral2;
+      }
+      const int slot = target->addManifoldPoint(point);
+      injected_points.push_back({target, slot, proxy_index, body_index, sgo_index});
     }
   }
 
@@ -422,6 +508,7 @@ struct GodFingerWorld::Impl
     }
     solver->resetCounts();
     world->stepSimulation(dt, 0);
+    recordImpulses();
     time = (steps + 1) * dt;
     ++steps;
     for (std::size_t i = 0; i < bodies.size(); ++i)

@@ -60,6 +60,14 @@ std::string validate(const WorldParams& params)
   {
     return outOfRange("rolling_friction", params.soft_finger.rolling_friction, "(0, 1]", "m");
   }
+  if (!(params.pad.stiffness > 0.0 && params.pad.stiffness <= 1e7))
+  {
+    return outOfRange("pad_stiffness", params.pad.stiffness, "(0, 1e+07]", "N/m");
+  }
+  if (!(params.pad.damping >= 0.0 && params.pad.damping <= 1e5))
+  {
+    return outOfRange("pad_damping", params.pad.damping, "[0, 1e+05]", "N s/m");
+  }
   if (!(params.walk_edge_per_max_radius > 0.0 && params.walk_edge_per_max_radius <= 10.0))
   {
     return outOfRange("walk_edge_per_max_radius", params.walk_edge_per_max_radius, "(0, 10]", "dimensionless");

@@ -2,8 +2,10 @@
 // interfaces, the world steps at a fixed rate, metrics come out.
 //
 // Scenarios (scenes in urdf/scenes; z is up, REP-103):
-//  - kSlide (Fig. 5): a finger presses on a ball (r = 4 cm) resting on the table and pushes it
-//    10 cm sideways. Metrics: translation_m, rolled_rad, rolling_ratio = rolled arc / translation.
+//  - kSlide (Fig. 5): a finger presses on the back of a ball (r = 4 cm) resting on the table,
+//    a little above its equator, and pushes it 10 cm sideways. Metrics: translation_m,
+//    rolled_rad (integral of the horizontal angular speed), rolling_ratio = rolled arc over
+//    translation (1: rolls without slipping, 0: slides).
 //  - kLiftOne (Fig. 6): a finger comes from under a light plate resting on two rails and lifts
 //    it 10 cm in 2 s (fast: in 0.2 s), then holds. Metrics: lift_height_m, held_s,
 //    max_tilt_rad, dropped.
@@ -14,8 +16,9 @@
 //    fz_oscillation_amplitude_N (vertical net force on the centre of mass, last 10 s), held_s.
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
-// hand makes, the same for every model: 2 mm of the finger(s) off the centre line (plus up to
+// hand makes, the same for every model: a few millimetres of offset or drift (plus up to
 // +-0.5 mm drawn from the seed), documented per scenario in experiment.cpp.
+// Contact parameters: the core's, except D0' = 1 mm (see scenarioParams).
 #pragma once
 
 #include "god_finger/physics/world_params.h"
@@ -43,6 +46,9 @@ struct ExperimentOptions
   double duration = 0.0;  // s; <= 0: the scenario's own length
   double time_step = 1e-3;
   bool fast = false;  // lift scenarios: lift ten times faster
+  // slide: height of the hand above the ball's centre (m), range [0, 0.04]. The default
+  // touches the ball 17 degrees above its equator.
+  double push_height = 0.0125;
   std::uint64_t seed = 1;
   std::string csv;          // time series path, empty for none
   std::string scenes_dir;   // folder of the scene URDFs (urdf/scenes of the package)

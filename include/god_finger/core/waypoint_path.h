@@ -1,0 +1,34 @@
+// A scripted hand: a position that moves in straight lines between timed waypoints.
+//
+// Units: seconds and metres. Invariants: waypoint times strictly increase; before the first
+// waypoint the path is at the first position, after the last at the last one.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace god_finger
+{
+struct Waypoint
+{
+  double time = 0.0;                                    // s
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();   // m
+};
+
+class WaypointPath
+{
+ public:
+  WaypointPath() = default;
+  // Throws InputError if the list is empty, a value is not finite or times do not increase.
+  explicit WaypointPath(std::vector<Waypoint> waypoints);
+  Eigen::Vector3d at(double time) const;
+  double endTime() const;
+  const std::vector<Waypoint>& waypoints() const
+  {
+    return waypoints_;
+  }
+
+ private:
+  std::vector<Waypoint> waypoints_;
+};
+}  // namespace god_finger

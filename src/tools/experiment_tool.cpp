@@ -1,0 +1,135 @@
+#include "experiment_tool.h"
+
+#include "god_finger/core/text_numbers.h"
+
+#include <cmath>
+#include <exception>
+
+namespace god_finger
+{
+const char* experimentToolUsage()
+{
+  return "usage: god_finger_experiment --scenario slide|lift_one|lift_two|pinch_cylinder\n"
+         "                             --model god_object|god_finger|soft_finger\n"
+         "                             [--duration S] [--dt S] [--csv FILE] [--seed N] [--fast]\n"
+         "                             [--push-height M] [--scenes DIR]\n"
+         "Runs the scenario's scripted hand motion in the physics world and prints one JSON object:\n"
+         "scenario, model, duration_s, steps, step_us_median, step_us_p99, max_penetration_m, nan,\n"
+         "metrics. --duration 0 (default) runs the scenario's own length; --fast lifts ten times\n"
+         "faster (lift scenarios); --push-height is the hand's height above the ball's centre (slide,\n"
+         "default 0.0125 m); --csv writes the time series.\n";
+}
+
+std::string parseExperimentToolOptions(int argc, const char* const* argv, const std::string& default_scenes_dir,
+                                       ExperimentToolOptions* options)
+{
+  ExperimentOptions& experiment = options->experiment;
+  experiment.scenes_dir = default_scenes_dir;
+  bool have_scenario = false;
+  bool have_model = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string option = argv[i];
+    if (option == "--help" || option == "-h")
+    {
+      options->help = true;
+      return "";
+    }
+    if (option == "--fast")
+    {
+      experiment.fast = true;
+      continue;
+    }
+    if (option.rfind("--", 0) != 0)
+    {
+      return "unexpected argument '" + option + "' (see --help)";
+    }
+    if (i + 1 >= argc)
+    {
+      return "option '" + option + "' needs a value";
+    }
+    const std::string value = argv[++i];
+    double number = 0.0;
+    long long integer = 0;
+    if (option == "--scenario")
+    {
+      if (!parseScenario(value, &experiment.scenario))
+      {
+        return "option '--scenario' = '" + value + "' is not one of slide, lift_one, lift_two, pinch_cylinder";
+      }
+      have_scenario = true;
+    }
+    else if (option == "--model")
+    {
+      if (!parseContactModel(value, &experiment.model))
+      {
+        return "option '--model' = '" + value + "' is not one of god_object, god_finger, soft_finger";
+      }
+      have_model = true;
+    }
+    else if (option == "--duration" || option == "--dt")
+    {
+      if (!parseDouble(value, &number) || !std::isfinite(number))
+      {
+        return "option '" + option + "' = '" + value + "' is not a number (s)";
+      }
+      if (option == "--duration" && !(number >= 0.0 && number <= 3600.0))
+      {
+        return "option '--duration' = '" + value + "' is out of range [0, 3600] (s)";
+      }
+      if (option == "--dt" && !(number >= 1e-5 && number <= 0.01))
+      {
+        return "option '--dt' = '" + value + "' is out of range [1e-05, 0.01] (s)";
+      }
+      (option == "--duration" ? experiment.duration : experiment.time_step) = number;
+    }
+    else if (option == "--push-height")
+    {
+      if (!parseDouble(value, &number) || !(number >= 0.0 && number <= 0.04))
+      {
+        return "option '--push-height' = '" + value + "' is out of range [0, 0.04] (m)";
+      }
+      experiment.push_height = number;
+    }
+    else if (option == "--seed")
+    {
+      if (!parseInteger(value, &integer) || integer < 0)
+      {
+        return "option '--seed' = '" + value + "' is not a non-negative integer";
+      }
+      experiment.seed = static_cast<std::uint64_t>(integer);
+    }
+    else if (option == "--csv")
+    {
+      experiment.csv = value;
+    }
+    else if (option == "--scenes")
+    {
+      experiment.scenes_dir = value;
+    }
+    else
+    {
+      return "unknown option '" + option + "' (see --help)";
+    }
+  }
+  if (!have_scenario || !have_model)
+  {
+    return std::string("missing option '") + (have_scenario ? "--model" : "--scenario") + "' (see --help)";
+  }
+  return "";
+}
+
+int runExperimentTool(const ExperimentToolOptions& options, std::ostream& out, std::ostream& report)
+{
+  try
+  {
+    out << toJson(runExperiment(options.experiment)) << std::endl;
+    return 0;
+  }
+  catch (const std::exception& exception)
+  {
+    report << "god_finger_experiment: " << exception.what() << "\n";
+    return 2;
+  }
+}
+}  // namespace god_finger
