@@ -177,12 +177,12 @@ class MetricRecorder
       }
       case Scenario::kPinchCylinder:
       {
-        if (lifted)
-        {
-          held_ += dt;
-        }
         if (time >= script_.lift_end)
         {
+          if (lifted)
+          {
+            held_ += dt;
+          }
           if (!have_lift_pose_)
           {
             lift_pose_ = state.pose.linear();

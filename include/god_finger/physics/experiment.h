@@ -13,7 +13,9 @@
 //  - kPinchCylinder (Fig. 8): two fingers moving along x press the two flat ends of a lying
 //    cylinder 5 mm under its axis, lift it 10 cm in 2 s, then stop; 25 s in all. Metrics:
 //    rotation_about_normal_rad, angular_velocity_about_normal_max (after the lift),
-//    fz_oscillation_amplitude_N (vertical net force on the centre of mass, last 10 s), held_s.
+//    fz_oscillation_amplitude_N (half the peak-to-peak vertical net force on the centre of
+//    mass, last 10 s), held_s (time after the lift with the object more than half the lift
+//    height above its start; the same in the lift scenarios), lift_height_m.
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
