@@ -21,8 +21,8 @@ WaypointPath::WaypointPath(std::vector<Waypoint> waypoints) : waypoints_(std::mo
     }
     if (i > 0 && !(waypoints_[i].time > waypoints_[i - 1].time))
     {
-      throw InputError("waypoint path: waypoint " + std::to_string(i) + " at t = " +
-                       std::to_string(waypoints_[i].time) + " s does not come after the previous one");
+      throw InputError("waypoint path: waypoint " + std::to_string(i) +
+                       " at t = " + std::to_string(waypoints_[i].time) + " s does not come after the previous one");
     }
   }
 }

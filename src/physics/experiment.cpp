@@ -147,7 +147,7 @@ class MetricRecorder
 {
  public:
   MetricRecorder(Scenario scenario, const Script& script, const BodyState& initial, double object_radius)
-    : scenario_(scenario), script_(script), initial_(initial), object_radius_(object_radius)
+      : scenario_(scenario), script_(script), initial_(initial), object_radius_(object_radius)
   {
   }
 
@@ -274,8 +274,8 @@ class CsvWriter
     file_ << "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz,fx,fy,fz";
     for (int i = 0; i < fingers; ++i)
     {
-      file_ << ",f" << i << "_ix,f" << i << "_iy,f" << i << "_iz,f" << i << "_px,f" << i << "_py,f" << i << "_pz,f"
-            << i << "_ux,f" << i << "_uy,f" << i << "_uz,f" << i << "_contacts,f" << i << "_sgo";
+      file_ << ",f" << i << "_ix,f" << i << "_iy,f" << i << "_iz,f" << i << "_px,f" << i << "_py,f" << i << "_pz,f" << i
+            << "_ux,f" << i << "_uy,f" << i << "_uz,f" << i << "_contacts,f" << i << "_sgo";
     }
     file_ << "\n";
   }
@@ -406,7 +406,8 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
   }
   if (!(options.push_height >= 0.0 && options.push_height <= 0.04))
   {
-    throw InputError("option 'push-height' = " + std::to_string(options.push_height) + " is out of range [0, 0.04] (m)");
+    throw InputError("option 'push-height' = " + std::to_string(options.push_height) +
+                     " is out of range [0, 0.04] (m)");
   }
   const Script script = scriptFor(options);
   const SceneDescription scene = loadUrdfScene(options.scenes_dir + "/" + script.scene_file);

@@ -1,8 +1,8 @@
 // The physics world against analytic answers: a proxy resting on a plane, the friction cone on
 // flat and inclined planes, no tunnelling at 1 m/s, every sub-god-object inside Bullet's
 // solver, model switching, determinism, and bad input.
-#include "god_finger/core/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/core/input_error.h"
 
 #include <gtest/gtest.h>
 

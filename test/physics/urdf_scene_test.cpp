@@ -1,7 +1,7 @@
 // Scenes from URDF: the shipped scenes load as documented, and every malformed input gives one
 // InputError naming the file, the link and the problem.
-#include "god_finger/core/input_error.h"
 #include "god_finger/physics/urdf_scene.h"
+#include "god_finger/core/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -91,11 +91,11 @@ TEST(UrdfScene, ConcaveMeshSceneResolvesItsMeshWithScale)
 
 TEST(UrdfScene, MaterialComesFromThePyBulletContactTag)
 {
-  const SceneDescription scene = parseUrdfScene(
-      sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial +
-                "<contact><lateral_friction value='0.3'/><rolling_friction value='0.01'/>"
-                "<spinning_friction value='0.02'/><restitution value='0.5'/></contact>"),
-      kScenes);
+  const SceneDescription scene =
+      parseUrdfScene(sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial +
+                               "<contact><lateral_friction value='0.3'/><rolling_friction value='0.01'/>"
+                               "<spinning_friction value='0.02'/><restitution value='0.5'/></contact>"),
+                     kScenes);
   const ContactMaterial& material = scene.bodies[scene.find("thing")].material;
   EXPECT_DOUBLE_EQ(material.friction, 0.3);
   EXPECT_DOUBLE_EQ(material.rolling_friction, 0.01);
@@ -155,8 +155,8 @@ TEST(UrdfScene, FreeBodyWithoutInertialIsRejected)
 
 TEST(UrdfScene, RevoluteJointIsRejected)
 {
-  const std::string error = errorOf(sceneWith(
-      "<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial, "continuous"));
+  const std::string error = errorOf(
+      sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial, "continuous"));
   EXPECT_NE(error.find("link 'thing': joint 'j' must be 'fixed'"), std::string::npos) << error;
 }
 

@@ -3,6 +3,8 @@
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 
+#include "tool_run.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -17,45 +19,13 @@ namespace god_finger
 {
 namespace
 {
-struct ToolRun
-{
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string readFile(const std::string& path)
-{
-  std::ifstream stream(path);
-  std::stringstream content;
-  content << stream.rdbuf();
-  return content.str();
-}
+using test::jsonValue;
+using test::readFile;
+using test::ToolRun;
 
 ToolRun runTool(const std::string& arguments)
 {
-  const std::string err_path = ::testing::TempDir() + "god_finger_contact_stderr.txt";
-  const std::string command = std::string(GOD_FINGER_CONTACT_TOOL) + " " + arguments + " 2>" + err_path;
-  ToolRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0)
-  {
-    run.out.append(buffer, n);
-  }
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = readFile(err_path);
-  return run;
-}
-
-// The number after "key": in a flat JSON text (first occurrence).
-double jsonValue(const std::string& json, const std::string& key)
-{
-  const std::size_t at = json.find("\"" + key + "\": ");
-  EXPECT_NE(at, std::string::npos) << key;
-  return at == std::string::npos ? -1.0 : std::atof(json.c_str() + at + key.size() + 4);
+  return test::runTool(GOD_FINGER_CONTACT_TOOL, arguments);
 }
 
 std::string mesh(const std::string& name)

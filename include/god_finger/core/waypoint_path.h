@@ -11,8 +11,8 @@ namespace god_finger
 {
 struct Waypoint
 {
-  double time = 0.0;                                    // s
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();   // m
+  double time = 0.0;                                   // s
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m
 };
 
 class WaypointPath

@@ -52,8 +52,8 @@ struct ExperimentOptions
   // touches the ball 17 degrees above its equator.
   double push_height = 0.0125;
   std::uint64_t seed = 1;
-  std::string csv;          // time series path, empty for none
-  std::string scenes_dir;   // folder of the scene URDFs (urdf/scenes of the package)
+  std::string csv;         // time series path, empty for none
+  std::string scenes_dir;  // folder of the scene URDFs (urdf/scenes of the package)
 };
 
 struct ExperimentResult

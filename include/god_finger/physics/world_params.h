@@ -45,7 +45,7 @@ struct FingerPadParams
 
 struct WorldParams
 {
-  double time_step = 1e-3;                                 // s, range [1e-5, 0.1]
+  double time_step = 1e-3;  // s, range [1e-5, 0.1]
   // Sequential-impulse iterations per step. A pinched object slowly creeps about the contact
   // normal when they are too few (README, "Solver iterations"): 30 gives 0.086 rad in the 21.5 s
   // after the pinch_cylinder lift, 50 gives 0.010 rad, 60 gives 0.0035 rad.

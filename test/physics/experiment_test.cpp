@@ -1,0 +1,164 @@
+// The paper's claims, held to account with identical scripted input for each contact model
+// (README "Experiments" has the numbers these runs print).
+#include "god_finger/physics/experiment.h"
+#include "god_finger/core/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace god_finger
+{
+namespace
+{
+ExperimentResult run(Scenario scenario, ContactModel model, double push_height = ExperimentOptions().push_height)
+{
+  ExperimentOptions options;
+  options.scenario = scenario;
+  options.model = model;
+  options.push_height = push_height;
+  options.scenes_dir = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
+  const ExperimentResult result = runExperiment(options);
+  EXPECT_EQ(result.nan, 0);
+  return result;
+}
+
+// Fig. 5: pushed a little above its equator, the ball rolls under a god-object (its rolled arc
+// equals its translation) and slides under a god-finger.
+TEST(Experiment, SlideBallRollsUnderGodObjectAndSlidesUnderGodFinger)
+{
+  const ExperimentResult object = run(Scenario::kSlide, ContactModel::kGodObject);
+  const ExperimentResult finger = run(Scenario::kSlide, ContactModel::kGodFinger);
+  const ExperimentResult soft = run(Scenario::kSlide, ContactModel::kSoftFinger);
+  EXPECT_GT(object.metrics.at("rolling_ratio"), 0.9);
+  EXPECT_LT(finger.metrics.at("rolling_ratio"), 0.2);
+  EXPECT_LT(finger.metrics.at("rolled_rad"), 0.2 * object.metrics.at("rolled_rad"));
+  // Both moved the ball: the god-finger one along with the hand (10 cm), the rolling one
+  // until the finger rode over it.
+  EXPECT_GT(finger.metrics.at("translation_m"), 0.09);
+  EXPECT_GT(object.metrics.at("translation_m"), 0.05);
+  // Bullet's rolling friction at one point (1e-4 m) is far too small to stop the rolling.
+  EXPECT_GT(soft.metrics.at("rolling_ratio"), 0.9);
+}
+
+// The paper: the god-finger "makes it easier to let it slide". Over a sweep of push heights,
+// wherever the god-object slides the god-finger slides too, and there are heights where only
+// the god-finger slides.
+TEST(Experiment, SlideGodFingerSlidesWhereverGodObjectDoesAndMore)
+{
+  int only_finger_slides = 0;
+  for (double height : {0.0075, 0.01, 0.0125, 0.015, 0.02})
+  {
+    SCOPED_TRACE(height);
+    const double object = run(Scenario::kSlide, ContactModel::kGodObject, height).metrics.at("rolling_ratio");
+    const double finger = run(Scenario::kSlide, ContactModel::kGodFinger, height).metrics.at("rolling_ratio");
+    EXPECT_LE(finger, object + 0.02);
+    if (object > 0.9 && finger < 0.2)
+    {
+      ++only_finger_slides;
+    }
+  }
+  EXPECT_GE(only_finger_slides, 1);
+}
+
+// Fig. 6: one finger under a light plate, 2 mm off its centre: held by a god-finger, dropped by
+// a god-object (and by the soft finger: its rolling resistance, 8e-5 m x 0.25 N, is twenty
+// times smaller than the tipping torque, 0.25 N x 2 mm).
+TEST(Experiment, LiftOneHeldByGodFingerDroppedByGodObject)
+{
+  const ExperimentResult finger = run(Scenario::kLiftOne, ContactModel::kGodFinger);
+  EXPECT_EQ(finger.metrics.at("dropped"), 0.0);
+  EXPECT_NEAR(finger.metrics.at("lift_height_m"), 0.1, 0.005);
+  EXPECT_GE(finger.metrics.at("held_s"), 1.5);
+  EXPECT_LT(finger.metrics.at("max_tilt_rad"), 0.02);
+  for (ContactModel model : {ContactModel::kGodObject, ContactModel::kSoftFinger})
+  {
+    const ExperimentResult point = run(Scenario::kLiftOne, model);
+    EXPECT_EQ(point.metrics.at("dropped"), 1.0) << contactModelName(model);
+    EXPECT_EQ(point.metrics.at("held_s"), 0.0) << contactModelName(model);
+    EXPECT_GT(point.metrics.at("max_tilt_rad"), 0.5) << contactModelName(model);
+  }
+}
+
+// Fig. 7: two fingers side by side under the plate, both 2 mm off its centre line: the plate
+// tips about the line through two points, not about two areas.
+TEST(Experiment, LiftTwoHeldByGodFingersDroppedByGodObjects)
+{
+  const ExperimentResult finger = run(Scenario::kLiftTwo, ContactModel::kGodFinger);
+  EXPECT_EQ(finger.metrics.at("dropped"), 0.0);
+  EXPECT_NEAR(finger.metrics.at("lift_height_m"), 0.1, 0.005);
+  EXPECT_LT(finger.metrics.at("max_tilt_rad"), 0.02);
+  EXPECT_EQ(run(Scenario::kLiftTwo, ContactModel::kGodObject).metrics.at("dropped"), 1.0);
+}
+
+// Fig. 8: pinched by its flat ends 5 mm under its axis and lifted, the cylinder swings about the
+// contact normal without end between two god-objects, and the vertical force on its centre of
+// mass keeps oscillating; between two god-fingers it stays still, without creep, for the whole
+// run.
+TEST(Experiment, PinchCylinderStillUnderGodFingerOscillatesUnderGodObject)
+{
+  const ExperimentResult object = run(Scenario::kPinchCylinder, ContactModel::kGodObject);
+  const ExperimentResult finger = run(Scenario::kPinchCylinder, ContactModel::kGodFinger);
+  EXPECT_GT(object.metrics.at("rotation_about_normal_rad"), 1.0);
+  EXPECT_GT(object.metrics.at("angular_velocity_about_normal_max"), 5.0);
+  EXPECT_GT(object.metrics.at("fz_oscillation_amplitude_N"), 0.1);
+
+  EXPECT_LT(finger.metrics.at("rotation_about_normal_rad"), 0.01);
+  EXPECT_LT(finger.metrics.at("angular_velocity_about_normal_max"), 0.002);
+  EXPECT_LT(finger.metrics.at("fz_oscillation_amplitude_N"), 0.001);
+  // Lifted from the end of the lift (3.5 s) to the end of the run (25 s).
+  EXPECT_GE(finger.metrics.at("held_s"), 21.5 - 1e-9);
+  EXPECT_NEAR(finger.metrics.at("lift_height_m"), 0.1, 0.005);
+}
+
+std::string readFile(const std::string& path)
+{
+  std::ifstream file(path);
+  std::stringstream content;
+  content << file.rdbuf();
+  return content.str();
+}
+
+TEST(Experiment, TwoRunsGiveIdenticalCsv)
+{
+  ExperimentOptions options;
+  options.scenario = Scenario::kLiftTwo;
+  options.model = ContactModel::kGodFinger;
+  options.duration = 1.5;
+  options.scenes_dir = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
+  const std::string first = testing::TempDir() + "/determinism_first.csv";
+  const std::string second = testing::TempDir() + "/determinism_second.csv";
+  options.csv = first;
+  runExperiment(options);
+  options.csv = second;
+  runExperiment(options);
+  const std::string a = readFile(first);
+  const std::string b = readFile(second);
+  // Header plus one row per step, and the plate moved (not two identical resting states).
+  EXPECT_EQ(std::count(a.begin(), a.end(), '\n'), 1501);
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a.find("f1_sgo"), std::string::npos);
+  std::remove(first.c_str());
+  std::remove(second.c_str());
+}
+
+TEST(Experiment, BadOptionsAreRejected)
+{
+  ExperimentOptions options;
+  options.scenes_dir = "/nonexistent";
+  EXPECT_THROW(runExperiment(options), InputError);
+  options.scenes_dir = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
+  options.time_step = 0.0;
+  EXPECT_THROW(runExperiment(options), InputError);
+  options.time_step = 1e-3;
+  options.push_height = 0.1;
+  EXPECT_THROW(runExperiment(options), InputError);
+  options.push_height = 0.01;
+  options.csv = "/nonexistent/dir/out.csv";
+  EXPECT_THROW(runExperiment(options), InputError);
+}
+}  // namespace
+}  // namespace god_finger

@@ -1,0 +1,91 @@
+// god_finger_experiment as a user runs it: one JSON object with the documented keys, a CSV
+// time series, and one clear line with exit code 2 on bad options.
+#include "tool_run.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+namespace god_finger
+{
+namespace
+{
+test::ToolRun runTool(const std::string& arguments)
+{
+  return test::runTool(GOD_FINGER_EXPERIMENT_TOOL, arguments);
+}
+
+TEST(ExperimentTool, PrintsOneJsonObjectWithTheDocumentedKeys)
+{
+  const std::string csv = ::testing::TempDir() + "experiment_tool.csv";
+  const test::ToolRun run = runTool("--scenario lift_one --model god_finger --duration 1 --csv " + csv);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out.front(), '{');
+  EXPECT_EQ(run.out.find('\n'), run.out.size() - 1);
+  EXPECT_NE(run.out.find("\"scenario\": \"lift_one\""), std::string::npos);
+  EXPECT_NE(run.out.find("\"model\": \"god_finger\""), std::string::npos);
+  EXPECT_DOUBLE_EQ(test::jsonValue(run.out, "duration_s"), 1.0);
+  EXPECT_DOUBLE_EQ(test::jsonValue(run.out, "steps"), 1000.0);
+  EXPECT_GT(test::jsonValue(run.out, "step_us_median"), 0.0);
+  EXPECT_GE(test::jsonValue(run.out, "step_us_p99"), test::jsonValue(run.out, "step_us_median"));
+  EXPECT_GE(test::jsonValue(run.out, "max_penetration_m"), 0.0);
+  EXPECT_EQ(test::jsonValue(run.out, "nan"), 0.0);
+  for (const char* key : {"lift_height_m", "held_s", "max_tilt_rad", "dropped"})
+  {
+    EXPECT_NE(run.out.find(std::string("\"") + key + "\""), std::string::npos) << key;
+  }
+  const std::string series = test::readFile(csv);
+  EXPECT_EQ(series.rfind("t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz,fx,fy,fz,f0_ix", 0), 0u);
+  std::remove(csv.c_str());
+}
+
+TEST(ExperimentTool, DtAndDurationSetTheSteps)
+{
+  const test::ToolRun run = runTool("--scenario slide --model god_object --duration 0.5 --dt 0.0005");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_DOUBLE_EQ(test::jsonValue(run.out, "steps"), 1000.0);
+  EXPECT_NE(run.out.find("\"rolling_ratio\""), std::string::npos);
+}
+
+TEST(ExperimentTool, BadOptionsGiveOneLineAndExitCode2)
+{
+  const struct
+  {
+    const char* arguments;
+    const char* message;
+  } cases[] = {
+      {"--model god_finger", "missing option '--scenario'"},
+      {"--scenario slide", "missing option '--model'"},
+      {"--scenario roll --model god_finger", "option '--scenario' = 'roll' is not one of"},
+      {"--scenario slide --model point", "option '--model' = 'point' is not one of"},
+      {"--scenario slide --model god_finger --dt 0", "option '--dt' = '0' is out of range"},
+      {"--scenario slide --model god_finger --dt abc", "option '--dt' = 'abc' is not a number"},
+      {"--scenario slide --model god_finger --duration -1", "option '--duration' = '-1' is out of range"},
+      {"--scenario slide --model god_finger --seed -3", "option '--seed' = '-3' is not a non-negative integer"},
+      {"--scenario slide --model god_finger --push-height 1", "option '--push-height' = '1' is out of range"},
+      {"--scenario slide --model god_finger --frobnicate 1", "unknown option '--frobnicate'"},
+      {"--scenario slide --model god_finger --seed", "option '--seed' needs a value"},
+      {"--scenario slide --model god_finger --scenes /nonexistent", "URDF '/nonexistent/table_sphere.urdf'"},
+      {"--scenario slide --model god_finger --csv /nonexistent/x.csv", "csv file '/nonexistent/x.csv'"},
+  };
+  for (const auto& c : cases)
+  {
+    SCOPED_TRACE(c.arguments);
+    const test::ToolRun run = runTool(c.arguments);
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_TRUE(run.out.empty());
+    EXPECT_EQ(run.err.rfind("god_finger_experiment: ", 0), 0u) << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos) << run.err;
+    EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;
+  }
+}
+
+TEST(ExperimentTool, HelpPrintsUsage)
+{
+  const test::ToolRun run = runTool("--help");
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_EQ(run.out.rfind("usage: god_finger_experiment", 0), 0u);
+}
+}  // namespace
+}  // namespace god_finger
