@@ -1,7 +1,9 @@
 // The physics world against analytic answers: a proxy resting on a plane, the friction cone on
 // flat and inclined planes, no tunnelling at 1 m/s, every sub-god-object inside Bullet's
 // solver, model switching, determinism, and bad input.
+#include "god_finger/mesh_io/mesh_loader.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/physics/urdf_scene.h"
 #include "god_finger/core/input_error.h"
 
 #include <gtest/gtest.h>
@@ -277,6 +279,39 @@ TEST(GodFingerWorld, BadInputIsRejectedAndLosesNothing)
   bad.alpha = 0.5;
   EXPECT_THROW(world.setContactParams(bad), InputError);
   EXPECT_DOUBLE_EQ(world.params().contact.alpha, ContactParams().alpha);
+}
+}  // namespace
+}  // namespace god_finger
+
+namespace god_finger
+{
+namespace
+{
+// The concave scene: the torus collides through its convex decomposition, its contact areas
+// walk on the original mesh, and it rests on the table instead of falling through its hole.
+TEST(GodFingerWorld, ConcaveMeshObjectRestsAndTakesContactAreas)
+{
+  const SceneDescription scene = loadUrdfScene(std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/table_torus.urdf");
+  GodFingerWorld world(scene, WorldParams());
+  const int torus = scene.find("torus");
+  ASSERT_GE(torus, 0);
+  const BodyState start = world.bodyState(torus);
+  // A finger presses down on the top of the ring (R = 6 cm, r = 2 cm).
+  const Eigen::Vector3d top = start.center_of_mass + Eigen::Vector3d(0.06, 0, 0.02);
+  const int finger = world.addInterface(top + Eigen::Vector3d(0, 0, 0.01));
+  world.setInterfaceTarget(finger, top - Eigen::Vector3d(0, 0, 0.005));
+  run(&world, 1.0);
+  const BodyState end = world.bodyState(torus);
+  EXPECT_NEAR(end.center_of_mass.z(), start.center_of_mass.z(), 1e-3);
+  const InterfaceState& state = world.interfaceState(finger);
+  ASSERT_EQ(state.contact_count, 1);
+  EXPECT_EQ(state.contacts[0].body, torus);
+  EXPECT_EQ(state.contacts[0].sub_god_object_count, world.params().contact.sub_god_objects);
+  EXPECT_GT(state.contacts[0].radius, 0.005);
+  // The walk ran on the original mesh, not on the decomposition's hulls.
+  const TriangleMesh original = loadTriangleMesh(std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/meshes/torus.dae");
+  EXPECT_EQ(world.walkSurface(torus).triangleCount(), original.triangleCount());
+  EXPECT_GT(original.triangleCount(), 500);
 }
 }  // namespace
 }  // namespace god_finger
