@@ -27,7 +27,7 @@ double radialDistance(double radius, const Eigen::Vector3d& coupling, const Eige
 }
 
 void computeContactArea(const TriangleMesh& mesh, const ContactQuery& query, const ContactParams& params,
-                        ContactArea* out)
+                        ContactAreaResult* out)
 {
   out->valid = false;
   out->count = 0;

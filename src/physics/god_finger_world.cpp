@@ -175,7 +175,7 @@ struct GodFingerWorld::Impl
   std::unique_ptr<HookedWorld> world;
   std::vector<btPersistentManifold*> injected;
   std::vector<InjectedPoint> injected_points;
-  ContactArea scratch;
+  ContactAreaResult scratch;
   double time = 0.0;
   double deepest_penetration = 0.0;
   long steps = 0;

@@ -167,7 +167,7 @@ int runContactTool(const ContactToolOptions& options, std::ostream& out, std::os
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const ContactParams& params = options.params;
   const double surface_tolerance = 1e-9 * std::max(mesh.boundingBoxDiagonal(), 1e-300);
-  ContactArea area;
+  ContactAreaResult area;
   std::vector<double> times;
   times.reserve(options.samples);
   std::map<std::string, int> stops;

@@ -90,7 +90,7 @@ TEST(RadialDistance, Equation2Limits)
   EXPECT_DOUBLE_EQ(radialDistance(0.007, Eigen::Vector3d(1e-3, 0, 0), radial, params), 0.007);
 }
 
-TEST(ContactArea, FlatFaceGivesTheEquation2Ellipse)
+TEST(ContactAreaResult, FlatFaceGivesTheEquation2Ellipse)
 {
   const TriangleMesh mesh = bigFlatTriangle();
   ContactParams params;
@@ -100,7 +100,7 @@ TEST(ContactArea, FlatFaceGivesTheEquation2Ellipse)
   query.normal = Eigen::Vector3d(0, 0, 1);
   query.coupling = Eigen::Vector3d(0.003, -0.001, -0.006);
   query.depth = 0.002;
-  ContactArea area;
+  ContactAreaResult area;
   computeContactArea(mesh, query, params, &area);
   ASSERT_TRUE(area.valid);
   ASSERT_EQ(area.count, 16);
@@ -132,14 +132,14 @@ TEST(ContactArea, FlatFaceGivesTheEquation2Ellipse)
   EXPECT_GT(shortest_direction.dot(tangential.normalized()), std::cos(2.0 * M_PI / 16.0));
 }
 
-TEST(ContactArea, NoPressingForceGivesAPointAndNoNan)
+TEST(ContactAreaResult, NoPressingForceGivesAPointAndNoNan)
 {
   const TriangleMesh mesh = bigFlatTriangle();
   ContactQuery query;
   query.location = locateOnFace(mesh, 0, Eigen::Vector3d(0.0, 0.0, 0.0));
   query.normal = Eigen::Vector3d(0, 0, 1);
   query.coupling = Eigen::Vector3d::Zero();
-  ContactArea area;
+  ContactAreaResult area;
   computeContactArea(mesh, query, ContactParams(), &area);
   ASSERT_TRUE(area.valid);
   EXPECT_EQ(area.radius, 0.0);
@@ -150,14 +150,14 @@ TEST(ContactArea, NoPressingForceGivesAPointAndNoNan)
   }
 }
 
-TEST(ContactArea, NonFiniteInputIsRejectedWithoutOutput)
+TEST(ContactAreaResult, NonFiniteInputIsRejectedWithoutOutput)
 {
   const TriangleMesh mesh = bigFlatTriangle();
   ContactQuery query;
   query.location = locateOnFace(mesh, 0, Eigen::Vector3d(0.0, 0.0, 0.0));
   query.normal = Eigen::Vector3d(0, 0, 1);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  ContactArea area;
+  ContactAreaResult area;
   query.coupling = Eigen::Vector3d(nan, 0, -0.01);
   computeContactArea(mesh, query, ContactParams(), &area);
   EXPECT_FALSE(area.valid);
@@ -198,7 +198,7 @@ TEST_F(CubeContact, EdgeContactKeepsFacesWithinTauAAndDropsTheRest)
   ContactParams params;
   params.friction = std::numeric_limits<double>::infinity();
   params.sub_god_objects = 12;
-  ContactArea area;
+  ContactAreaResult area;
 
   params.max_angle = 45.0 * kDegree + 1e-9;
   computeContactArea(mesh_, query, params, &area);
@@ -279,7 +279,7 @@ TEST_F(CubeContact, VertexContactSpreadsOverTheThreeFaces)
   params.friction = std::numeric_limits<double>::infinity();
   params.sub_god_objects = 9;
   params.max_angle = 60.0 * kDegree;
-  ContactArea area;
+  ContactAreaResult area;
   computeContactArea(mesh_, query, params, &area);
   ASSERT_TRUE(area.valid);
   EXPECT_EQ(area.active, 9);
@@ -303,7 +303,7 @@ TEST_F(CubeContact, VertexContactSpreadsOverTheThreeFaces)
   EXPECT_EQ(area.active, 0);
 }
 
-TEST(ContactArea, InvariantUnderScaleAndOffset)
+TEST(ContactAreaResult, InvariantUnderScaleAndOffset)
 {
   // A contact inside a face of a tessellated sphere (so that the located face, hence the
   // contact normal, is unambiguous), repeated on the same mesh scaled and moved far away.
@@ -316,7 +316,7 @@ TEST(ContactArea, InvariantUnderScaleAndOffset)
   const Eigen::Vector3d coupling = Eigen::Vector3d(0.002, 0.001, -0.001) - 0.004 * normal;
   ContactParams params;
   params.sub_god_objects = 12;
-  ContactArea reference;
+  ContactAreaResult reference;
   {
     const SurfaceLocator locator(base_mesh);
     ContactQuery query;
@@ -347,7 +347,7 @@ TEST(ContactArea, InvariantUnderScaleAndOffset)
     query.location = locator.closest(c.scale * probe + c.offset);
     query.normal = normal;
     query.coupling = c.scale * coupling;
-    ContactArea area;
+    ContactAreaResult area;
     computeContactArea(mesh, query, scaled, &area);
     ASSERT_TRUE(area.valid);
     EXPECT_EQ(area.active, reference.active);
@@ -366,13 +366,13 @@ TEST(ContactArea, InvariantUnderScaleAndOffset)
   }
 }
 
-TEST(ContactArea, SteadyStateDoesNotAllocate)
+TEST(ContactAreaResult, SteadyStateDoesNotAllocate)
 {
   const TriangleMesh mesh = TriangleMesh::build(makeIcosphere(0.05, 4));
   const SurfaceLocator locator(mesh);
   ContactParams params;
   params.sub_god_objects = 64;
-  ContactArea area;
+  ContactAreaResult area;
   ContactQuery query;
   const long before = g_allocations.load();
   for (int i = 0; i < 200; ++i)
@@ -390,7 +390,7 @@ TEST(ContactArea, SteadyStateDoesNotAllocate)
   EXPECT_EQ(after - before, 0);
 }
 
-TEST(ContactArea, FirstTangentIsTransportedForContinuity)
+TEST(ContactAreaResult, FirstTangentIsTransportedForContinuity)
 {
   const TriangleMesh mesh = bigFlatTriangle();
   ContactQuery query;
@@ -398,7 +398,7 @@ TEST(ContactArea, FirstTangentIsTransportedForContinuity)
   query.coupling = Eigen::Vector3d(0, 0, -0.004);
   query.reference_tangent = Eigen::Vector3d(0.6, 0.8, 0.0);
   query.normal = Eigen::Vector3d(0, 0, 1);
-  ContactArea area;
+  ContactAreaResult area;
   computeContactArea(mesh, query, ContactParams(), &area);
   EXPECT_NEAR((area.first_tangent - Eigen::Vector3d(0.6, 0.8, 0.0)).norm(), 0.0, 1e-15);
   EXPECT_NEAR((area.sub_god_objects[0].radial - Eigen::Vector3d(0.6, 0.8, 0.0)).norm(), 0.0, 1e-15);

@@ -48,7 +48,7 @@ struct SubGodObject
   }
 };
 
-struct ContactArea
+struct ContactAreaResult
 {
   bool valid = false;   // false: bad input (non-finite, location off the mesh); count = 0
   double radius = 0.0;  // r (m), Eq. 1
@@ -71,5 +71,5 @@ double radialDistance(double radius, const Eigen::Vector3d& coupling, const Eige
 // The whole method for one contact. `params` must be valid (validate()); `out` is
 // overwritten. Never allocates, never throws.
 void computeContactArea(const TriangleMesh& mesh, const ContactQuery& query, const ContactParams& params,
-                        ContactArea* out);
+                        ContactAreaResult* out);
 }  // namespace god_finger

@@ -1,0 +1,44 @@
+// From a haptic device's workspace to the world and back.
+//
+// Position: p_world = offset + scale * R p_device (device frame: the device's own axes turned
+// to REP-103 by its backend, metres). Force: f_device = force_scale * R^T f_world. With
+// force_scale = scale the mapping is passive (the work done in the world equals the work
+// done on the hand); the default 1 renders world forces as they are and leaves the device's
+// stiffness at k_world / scale. Invariant: R is a rotation (orthonormal, det +1).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <string>
+
+namespace god_finger
+{
+struct WorkspaceMappingParams
+{
+  double scale = 1.0;        // world metres per device metre, range (0, 1e3]
+  double force_scale = 1.0;  // device newtons per world newton, range (0, 1e3]
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();      // m, world position of the device origin
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // device axes in the world
+};
+// Empty on success, else one line naming the bad parameter.
+std::string validate(const WorkspaceMappingParams& params);
+
+class WorkspaceMapping
+{
+ public:
+  WorkspaceMapping() = default;
+  // Throws InputError on bad parameters; normalises the rotation.
+  explicit WorkspaceMapping(const WorkspaceMappingParams& params);
+  Eigen::Vector3d toWorld(const Eigen::Vector3d& device_position) const;
+  Eigen::Vector3d velocityToWorld(const Eigen::Vector3d& device_velocity) const;
+  Eigen::Vector3d toDevice(const Eigen::Vector3d& world_position) const;
+  Eigen::Vector3d forceToDevice(const Eigen::Vector3d& world_force) const;
+  const WorkspaceMappingParams& params() const
+  {
+    return params_;
+  }
+
+ private:
+  WorkspaceMappingParams params_;
+  Eigen::Matrix3d rotation_ = Eigen::Matrix3d::Identity();
+};
+}  // namespace god_finger

@@ -1,0 +1,50 @@
+// A simulated device: a handle of mass m with viscous damping, held by a scripted hand
+// through a spring-damper (the hand's grip) and pushed by the commanded force. The loop
+// through the physics is therefore closed as with a real device: the coupling force moves the
+// handle, and a stiff virtual coupling can make it ring, as it would a real one.
+//
+// Units: kg, N/m, N s/m, s, m. Integration: semi-implicit Euler over the time between two
+// update() calls, split into sub-steps of at most 1 ms. Deterministic for identical calls.
+#pragma once
+
+#include "god_finger/core/waypoint_path.h"
+#include "god_finger/devices/haptic_device.h"
+
+namespace god_finger
+{
+struct FakeDeviceParams
+{
+  double handle_mass = 0.1;       // kg, range (0, 100]
+  double handle_damping = 0.5;    // N s/m, range [0, 1e4]: the mechanism's friction
+  double grip_stiffness = 2000;   // N/m, range (0, 1e6]: how firmly the hand holds the handle
+  double grip_damping = 20;       // N s/m, range [0, 1e4]
+};
+std::string validate(const FakeDeviceParams& params);
+
+class FakeDevice : public HapticDevice
+{
+ public:
+  // Throws InputError on bad parameters. The handle starts at the script's first position.
+  FakeDevice(const FakeDeviceParams& params, WaypointPath hand);
+  std::string name() const override
+  {
+    return "fake";
+  }
+  void start() override;
+  DeviceReading update(double time, const Eigen::Vector3d& force) override;
+  // Time of the first update (the script's time 0).
+  double startTime() const
+  {
+    return start_time_;
+  }
+
+ private:
+  FakeDeviceParams params_;
+  WaypointPath hand_;
+  Eigen::Vector3d position_;
+  Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
+  double last_time_ = 0.0;
+  double start_time_ = 0.0;
+  bool started_clock_ = false;
+};
+}  // namespace god_finger

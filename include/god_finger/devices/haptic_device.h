@@ -1,0 +1,42 @@
+// One interface for every haptic device backend (fake, replay, Falcon, Omni).
+//
+// Frames and units: positions in metres and velocities in m/s in the device frame, whose axes
+// follow REP-103 as the user sees them (x forward, away from the user; y to the user's left;
+// z up; origin at the workspace centre); forces in newtons in the same frame. A backend converts its vendor's units and axes
+// and nothing else: saturation and the watchdog live in ForceGuard, the workspace mapping in
+// WorkspaceMapping, so they are the same for every device.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace god_finger
+{
+// A device that cannot start or has failed; the message says what to do.
+class DeviceError : public std::runtime_error
+{
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct DeviceReading
+{
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, device frame
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s
+  std::uint32_t buttons = 0;                           // bit i: button i pressed
+};
+
+class HapticDevice
+{
+ public:
+  virtual ~HapticDevice() = default;
+  virtual std::string name() const = 0;
+  // Opens and prepares the device (firmware, homing, calibration). Throws DeviceError.
+  virtual void start() = 0;
+  // One servo tick at `time` (s, monotonic): applies `force` (N, device frame, already
+  // guarded) and reads the state. Throws DeviceError on a fault it cannot recover from.
+  virtual DeviceReading update(double time, const Eigen::Vector3d& force) = 0;
+};
+}  // namespace god_finger

@@ -1,0 +1,31 @@
+// The device driver node: one haptic device served at ~rate (1 kHz) in its own thread.
+//
+// Publishes device/state (god_finger/DeviceState) every tick; subscribes device/force
+// (geometry_msgs/Vector3Stamped, device frame, N). Every force goes through a ForceGuard:
+// saturated to ~max_force, rejected (and counted) when not finite, ramped to zero within
+// ~ramp_time when no command came for ~command_timeout. /diagnostics at 1 Hz: rate, overruns,
+// rejected and saturated commands, watchdog state.
+//
+// ~backend: fake (a simulated handle held by a scripted hand: ~script, a list of
+// [t, x, y, z] waypoints in s and m, device frame; ~handle_mass, ~handle_damping,
+// ~grip_stiffness, ~grip_damping), falcon, omni (need their SDKs), interactive, replay.
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <memory>
+
+namespace god_finger
+{
+class DeviceDriverNode
+{
+ public:
+  // Throws InputError on bad parameters, DeviceError when the backend cannot start.
+  DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+  ~DeviceDriverNode();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+}  // namespace god_finger

@@ -1,0 +1,33 @@
+// The haptic node: between one device driver and the physics, for one interface.
+//
+// Subscribes device/state (god_finger/DeviceState); publishes pose (geometry_msgs/PoseStamped,
+// frame world: the interface position mapped by WorkspaceMapping) and its TF (world ->
+// ~interface_frame). Turns feedback (geometry_msgs/WrenchStamped, world) into device/force
+// (geometry_msgs/Vector3Stamped, device frame).
+// With ~local_coupling the node renders the virtual coupling itself from the freshest device
+// position and the last god-object position (proxy, geometry_msgs/PointStamped), on every
+// device state (multi-rate rendering: topic latency then delays the proxy, not the spring);
+// otherwise it forwards the physics' feedback.
+// Buttons: button 0 cycles the contact model (god_object -> god_finger -> soft_finger), button
+// 1 resets the scene (services set_contact_model, reset_scene, resolved in ~physics_namespace).
+// Non-finite device states are rejected and counted (diagnostics), never published.
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <memory>
+
+namespace god_finger
+{
+class HapticNode
+{
+ public:
+  // Throws InputError on bad parameters.
+  HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+  ~HapticNode();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+}  // namespace god_finger

@@ -1,0 +1,26 @@
+// rviz markers of a physics world, all in `world`: scene bodies (namespace "bodies"), each
+// contact area as a filled yellow polygon ("contact_areas"), its sub-god-objects
+// ("sub_god_objects"), god-objects ("god_objects"), interface points ("interfaces"),
+// coupling springs ("couplings") and the force on the hand ("forces", 1 cm per newton).
+#pragma once
+
+#include "god_finger/physics/god_finger_world.h"
+
+#include <ros/time.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <string>
+#include <vector>
+
+namespace god_finger
+{
+// Polygons are lifted this far (m) along their normal, above the surface they lie on.
+constexpr double kContactAreaLift = 5e-4;
+
+// Bodies change only in pose: this is sent at the publish rate with the current poses.
+void appendBodyMarkers(const GodFingerWorld& world, const ros::Time& stamp, visualization_msgs::MarkerArray* markers);
+// Contact areas, proxies, interfaces, couplings and forces of every interface. Markers of
+// areas that vanished are deleted (DELETEALL of the namespace first).
+void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stamp,
+                              visualization_msgs::MarkerArray* markers);
+}  // namespace god_finger

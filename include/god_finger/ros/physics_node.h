@@ -1,0 +1,37 @@
+// The physics node: a GodFingerWorld stepped at a fixed rate in its own thread, for N
+// interfaces named by ~interfaces (each a namespace under the node's one).
+//
+// Per interface NAME: subscribes NAME/pose (geometry_msgs/PoseStamped, frame world);
+// publishes NAME/feedback (geometry_msgs/WrenchStamped: the force on the hand, world, every
+// step) and NAME/proxy (geometry_msgs/PointStamped: the god-object, every step). Publishes
+// contact_areas (god_finger/ContactAreaArray), markers (visualization_msgs/MarkerArray) and
+// the TF of every body (world -> link name) at ~publish_rate; /diagnostics at 1 Hz (step rate,
+// overruns, rejected poses). Services: reset_scene (std_srvs/Trigger), set_contact_model
+// (god_finger/SetContactModel). A proxy appears at an interface's first valid pose.
+//
+// Parameters (private; checked at start-up, a bad one is an InputError naming it): scene (URDF
+// path, required), interfaces (["finger"]), rate (Hz, 1000), publish_rate (Hz, 60), model,
+// solver_iterations, the method's r_max, d0, alpha, n_sgo, tau_a, friction, walk, and the
+// coupling's coupling_stiffness, coupling_damping, max_force, proxy_radius, proxy_mass.
+#pragma once
+
+#include <ros/node_handle.h>
+
+#include <memory>
+
+namespace god_finger
+{
+class PhysicsNode
+{
+ public:
+  // Throws InputError on bad parameters or scene.
+  PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh);
+  ~PhysicsNode();
+  PhysicsNode(const PhysicsNode&) = delete;
+  PhysicsNode& operator=(const PhysicsNode&) = delete;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+}  // namespace god_finger

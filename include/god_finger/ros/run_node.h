@@ -1,0 +1,31 @@
+// The body of every standalone node's main(): ROS set-up, the node, spinning; a bad parameter,
+// scene or device stops the process with one line on stderr (ROS_FATAL) and exit code 1.
+#pragma once
+
+#include <ros/ros.h>
+
+#include <exception>
+
+namespace god_finger
+{
+template <class Node>
+int runNode(int argc, char** argv, const char* default_name)
+{
+  ros::init(argc, argv, default_name);
+  try
+  {
+    ros::NodeHandle nh;
+    ros::NodeHandle pnh("~");
+    Node node(nh, pnh);
+    ros::AsyncSpinner spinner(2);
+    spinner.start();
+    ros::waitForShutdown();
+  }
+  catch (const std::exception& error)
+  {
+    ROS_FATAL("%s: %s", ros::this_node::getName().c_str(), error.what());
+    return 1;
+  }
+  return 0;
+}
+}  // namespace god_finger

@@ -1,0 +1,62 @@
+#include "god_finger/core/workspace_mapping.h"
+
+#include "god_finger/core/input_error.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace god_finger
+{
+std::string validate(const WorkspaceMappingParams& params)
+{
+  std::ostringstream message;
+  if (!(params.scale > 0.0 && params.scale <= 1e3))
+  {
+    message << "parameter 'workspace_scale' = " << params.scale << " is out of range (0, 1000] (dimensionless)";
+  }
+  else if (!(params.force_scale > 0.0 && params.force_scale <= 1e3))
+  {
+    message << "parameter 'force_scale' = " << params.force_scale << " is out of range (0, 1000] (dimensionless)";
+  }
+  else if (!params.offset.allFinite())
+  {
+    message << "parameter 'workspace_offset' must be finite (m)";
+  }
+  else if (!params.rotation.coeffs().allFinite() || std::abs(params.rotation.norm() - 1.0) > 1e-3)
+  {
+    message << "parameter 'workspace_rotation' must be a unit quaternion (norm " << params.rotation.norm() << ")";
+  }
+  return message.str();
+}
+
+WorkspaceMapping::WorkspaceMapping(const WorkspaceMappingParams& params) : params_(params)
+{
+  const std::string error = validate(params);
+  if (!error.empty())
+  {
+    throw InputError(error);
+  }
+  params_.rotation.normalize();
+  rotation_ = params_.rotation.toRotationMatrix();
+}
+
+Eigen::Vector3d WorkspaceMapping::toWorld(const Eigen::Vector3d& device_position) const
+{
+  return params_.offset + params_.scale * (rotation_ * device_position);
+}
+
+Eigen::Vector3d WorkspaceMapping::velocityToWorld(const Eigen::Vector3d& device_velocity) const
+{
+  return params_.scale * (rotation_ * device_velocity);
+}
+
+Eigen::Vector3d WorkspaceMapping::toDevice(const Eigen::Vector3d& world_position) const
+{
+  return rotation_.transpose() * (world_position - params_.offset) / params_.scale;
+}
+
+Eigen::Vector3d WorkspaceMapping::forceToDevice(const Eigen::Vector3d& world_force) const
+{
+  return params_.force_scale * (rotation_.transpose() * world_force);
+}
+}  // namespace god_finger

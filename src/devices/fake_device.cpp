@@ -1,0 +1,77 @@
+#include "god_finger/devices/fake_device.h"
+
+#include "god_finger/core/input_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace god_finger
+{
+std::string validate(const FakeDeviceParams& params)
+{
+  std::ostringstream message;
+  if (!(params.handle_mass > 0.0 && params.handle_mass <= 100.0))
+  {
+    message << "parameter 'handle_mass' = " << params.handle_mass << " is out of range (0, 100] (kg)";
+  }
+  else if (!(params.handle_damping >= 0.0 && params.handle_damping <= 1e4))
+  {
+    message << "parameter 'handle_damping' = " << params.handle_damping << " is out of range [0, 1e+04] (N s/m)";
+  }
+  else if (!(params.grip_stiffness > 0.0 && params.grip_stiffness <= 1e6))
+  {
+    message << "parameter 'grip_stiffness' = " << params.grip_stiffness << " is out of range (0, 1e+06] (N/m)";
+  }
+  else if (!(params.grip_damping >= 0.0 && params.grip_damping <= 1e4))
+  {
+    message << "parameter 'grip_damping' = " << params.grip_damping << " is out of range [0, 1e+04] (N s/m)";
+  }
+  return message.str();
+}
+
+FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand)
+  : params_(params), hand_(std::move(hand)), position_(hand_.at(0.0))
+{
+  const std::string error = validate(params);
+  if (!error.empty())
+  {
+    throw InputError(error);
+  }
+}
+
+void FakeDevice::start()
+{
+}
+
+DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
+{
+  if (!started_clock_)
+  {
+    started_clock_ = true;
+    start_time_ = time;
+    last_time_ = time;
+  }
+  double remaining = std::min(std::max(time - last_time_, 0.0), 0.1);
+  double t = last_time_ - start_time_;
+  const Eigen::Vector3d applied = force.allFinite() ? force : Eigen::Vector3d::Zero();
+  while (remaining > 1e-12)
+  {
+    const double dt = std::min(remaining, 1e-3);
+    t += dt;
+    const Eigen::Vector3d hand = hand_.at(t);
+    const Eigen::Vector3d hand_velocity = (hand_.at(t) - hand_.at(t - dt)) / dt;
+    const Eigen::Vector3d total = applied + params_.grip_stiffness * (hand - position_) +
+                                  params_.grip_damping * (hand_velocity - velocity_) -
+                                  params_.handle_damping * velocity_;
+    velocity_ += dt * total / params_.handle_mass;
+    position_ += dt * velocity_;
+    remaining -= dt;
+  }
+  last_time_ = time;
+  DeviceReading reading;
+  reading.position = position_;
+  reading.velocity = velocity_;
+  return reading;
+}
+}  // namespace god_finger

@@ -1,0 +1,8 @@
+// The haptic node as its own process (see god_finger/ros/haptic_node.h).
+#include "god_finger/ros/haptic_node.h"
+#include "god_finger/ros/run_node.h"
+
+int main(int argc, char** argv)
+{
+  return god_finger::runNode<god_finger::HapticNode>(argc, argv, "haptic");
+}

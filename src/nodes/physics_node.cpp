@@ -1,0 +1,8 @@
+// The physics node as its own process (see god_finger/ros/physics_node.h).
+#include "god_finger/ros/physics_node.h"
+#include "god_finger/ros/run_node.h"
+
+int main(int argc, char** argv)
+{
+  return god_finger::runNode<god_finger::PhysicsNode>(argc, argv, "physics");
+}

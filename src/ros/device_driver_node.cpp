@@ -1,0 +1,263 @@
+#include "god_finger/ros/device_driver_node.h"
+
+#include "god_finger/core/force_guard.h"
+#include "god_finger/core/input_error.h"
+#include "god_finger/devices/fake_device.h"
+#include "god_finger/ros/parameters.h"
+#include "god_finger/DeviceState.h"
+
+#include <XmlRpcValue.h>
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/Vector3Stamped.h>
+#include <ros/ros.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <thread>
+
+namespace god_finger
+{
+namespace
+{
+WaypointPath readScript(const ros::NodeHandle& pnh)
+{
+  XmlRpc::XmlRpcValue value;
+  const std::string name = pnh.resolveName("script");
+  if (!pnh.getParam("script", value))
+  {
+    // No script: the hand holds the handle at the workspace centre.
+    return WaypointPath({{0.0, Eigen::Vector3d::Zero()}});
+  }
+  const std::string what = "parameter '" + name + "' must be a list of [t, x, y, z] waypoints (s, m)";
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray || value.size() == 0)
+  {
+    throw InputError(what);
+  }
+  std::vector<Waypoint> waypoints;
+  for (int i = 0; i < value.size(); ++i)
+  {
+    XmlRpc::XmlRpcValue& row = value[i];
+    if (row.getType() != XmlRpc::XmlRpcValue::TypeArray || row.size() != 4)
+    {
+      throw InputError(what + " (waypoint " + std::to_string(i) + ")");
+    }
+    double numbers[4];
+    for (int k = 0; k < 4; ++k)
+    {
+      if (row[k].getType() == XmlRpc::XmlRpcValue::TypeDouble)
+      {
+        numbers[k] = static_cast<double>(row[k]);
+      }
+      else if (row[k].getType() == XmlRpc::XmlRpcValue::TypeInt)
+      {
+        numbers[k] = static_cast<int>(row[k]);
+      }
+      else
+      {
+        throw InputError(what + " (waypoint " + std::to_string(i) + ")");
+      }
+    }
+    waypoints.push_back({numbers[0], Eigen::Vector3d(numbers[1], numbers[2], numbers[3])});
+  }
+  try
+  {
+    return WaypointPath(waypoints);
+  }
+  catch (const InputError& error)
+  {
+    throw InputError("parameter '" + name + "': " + error.what());
+  }
+}
+
+std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::NodeHandle& pnh)
+{
+  if (backend == "fake")
+  {
+    FakeDeviceParams params;
+    params.handle_mass = readDouble(pnh, "handle_mass", params.handle_mass, 0.0, 100.0, "kg", true);
+    params.handle_damping = readDouble(pnh, "handle_damping", params.handle_damping, 0.0, 1e4, "N s/m");
+    params.grip_stiffness = readDouble(pnh, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
+    params.grip_damping = readDouble(pnh, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
+    return std::make_unique<FakeDevice>(params, readScript(pnh));
+  }
+  if (backend == "falcon")
+  {
+    throw DeviceError(
+        "backend 'falcon' needs libnifalcon, which this build did not find: build and install libnifalcon "
+        "(https://github.com/libnifalcon/libnifalcon), then rebuild god_finger");
+  }
+  if (backend == "omni")
+  {
+    throw DeviceError(
+        "backend 'omni' needs the OpenHaptics HD API, which this build did not find: install 3D Systems' "
+        "OpenHaptics (and the Touch / Phantom device driver), then rebuild god_finger");
+  }
+  if (backend == "interactive" || backend == "replay")
+  {
+    throw DeviceError("backend '" + backend + "' is not available in this version (fake, falcon, omni)");
+  }
+  throw InputError("parameter '" + pnh.resolveName("backend") + "' = '" + backend +
+                   "' is not one of fake, interactive, replay, falcon, omni");
+}
+}  // namespace
+
+struct DeviceDriverNode::Impl
+{
+  std::unique_ptr<HapticDevice> device;
+  std::unique_ptr<ForceGuard> guard;
+  double period = 1e-3;
+  std::string frame;
+  ros::Publisher state_publisher;
+  ros::Publisher diagnostics_publisher;
+  ros::Subscriber force_subscriber;
+  std::mutex mutex;  // guards the guard
+  std::thread thread;
+  std::atomic<bool> running{true};
+  std::chrono::steady_clock::time_point epoch = std::chrono::steady_clock::now();
+  long overruns = 0;
+
+  double now() const
+  {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - epoch).count();
+  }
+
+  void onForce(const geometry_msgs::Vector3Stamped::ConstPtr& message)
+  {
+    const Eigen::Vector3d force(message->vector.x, message->vector.y, message->vector.z);
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!guard->command(now(), force))
+    {
+      ROS_WARN_THROTTLE(1.0, "device_driver: rejected a non-finite force command (%ld so far)", guard->rejected());
+    }
+  }
+
+  void publishDiagnostics(double rate)
+  {
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = ros::Time::now();
+    diagnostic_msgs::DiagnosticStatus status;
+    status.name = ros::this_node::getName() + ": " + device->name() + " device";
+    status.hardware_id = device->name();
+    status.level = rate < 0.95 / period ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
+    bool timed_out = false;
+    long rejected = 0;
+    long saturated = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      timed_out = guard->timedOut(now());
+      rejected = guard->rejected();
+      saturated = guard->saturated();
+    }
+    status.message = timed_out ? "no force commands: output ramped to zero" : "running";
+    auto add = [&status](const std::string& key, const std::string& value) {
+      diagnostic_msgs::KeyValue pair;
+      pair.key = key;
+      pair.value = value;
+      status.values.push_back(pair);
+    };
+    add("rate_hz", std::to_string(rate));
+    add("overruns", std::to_string(overruns));
+    add("rejected_commands", std::to_string(rejected));
+    add("saturated_commands", std::to_string(saturated));
+    add("watchdog_timed_out", timed_out ? "true" : "false");
+    array.status.push_back(status);
+    diagnostics_publisher.publish(array);
+  }
+
+  void loop()
+  {
+    using Clock = std::chrono::steady_clock;
+    const auto step = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period));
+    auto next = Clock::now();
+    auto diagnostics_start = next;
+    long ticks = 0;
+    while (running && ros::ok())
+    {
+      next += step;
+      const double t = now();
+      Eigen::Vector3d force;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        force = guard->output(t);
+      }
+      DeviceReading reading;
+      try
+      {
+        reading = device->update(t, force);
+      }
+      catch (const DeviceError& error)
+      {
+        ROS_FATAL("device_driver: %s", error.what());
+        ros::shutdown();
+        return;
+      }
+      god_finger::DeviceStatePtr state(new god_finger::DeviceState);
+      state->header.stamp = ros::Time::now();
+      state->header.frame_id = frame;
+      state->position.x = reading.position.x();
+      state->position.y = reading.position.y();
+      state->position.z = reading.position.z();
+      state->velocity.x = reading.velocity.x();
+      state->velocity.y = reading.velocity.y();
+      state->velocity.z = reading.velocity.z();
+      state->buttons = reading.buttons;
+      state->applied_force.x = force.x();
+      state->applied_force.y = force.y();
+      state->applied_force.z = force.z();
+      state_publisher.publish(state);
+      ++ticks;
+      const auto after = Clock::now();
+      if (after - diagnostics_start >= std::chrono::seconds(1))
+      {
+        publishDiagnostics(ticks / std::chrono::duration<double>(after - diagnostics_start).count());
+        diagnostics_start = after;
+        ticks = 0;
+      }
+      if (after > next)
+      {
+        ++overruns;
+        if (after - next > 10 * step)
+        {
+          next = after;
+        }
+      }
+      else
+      {
+        std::this_thread::sleep_until(next);
+      }
+    }
+  }
+};
+
+DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
+{
+  Impl& impl = *impl_;
+  impl.period = 1.0 / readDouble(pnh, "rate", 1000.0, 10.0, 10000.0, "Hz");
+  ForceGuardParams guard;
+  guard.max_force = readDouble(pnh, "max_force", guard.max_force, 0.0, 1e3, "N", true);
+  guard.command_timeout = readDouble(pnh, "command_timeout", guard.command_timeout, 0.0, 10.0, "s", true);
+  guard.ramp_time = readDouble(pnh, "ramp_time", guard.ramp_time, 0.0, 1.0, "s", true);
+  impl.guard = std::make_unique<ForceGuard>(guard);
+  const std::string backend = readString(pnh, "backend", "fake");
+  impl.frame = readString(pnh, "frame", "device");
+  impl.device = makeDevice(backend, pnh);
+  impl.device->start();
+  impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", 1);
+  impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+  impl.force_subscriber =
+      nh.subscribe("device/force", 1, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
+  ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend.c_str(), 1.0 / impl.period,
+           guard.max_force);
+  impl.thread = std::thread([this]() { impl_->loop(); });
+}
+
+DeviceDriverNode::~DeviceDriverNode()
+{
+  impl_->running = false;
+  if (impl_->thread.joinable())
+  {
+    impl_->thread.join();
+  }
+}
+}  // namespace god_finger

@@ -1,0 +1,234 @@
+#include "god_finger/ros/haptic_node.h"
+
+#include "god_finger/core/input_error.h"
+#include "god_finger/core/workspace_mapping.h"
+#include "god_finger/ros/parameters.h"
+#include "god_finger/DeviceState.h"
+#include "god_finger/SetContactModel.h"
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/Vector3Stamped.h>
+#include <geometry_msgs/WrenchStamped.h>
+#include <ros/ros.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <mutex>
+
+namespace god_finger
+{
+namespace
+{
+Eigen::Vector3d fromMessage(const geometry_msgs::Vector3& v)
+{
+  return Eigen::Vector3d(v.x, v.y, v.z);
+}
+}  // namespace
+
+struct HapticNode::Impl
+{
+  ros::NodeHandle nh;
+  WorkspaceMapping mapping;
+  bool local_coupling = false;
+  double stiffness = 400.0;
+  double damping = 4.0;
+  double max_force = 20.0;
+  std::string frame;
+  ros::Subscriber state_subscriber;
+  ros::Subscriber feedback_subscriber;
+  ros::Subscriber proxy_subscriber;
+  ros::Publisher pose_publisher;
+  ros::Publisher force_publisher;
+  ros::Publisher diagnostics_publisher;
+  ros::ServiceClient model_client;
+  ros::ServiceClient reset_client;
+  ros::Timer timer;
+  tf2_ros::TransformBroadcaster broadcaster;
+  std::mutex mutex;
+  Eigen::Vector3d proxy = Eigen::Vector3d::Zero();
+  Eigen::Vector3d proxy_velocity = Eigen::Vector3d::Zero();
+  ros::Time proxy_stamp;
+  bool have_proxy = false;
+  std::uint32_t buttons = 0;
+  int pending_model_switch = 0;
+  bool pending_reset = false;
+  int model_index = 1;  // god_finger
+  long rejected_states = 0;
+  long states = 0;
+
+  void publishForce(const ros::Time& stamp, const Eigen::Vector3d& world_force)
+  {
+    geometry_msgs::Vector3StampedPtr force(new geometry_msgs::Vector3Stamped);
+    force->header.stamp = stamp;
+    force->header.frame_id = frame + "_device";
+    const Eigen::Vector3d device = mapping.forceToDevice(world_force);
+    force->vector.x = device.x();
+    force->vector.y = device.y();
+    force->vector.z = device.z();
+    force_publisher.publish(force);
+  }
+
+  void onState(const god_finger::DeviceState::ConstPtr& state)
+  {
+    const Eigen::Vector3d position = fromMessage(state->position);
+    const Eigen::Vector3d velocity = fromMessage(state->velocity);
+    if (!position.allFinite() || !velocity.allFinite())
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      ++rejected_states;
+      ROS_WARN_THROTTLE(1.0, "haptic: rejected a non-finite device state (%ld so far)", rejected_states);
+      return;
+    }
+    const Eigen::Vector3d world = mapping.toWorld(position);
+    geometry_msgs::PoseStampedPtr pose(new geometry_msgs::PoseStamped);
+    pose->header.stamp = state->header.stamp;
+    pose->header.frame_id = "world";
+    pose->pose.position.x = world.x();
+    pose->pose.position.y = world.y();
+    pose->pose.position.z = world.z();
+    pose->pose.orientation.w = 1.0;
+    pose_publisher.publish(pose);
+
+    geometry_msgs::TransformStamped transform;
+    transform.header = pose->header;
+    transform.child_frame_id = frame;
+    transform.transform.translation.x = world.x();
+    transform.transform.translation.y = world.y();
+    transform.transform.translation.z = world.z();
+    transform.transform.rotation.w = 1.0;
+    broadcaster.sendTransform(transform);
+
+    std::lock_guard<std::mutex> lock(mutex);
+    ++states;
+    const std::uint32_t pressed = state->buttons & ~buttons;
+    buttons = state->buttons;
+    if (pressed & 1u)
+    {
+      ++pending_model_switch;
+    }
+    if (pressed & 2u)
+    {
+      pending_reset = true;
+    }
+    if (local_coupling && have_proxy)
+    {
+      // The hand feels k (p_GO - p_I) + b (v_GO - v_I), saturated as in the physics.
+      Eigen::Vector3d force = stiffness * (proxy - world) + damping * (proxy_velocity - mapping.velocityToWorld(velocity));
+      if (force.norm() > max_force)
+      {
+        force *= max_force / force.norm();
+      }
+      publishForce(state->header.stamp, force);
+    }
+  }
+
+  void onFeedback(const geometry_msgs::WrenchStamped::ConstPtr& feedback)
+  {
+    if (local_coupling)
+    {
+      return;
+    }
+    const Eigen::Vector3d force = fromMessage(feedback->wrench.force);
+    if (!force.allFinite())
+    {
+      return;  // the driver would reject it too; never forward it
+    }
+    publishForce(feedback->header.stamp, force);
+  }
+
+  void onProxy(const geometry_msgs::PointStamped::ConstPtr& message)
+  {
+    const Eigen::Vector3d p(message->point.x, message->point.y, message->point.z);
+    if (!p.allFinite())
+    {
+      return;
+    }
+    std::lock_guard<std::mutex> lock(mutex);
+    if (have_proxy)
+    {
+      const double dt = (message->header.stamp - proxy_stamp).toSec();
+      if (dt > 0.0)
+      {
+        proxy_velocity = (p - proxy) / dt;
+      }
+    }
+    proxy = p;
+    proxy_stamp = message->header.stamp;
+    have_proxy = true;
+  }
+
+  void onTimer(const ros::TimerEvent&)
+  {
+    int switches = 0;
+    bool reset = false;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      std::swap(switches, pending_model_switch);
+      std::swap(reset, pending_reset);
+    }
+    static const char* const kModels[] = {"god_object", "god_finger", "soft_finger"};
+    for (int i = 0; i < switches; ++i)
+    {
+      model_index = (model_index + 1) % 3;
+      god_finger::SetContactModel call;
+      call.request.model = kModels[model_index];
+      if (!model_client.call(call) || !call.response.success)
+      {
+        ROS_WARN("haptic: could not switch the contact model to %s", kModels[model_index]);
+      }
+      else
+      {
+        ROS_INFO("haptic: %s", call.response.message.c_str());
+      }
+    }
+    if (reset)
+    {
+      std_srvs::Trigger call;
+      if (!reset_client.call(call))
+      {
+        ROS_WARN("haptic: could not reset the scene");
+      }
+    }
+  }
+};
+
+HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
+{
+  Impl& impl = *impl_;
+  impl.nh = nh;
+  WorkspaceMappingParams mapping;
+  mapping.scale = readDouble(pnh, "workspace_scale", 1.0, 0.0, 1e3, "dimensionless", true);
+  mapping.force_scale = readDouble(pnh, "force_scale", 1.0, 0.0, 1e3, "dimensionless", true);
+  mapping.offset = readVector(pnh, "workspace_offset", Eigen::Vector3d::Zero());
+  const Eigen::Vector4d q = readVector(pnh, "workspace_rotation", Eigen::Vector4d(0, 0, 0, 1));
+  mapping.rotation = Eigen::Quaterniond(q[3], q[0], q[1], q[2]);
+  impl.mapping = WorkspaceMapping(mapping);
+  impl.local_coupling = readBool(pnh, "local_coupling", false);
+  impl.stiffness = readDouble(pnh, "coupling_stiffness", 400.0, 0.0, 1e5, "N/m", true);
+  impl.damping = readDouble(pnh, "coupling_damping", 4.0, 0.0, 1e3, "N s/m");
+  impl.max_force = readDouble(pnh, "max_force", 20.0, 0.0, 1e4, "N", true);
+  std::string ns = nh.getNamespace();
+  while (!ns.empty() && ns.front() == '/')
+  {
+    ns.erase(0, 1);
+  }
+  impl.frame = readString(pnh, "interface_frame", (ns.empty() ? std::string("finger") : ns) + "_interface");
+  const std::string physics = readString(pnh, "physics_namespace", "/");
+  ros::NodeHandle physics_nh(physics);
+  impl.model_client = physics_nh.serviceClient<god_finger::SetContactModel>("set_contact_model");
+  impl.reset_client = physics_nh.serviceClient<std_srvs::Trigger>("reset_scene");
+  impl.pose_publisher = nh.advertise<geometry_msgs::PoseStamped>("pose", 1);
+  impl.force_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/force", 1);
+  const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+  impl.state_subscriber = nh.subscribe("device/state", 1, &Impl::onState, &impl, hints);
+  impl.feedback_subscriber = nh.subscribe("feedback", 1, &Impl::onFeedback, &impl, hints);
+  impl.proxy_subscriber = nh.subscribe("proxy", 1, &Impl::onProxy, &impl, hints);
+  impl.timer = nh.createTimer(ros::Duration(0.05), &Impl::onTimer, &impl);
+  ROS_INFO("haptic: interface frame '%s', %s coupling", impl.frame.c_str(), impl.local_coupling ? "local" : "forwarded");
+}
+
+HapticNode::~HapticNode() = default;
+}  // namespace god_finger
