@@ -31,7 +31,7 @@ std::string validate(const FakeDeviceParams& params)
 }
 
 FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand)
-  : params_(params), hand_(std::move(hand)), position_(hand_.at(0.0))
+    : params_(params), hand_(std::move(hand)), position_(hand_.at(0.0))
 {
   const std::string error = validate(params);
   if (!error.empty())
@@ -40,9 +40,7 @@ FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand)
   }
 }
 
-void FakeDevice::start()
-{
-}
+void FakeDevice::start() {}
 
 DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
 {

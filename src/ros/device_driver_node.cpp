@@ -1,10 +1,11 @@
 #include "god_finger/ros/device_driver_node.h"
 
+#include "god_finger/DeviceState.h"
 #include "god_finger/core/force_guard.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/ros/parameters.h"
-#include "god_finger/DeviceState.h"
 
 #include <XmlRpcValue.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
@@ -116,6 +117,7 @@ struct DeviceDriverNode::Impl
   std::atomic<bool> running{true};
   std::chrono::steady_clock::time_point epoch = std::chrono::steady_clock::now();
   long overruns = 0;
+  std::vector<double> round_trips_us;  // since the last diagnostics
 
   double now() const
   {
@@ -125,7 +127,13 @@ struct DeviceDriverNode::Impl
   void onForce(const geometry_msgs::Vector3Stamped::ConstPtr& message)
   {
     const Eigen::Vector3d force(message->vector.x, message->vector.y, message->vector.z);
+    // The command is stamped with the device state it answers: the loop's round trip.
+    const double round_trip = (ros::Time::now() - message->header.stamp).toSec();
     std::lock_guard<std::mutex> lock(mutex);
+    if (!message->header.stamp.isZero() && round_trip >= 0.0 && round_trip < 10.0)
+    {
+      round_trips_us.push_back(1e6 * round_trip);
+    }
     if (!guard->command(now(), force))
     {
       ROS_WARN_THROTTLE(1.0, "device_driver: rejected a non-finite force command (%ld so far)", guard->rejected());
@@ -139,18 +147,22 @@ struct DeviceDriverNode::Impl
     diagnostic_msgs::DiagnosticStatus status;
     status.name = ros::this_node::getName() + ": " + device->name() + " device";
     status.hardware_id = device->name();
-    status.level = rate < 0.95 / period ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
+    status.level =
+        rate < 0.95 / period ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
     bool timed_out = false;
     long rejected = 0;
     long saturated = 0;
+    std::vector<double> trips;
     {
       std::lock_guard<std::mutex> lock(mutex);
       timed_out = guard->timedOut(now());
       rejected = guard->rejected();
       saturated = guard->saturated();
+      trips.swap(round_trips_us);
     }
     status.message = timed_out ? "no force commands: output ramped to zero" : "running";
-    auto add = [&status](const std::string& key, const std::string& value) {
+    auto add = [&status](const std::string& key, const std::string& value)
+    {
       diagnostic_msgs::KeyValue pair;
       pair.key = key;
       pair.value = value;
@@ -161,6 +173,9 @@ struct DeviceDriverNode::Impl
     add("rejected_commands", std::to_string(rejected));
     add("saturated_commands", std::to_string(saturated));
     add("watchdog_timed_out", timed_out ? "true" : "false");
+    add("commands", std::to_string(trips.size()));
+    add("round_trip_us_p50", jsonNumber(percentile(trips, 0.5)));
+    add("round_trip_us_p99", jsonNumber(percentile(trips, 0.99)));
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
   }
@@ -245,8 +260,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.device->start();
   impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", 1);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-  impl.force_subscriber =
-      nh.subscribe("device/force", 1, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
+  impl.force_subscriber = nh.subscribe("device/force", 1, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend.c_str(), 1.0 / impl.period,
            guard.max_force);
   impl.thread = std::thread([this]() { impl_->loop(); });

@@ -1,10 +1,10 @@
 #include "god_finger/ros/haptic_node.h"
 
+#include "god_finger/DeviceState.h"
+#include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/ros/parameters.h"
-#include "god_finger/DeviceState.h"
-#include "god_finger/SetContactModel.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
@@ -116,7 +116,8 @@ struct HapticNode::Impl
     if (local_coupling && have_proxy)
     {
       // The hand feels k (p_GO - p_I) + b (v_GO - v_I), saturated as in the physics.
-      Eigen::Vector3d force = stiffness * (proxy - world) + damping * (proxy_velocity - mapping.velocityToWorld(velocity));
+      Eigen::Vector3d force =
+          stiffness * (proxy - world) + damping * (proxy_velocity - mapping.velocityToWorld(velocity));
       if (force.norm() > max_force)
       {
         force *= max_force / force.norm();
@@ -227,7 +228,8 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   impl.feedback_subscriber = nh.subscribe("feedback", 1, &Impl::onFeedback, &impl, hints);
   impl.proxy_subscriber = nh.subscribe("proxy", 1, &Impl::onProxy, &impl, hints);
   impl.timer = nh.createTimer(ros::Duration(0.05), &Impl::onTimer, &impl);
-  ROS_INFO("haptic: interface frame '%s', %s coupling", impl.frame.c_str(), impl.local_coupling ? "local" : "forwarded");
+  ROS_INFO("haptic: interface frame '%s', %s coupling", impl.frame.c_str(),
+           impl.local_coupling ? "local" : "forwarded");
 }
 
 HapticNode::~HapticNode() = default;

@@ -144,7 +144,8 @@ void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stam
     {
       const WorldContactArea& area = state.contacts[c];
       const Eigen::Vector3d lift = kContactAreaLift * area.normal;
-      visualization_msgs::Marker polygon = marker("contact_areas", area_id, visualization_msgs::Marker::TRIANGLE_LIST, stamp);
+      visualization_msgs::Marker polygon =
+          marker("contact_areas", area_id, visualization_msgs::Marker::TRIANGLE_LIST, stamp);
       setColor(&polygon, 1.0f, 0.9f, 0.0f);
       const int n = area.sub_god_object_count;
       for (int k = 0; n >= 2 && k < n; ++k)
@@ -157,7 +158,8 @@ void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stam
       {
         markers->markers.push_back(polygon);
       }
-      visualization_msgs::Marker sgos = marker("sub_god_objects", area_id, visualization_msgs::Marker::SPHERE_LIST, stamp);
+      visualization_msgs::Marker sgos =
+          marker("sub_god_objects", area_id, visualization_msgs::Marker::SPHERE_LIST, stamp);
       sgos.scale.x = sgos.scale.y = sgos.scale.z = 0.0015;
       setColor(&sgos, 1.0f, 0.5f, 0.0f);
       for (int k = 0; k < n; ++k)

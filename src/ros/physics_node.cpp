@@ -1,13 +1,13 @@
 #include "god_finger/ros/physics_node.h"
 
+#include "god_finger/ContactAreaArray.h"
+#include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/ros/markers.h"
 #include "god_finger/ros/parameters.h"
-#include "god_finger/ContactAreaArray.h"
-#include "god_finger/SetContactModel.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
@@ -93,6 +93,7 @@ struct PhysicsNode::Impl
     ros::Publisher proxy_publisher;
     // Written by the pose callback, read by the loop.
     Eigen::Vector3d target = Eigen::Vector3d::Zero();
+    ros::Time target_stamp;  // of the pose the target came from: feedback carries it on
     bool have_target = false;
   };
 
@@ -126,6 +127,7 @@ struct PhysicsNode::Impl
       return;
     }
     interfaces[i].target = p;
+    interfaces[i].target_stamp = message->header.stamp;
     interfaces[i].have_target = true;
   }
 
@@ -182,12 +184,15 @@ struct PhysicsNode::Impl
       }
       const InterfaceState& state = world->interfaceState(interface.index);
       geometry_msgs::WrenchStampedPtr feedback(new geometry_msgs::WrenchStamped);
-      feedback->header.stamp = stamp;
+      // Stamped with the pose it answers (the device state's time, through the haptic node),
+      // so that the driver can measure the whole round trip.
+      feedback->header.stamp = interface.target_stamp.isZero() ? stamp : interface.target_stamp;
       feedback->header.frame_id = "world";
       feedback->wrench.force = toVector(state.user_force);
       interface.feedback_publisher.publish(feedback);
       geometry_msgs::PointStampedPtr proxy(new geometry_msgs::PointStamped);
-      proxy->header = feedback->header;
+      proxy->header.stamp = stamp;
+      proxy->header.frame_id = "world";
       proxy->point = toPoint(state.proxy_position);
       interface.proxy_publisher.publish(proxy);
     }
@@ -262,9 +267,11 @@ struct PhysicsNode::Impl
     status.hardware_id = "god_finger";
     const double rate = steps / seconds;
     const double wanted = 1.0 / world->params().time_step;
-    status.level = rate < 0.95 * wanted ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
+    status.level =
+        rate < 0.95 * wanted ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
     status.message = status.level == diagnostic_msgs::DiagnosticStatus::OK ? "running" : "below its rate";
-    auto add = [&status](const std::string& key, const std::string& value) {
+    auto add = [&status](const std::string& key, const std::string& value)
+    {
       diagnostic_msgs::KeyValue pair;
       pair.key = key;
       pair.value = value;
@@ -284,8 +291,10 @@ struct PhysicsNode::Impl
   void loop()
   {
     using Clock = std::chrono::steady_clock;
-    const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world->params().time_step));
-    const auto publish_every = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(publish_period));
+    const auto period =
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world->params().time_step));
+    const auto publish_every =
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(publish_period));
     auto next = Clock::now();
     auto next_publish = next;
     auto diagnostics_start = next;

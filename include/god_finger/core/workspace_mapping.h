@@ -14,9 +14,9 @@ namespace god_finger
 {
 struct WorkspaceMappingParams
 {
-  double scale = 1.0;        // world metres per device metre, range (0, 1e3]
-  double force_scale = 1.0;  // device newtons per world newton, range (0, 1e3]
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();      // m, world position of the device origin
+  double scale = 1.0;                                            // world metres per device metre, range (0, 1e3]
+  double force_scale = 1.0;                                      // device newtons per world newton, range (0, 1e3]
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();              // m, world position of the device origin
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // device axes in the world
 };
 // Empty on success, else one line naming the bad parameter.

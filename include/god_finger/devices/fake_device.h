@@ -14,10 +14,10 @@ namespace god_finger
 {
 struct FakeDeviceParams
 {
-  double handle_mass = 0.1;       // kg, range (0, 100]
-  double handle_damping = 0.5;    // N s/m, range [0, 1e4]: the mechanism's friction
-  double grip_stiffness = 2000;   // N/m, range (0, 1e6]: how firmly the hand holds the handle
-  double grip_damping = 20;       // N s/m, range [0, 1e4]
+  double handle_mass = 0.1;      // kg, range (0, 100]
+  double handle_damping = 0.5;   // N s/m, range [0, 1e4]: the mechanism's friction
+  double grip_stiffness = 2000;  // N/m, range (0, 1e6]: how firmly the hand holds the handle
+  double grip_damping = 20;      // N s/m, range [0, 1e4]
 };
 std::string validate(const FakeDeviceParams& params);
 

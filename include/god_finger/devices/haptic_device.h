@@ -2,9 +2,9 @@
 //
 // Frames and units: positions in metres and velocities in m/s in the device frame, whose axes
 // follow REP-103 as the user sees them (x forward, away from the user; y to the user's left;
-// z up; origin at the workspace centre); forces in newtons in the same frame. A backend converts its vendor's units and axes
-// and nothing else: saturation and the watchdog live in ForceGuard, the workspace mapping in
-// WorkspaceMapping, so they are the same for every device.
+// z up; origin at the workspace centre); forces in newtons in the same frame. A backend converts its vendor's units and
+// axes and nothing else: saturation and the watchdog live in ForceGuard, the workspace mapping in WorkspaceMapping, so
+// they are the same for every device.
 #pragma once
 
 #include <Eigen/Core>
