@@ -1,10 +1,11 @@
 // The body of every standalone node's main(): ROS set-up, the node, spinning; a bad parameter,
-// scene or device stops the process with one line on stderr (ROS_FATAL) and exit code 1.
+// scene or device stops the process with one line on stderr and exit code 1.
 #pragma once
 
 #include <ros/ros.h>
 
 #include <exception>
+#include <iostream>
 
 namespace god_finger
 {
@@ -23,7 +24,8 @@ int runNode(int argc, char** argv, const char* default_name)
   }
   catch (const std::exception& error)
   {
-    ROS_FATAL("%s: %s", ros::this_node::getName().c_str(), error.what());
+    // On stderr directly: rosconsole may not flush before the process ends.
+    std::cerr << ros::this_node::getName() << ": " << error.what() << std::endl;
     return 1;
   }
   return 0;

@@ -1,0 +1,84 @@
+// rostest: every node stops on bad input with one clear line and exit code 1: bad parameters,
+// a missing, malformed or incomplete URDF, an unavailable device backend. Runs the node
+// binaries as a user would (rosrun-style, private parameters on the command line; lists set in
+// node_errors.test) against rostest's master.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <cstdio>
+#include <string>
+
+namespace
+{
+struct Run
+{
+  int exit_code = -1;
+  std::string output;
+};
+
+Run run(const std::string& command)
+{
+  Run result;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  char buffer[4096];
+  std::size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0)
+  {
+    result.output.append(buffer, n);
+  }
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+const std::string kData = std::string(GOD_FINGER_SOURCE_DIR) + "/test/data";
+const std::string kScene = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/table_sphere.urdf";
+
+void expectFails(const std::string& binary, const std::string& arguments, const std::string& message)
+{
+  SCOPED_TRACE(arguments);
+  const Run result = run("timeout 20 " + binary + " " + arguments);
+  EXPECT_EQ(result.exit_code, 1) << result.output;
+  EXPECT_NE(result.output.find(message), std::string::npos) << result.output;
+}
+
+TEST(NodeErrors, PhysicsNode)
+{
+  const std::string node = GOD_FINGER_PHYSICS_NODE;
+  expectFails(node, "__name:=p1", "/p1: parameter '/p1/scene' is required (the scene's URDF file)");
+  expectFails(node, "__name:=p2 _scene:=/nonexistent/scene.urdf",
+              "URDF '/nonexistent/scene.urdf': no such file or not readable");
+  expectFails(node, "__name:=p3 _scene:=" + kData + "/malformed.urdf", "not a valid URDF");
+  expectFails(node, "__name:=p4 _scene:=" + kData + "/missing_mesh.urdf",
+              "link 'widget': mesh 'meshes/not_here.stl' not found");
+  expectFails(node, "__name:=p5 _scene:=" + kScene + " _r_max:=-0.01",
+              "parameter 'r_max' = -0.01 is out of range (0, 1000] (m)");
+  expectFails(node, "__name:=p6 _scene:=" + kScene + " _rate:=5", "parameter '/p6/rate' = 5 is out of range [10, 10000] (Hz)");
+  expectFails(node, "__name:=p7 _scene:=" + kScene + " _model:=point",
+              "parameter '/p7/model' = 'point' is not one of god_object, god_finger, soft_finger");
+  expectFails(node, "__name:=p8 _scene:=" + kScene + " _coupling_stiffness:=abc",
+              "parameter '/p8/coupling_stiffness' must be a number (N/m)");
+  expectFails(node, "__name:=p9 _scene:=" + kScene, "parameter '/p9/interfaces' must be a non-empty list of names");
+}
+
+TEST(NodeErrors, HapticNode)
+{
+  const std::string node = GOD_FINGER_HAPTIC_NODE;
+  expectFails(node, "__name:=h1 _workspace_scale:=0",
+              "parameter '/h1/workspace_scale' = 0 is out of range (0, 1000] (dimensionless)");
+  expectFails(node, "__name:=h2", "parameter '/h2/workspace_offset' must be a list of 3 numbers");
+  expectFails(node, "__name:=h3 _local_coupling:=7", "parameter '/h3/local_coupling' must be true or false");
+}
+
+TEST(NodeErrors, DeviceDriverNode)
+{
+  const std::string node = GOD_FINGER_DEVICE_DRIVER_NODE;
+  expectFails(node, "__name:=d1 _backend:=falcon", "backend 'falcon' needs libnifalcon");
+  expectFails(node, "__name:=d2 _backend:=omni", "backend 'omni' needs the OpenHaptics HD API");
+  expectFails(node, "__name:=d3 _backend:=mouse",
+              "parameter '/d3/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni");
+  expectFails(node, "__name:=d4 _max_force:=-2", "parameter '/d4/max_force' = -2 is out of range (0, 1000] (N)");
+  expectFails(node, "__name:=d5", "parameter '/d5/script' must be a list of [t, x, y, z] waypoints");
+  expectFails(node, "__name:=d6", "does not come after the previous one");
+}
+}  // namespace
