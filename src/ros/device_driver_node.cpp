@@ -118,6 +118,7 @@ struct DeviceDriverNode::Impl
   std::chrono::steady_clock::time_point epoch = std::chrono::steady_clock::now();
   long overruns = 0;
   std::vector<double> round_trips_us;  // since the last diagnostics
+  long published = 0;
 
   double now() const
   {
@@ -209,6 +210,7 @@ struct DeviceDriverNode::Impl
       }
       god_finger::DeviceStatePtr state(new god_finger::DeviceState);
       state->header.stamp = ros::Time::now();
+      state->header.seq = static_cast<std::uint32_t>(++published);  // gap-free: a recording can be checked
       state->header.frame_id = frame;
       state->position.x = reading.position.x();
       state->position.y = reading.position.y();
@@ -260,7 +262,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.device->start();
   impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", 1);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-  impl.force_subscriber = nh.subscribe("device/force", 1, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
+  impl.force_subscriber = nh.subscribe("device/force", 10, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend.c_str(), 1.0 / impl.period,
            guard.max_force);
   impl.thread = std::thread([this]() { impl_->loop(); });

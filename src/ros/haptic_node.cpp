@@ -57,7 +57,9 @@ struct HapticNode::Impl
   bool pending_reset = false;
   int model_index = 1;  // god_finger
   long rejected_states = 0;
+  long rejected_feedback = 0;
   long states = 0;
+  long timer_ticks = 0;
 
   void publishForce(const ros::Time& stamp, const Eigen::Vector3d& world_force)
   {
@@ -135,7 +137,9 @@ struct HapticNode::Impl
     const Eigen::Vector3d force = fromMessage(feedback->wrench.force);
     if (!force.allFinite())
     {
-      return;  // the driver would reject it too; never forward it
+      std::lock_guard<std::mutex> lock(mutex);
+      ++rejected_feedback;  // the driver would reject it too; never forward it
+      return;
     }
     publishForce(feedback->header.stamp, force);
   }
@@ -161,8 +165,36 @@ struct HapticNode::Impl
     have_proxy = true;
   }
 
+  void publishDiagnostics()
+  {
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = ros::Time::now();
+    diagnostic_msgs::DiagnosticStatus status;
+    status.name = ros::this_node::getName() + ": haptic";
+    status.hardware_id = frame;
+    status.level = diagnostic_msgs::DiagnosticStatus::OK;
+    status.message = local_coupling ? "local coupling" : "forwarding feedback";
+    diagnostic_msgs::KeyValue pair;
+    std::lock_guard<std::mutex> lock(mutex);
+    pair.key = "device_states";
+    pair.value = std::to_string(states);
+    status.values.push_back(pair);
+    pair.key = "rejected_states";
+    pair.value = std::to_string(rejected_states);
+    status.values.push_back(pair);
+    pair.key = "rejected_feedback";
+    pair.value = std::to_string(rejected_feedback);
+    status.values.push_back(pair);
+    array.status.push_back(status);
+    diagnostics_publisher.publish(array);
+  }
+
   void onTimer(const ros::TimerEvent&)
   {
+    if (++timer_ticks % 20 == 0)
+    {
+      publishDiagnostics();
+    }
     int switches = 0;
     bool reset = false;
     {
@@ -224,9 +256,10 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   impl.pose_publisher = nh.advertise<geometry_msgs::PoseStamped>("pose", 1);
   impl.force_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/force", 1);
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  impl.state_subscriber = nh.subscribe("device/state", 1, &Impl::onState, &impl, hints);
-  impl.feedback_subscriber = nh.subscribe("feedback", 1, &Impl::onFeedback, &impl, hints);
+  impl.state_subscriber = nh.subscribe("device/state", 10, &Impl::onState, &impl, hints);
+  impl.feedback_subscriber = nh.subscribe("feedback", 10, &Impl::onFeedback, &impl, hints);
   impl.proxy_subscriber = nh.subscribe("proxy", 1, &Impl::onProxy, &impl, hints);
+  impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.timer = nh.createTimer(ros::Duration(0.05), &Impl::onTimer, &impl);
   ROS_INFO("haptic: interface frame '%s', %s coupling", impl.frame.c_str(),
            impl.local_coupling ? "local" : "forwarded");

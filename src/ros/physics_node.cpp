@@ -353,7 +353,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     Impl::Interface& interface = impl.interfaces[i];
     interface.name = names[i];
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
-        names[i] + "/pose", 1, [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); },
+        names[i] + "/pose", 10, [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); },
         ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
     interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", 1);
     interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", 1);

@@ -1,0 +1,260 @@
+// rostest: safety of the loop with every node in its own process (safety.test).
+//  - NaN poses, forces and device states are rejected and counted by the node that receives
+//    them, and nothing downstream sees them;
+//  - the physics node killed: the driver ramps its force to zero (command_timeout 20 ms, then
+//    within ramp_time 10 ms), and the loop resumes when the physics respawns.
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/Vector3Stamped.h>
+#include <geometry_msgs/WrenchStamped.h>
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <god_finger/DeviceState.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <mutex>
+
+namespace
+{
+const ros::Time kInjectedPose(1, 1);
+const ros::Time kInjectedState(2, 2);
+
+std::mutex g_mutex;
+std::map<std::string, std::string> g_diagnostics;  // "status name/key" -> value
+std::atomic<long> g_feedback{0};
+std::atomic<long> g_non_finite_downstream{0};
+ros::WallTime g_last_feedback;
+double g_applied_force = 0.0;
+ros::WallTime g_first_zero_force;
+bool g_watch_zero = false;
+std::vector<std::pair<double, double>> g_force_after_kill;  // (driver stamp s, |applied force| N)
+
+bool finite(const geometry_msgs::Vector3& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool finite(const geometry_msgs::Point& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& array)
+{
+  std::lock_guard<std::mutex> lock(g_mutex);
+  for (const auto& status : array->status)
+  {
+    for (const auto& pair : status.values)
+    {
+      g_diagnostics[status.name + "/" + pair.key] = pair.value;
+    }
+  }
+}
+
+long diagnostic(const std::string& name, const std::string& key)
+{
+  std::lock_guard<std::mutex> lock(g_mutex);
+  const auto found = g_diagnostics.find(name + "/" + key);
+  return found == g_diagnostics.end() ? -1 : std::stol(found->second);
+}
+
+class Safety : public testing::Test
+{
+ protected:
+  void SetUp() override
+  {
+    const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
+    subscribers_.push_back(nh_.subscribe<geometry_msgs::WrenchStamped>(
+        "finger/feedback", 100,
+        [](const geometry_msgs::WrenchStamped::ConstPtr& m) {
+          g_non_finite_downstream += finite(m->wrench.force) ? 0 : 1;
+          std::lock_guard<std::mutex> lock(g_mutex);
+          g_last_feedback = ros::WallTime::now();
+          ++g_feedback;
+        },
+        ros::VoidConstPtr(), hints));
+    subscribers_.push_back(nh_.subscribe<geometry_msgs::PointStamped>(
+        "finger/proxy", 100,
+        [](const geometry_msgs::PointStamped::ConstPtr& m) { g_non_finite_downstream += finite(m->point) ? 0 : 1; },
+        ros::VoidConstPtr(), hints));
+    subscribers_.push_back(nh_.subscribe<geometry_msgs::PoseStamped>(
+        "finger/pose", 100,
+        [](const geometry_msgs::PoseStamped::ConstPtr& m) {
+          if (m->header.stamp != kInjectedPose)
+          {
+            g_non_finite_downstream += finite(m->pose.position) ? 0 : 1;
+          }
+        },
+        ros::VoidConstPtr(), hints));
+    subscribers_.push_back(nh_.subscribe<god_finger::DeviceState>(
+        "finger/device/state", 100,
+        [](const god_finger::DeviceState::ConstPtr& m) {
+          if (m->header.stamp == kInjectedState)
+          {
+            return;
+          }
+          g_non_finite_downstream += finite(m->applied_force) && finite(m->position) ? 0 : 1;
+          const double force =
+              std::sqrt(m->applied_force.x * m->applied_force.x + m->applied_force.y * m->applied_force.y +
+                        m->applied_force.z * m->applied_force.z);
+          std::lock_guard<std::mutex> lock(g_mutex);
+          g_applied_force = force;
+          if (g_watch_zero)
+          {
+            g_force_after_kill.emplace_back(m->header.stamp.toSec(), force);
+            if (force == 0.0 && g_first_zero_force.isZero())
+            {
+              g_first_zero_force = ros::WallTime::now();
+            }
+          }
+        },
+        ros::VoidConstPtr(), hints));
+    subscribers_.push_back(nh_.subscribe("/diagnostics", 100, onDiagnostics));
+    spinner_.start();
+    waitFor([] { return g_feedback > 0; }, 30.0, "feedback");
+    waitFor(
+        [] {
+          std::lock_guard<std::mutex> lock(g_mutex);
+          return g_applied_force > 0.5;
+        },
+        10.0, "the finger pressing on the ball");
+  }
+
+  void waitFor(const std::function<bool()>& condition, double seconds, const std::string& what)
+  {
+    const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(seconds);
+    while (!condition())
+    {
+      ASSERT_LT(ros::WallTime::now(), give_up) << "waited " << seconds << " s for " << what;
+      ros::WallDuration(0.005).sleep();
+    }
+  }
+
+  ros::NodeHandle nh_;
+  std::vector<ros::Subscriber> subscribers_;
+  ros::AsyncSpinner spinner_{2};
+};
+
+TEST_F(Safety, NonFiniteInputIsRejectedCountedAndNeverPassedOn)
+{
+  ros::Publisher poses = nh_.advertise<geometry_msgs::PoseStamped>("finger/pose", 10);
+  ros::Publisher forces = nh_.advertise<geometry_msgs::Vector3Stamped>("finger/device/force", 10);
+  ros::Publisher states = nh_.advertise<god_finger::DeviceState>("finger/device/state", 10);
+  ros::WallDuration(1.0).sleep();  // connections
+  const long downstream_before = g_non_finite_downstream;
+  for (int i = 0; i < 10; ++i)
+  {
+    geometry_msgs::PoseStamped pose;
+    pose.header.stamp = kInjectedPose;
+    pose.header.frame_id = "world";
+    pose.pose.position.x = NAN;
+    pose.pose.orientation.w = 1.0;
+    poses.publish(pose);
+    geometry_msgs::Vector3Stamped force;
+    force.vector.z = (i % 2) ? INFINITY : NAN;
+    forces.publish(force);
+    god_finger::DeviceState state;
+    state.header.stamp = kInjectedState;
+    state.position.y = NAN;
+    states.publish(state);
+    ros::WallDuration(0.01).sleep();
+  }
+  ros::WallDuration(2.5).sleep();  // two diagnostics periods
+  const long rejected_poses = diagnostic("/physics: physics loop", "rejected_poses");
+  const long rejected_forces = diagnostic("/finger/device_driver: fake device", "rejected_commands");
+  const long rejected_states = diagnostic("/finger/haptic: haptic", "rejected_states");
+  char line[300];
+  std::snprintf(line, sizeof(line), "non-finite input: rejected poses %ld, forces %ld, device states %ld; seen downstream %ld",
+                rejected_poses, rejected_forces, rejected_states, g_non_finite_downstream.load() - downstream_before);
+  RecordProperty("measured", line);
+  EXPECT_EQ(rejected_poses, 10);
+  EXPECT_EQ(rejected_forces, 10);
+  EXPECT_EQ(rejected_states, 10);
+  EXPECT_EQ(g_non_finite_downstream.load(), 0);
+  // The loop goes on.
+  const long feedback = g_feedback;
+  ros::WallDuration(0.2).sleep();
+  EXPECT_GT(g_feedback - feedback, 150);
+}
+
+TEST_F(Safety, DriverRampsToZeroWhenThePhysicsDiesAndResumesAfterItsRespawn)
+{
+  {
+    std::lock_guard<std::mutex> lock(g_mutex);
+    g_watch_zero = true;
+  }
+  ASSERT_EQ(std::system("rosnode kill /physics > /dev/null"), 0);
+  waitFor(
+      [] {
+        std::lock_guard<std::mutex> lock(g_mutex);
+        return !g_first_zero_force.isZero();
+      },
+      5.0, "the driver's force to reach zero");
+  double to_zero = 0.0;
+  double hold = 0.0;
+  double ramp = 0.0;
+  {
+    std::lock_guard<std::mutex> lock(g_mutex);
+    to_zero = (g_first_zero_force - g_last_feedback).toSec();
+    // On the driver's own clock (state stamps): the last command held, then a linear ramp.
+    const auto& states = g_force_after_kill;
+    std::size_t zero = 0;
+    while (zero < states.size() && states[zero].second != 0.0)
+    {
+      ++zero;
+    }
+    std::size_t i = zero;
+    while (i > 0 && states[i - 1].second > states[i].second)
+    {
+      --i;  // back through the ramp
+    }
+    const std::size_t ramp_start = i;  // the last state at the held force
+    while (i > 0 && states[i - 1].second == states[i].second)
+    {
+      --i;  // back through the hold
+    }
+    if (zero < states.size())
+    {
+      ramp = states[zero].first - states[ramp_start].first;
+      hold = states[ramp_start].first - states[i].first;
+    }
+    g_watch_zero = false;
+  }
+  // The driver holds the last command for command_timeout (20 ms), then ramps to zero within
+  // ramp_time (10 ms): 30 ms from the last command to zero, measured on the driver's stamps.
+  // ForceGuard's unit test checks the exact times; here the samples are the driver's 1 kHz
+  // ticks, which a loaded 2-core machine delays by a few ms (seen: up to 4 ms while rosnode
+  // starts), so zero shows at the first tick at or after 30 ms. The test's own clock is not
+  // used: its feedback can arrive late (seen: 0.5 s) while the physics dies.
+  EXPECT_GE(hold + ramp, 0.0275);
+  EXPECT_LE(hold + ramp, 0.035);
+  EXPECT_GE(ramp, 0.008);
+  EXPECT_LE(ramp, 0.015);
+  const ros::WallTime killed = ros::WallTime::now();
+  const long feedback = g_feedback;
+  waitFor([feedback] { return g_feedback > feedback + 100; }, 20.0, "the physics to come back");
+  waitFor(
+      [] {
+        std::lock_guard<std::mutex> lock(g_mutex);
+        return g_applied_force > 0.5;
+      },
+      10.0, "the force to come back");
+  char line[200];
+  std::snprintf(line, sizeof(line),
+                "physics killed: driver held the last force %.1f ms, ramped to zero in %.1f ms (%.1f ms after the test's "
+                "last feedback); loop back after %.1f s",
+                1e3 * hold, 1e3 * ramp, 1e3 * to_zero, (ros::WallTime::now() - killed).toSec());
+  RecordProperty("measured", line);
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "safety_test");
+  return RUN_ALL_TESTS();
+}
