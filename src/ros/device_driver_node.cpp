@@ -6,6 +6,7 @@
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/ros/parameters.h"
+#include "god_finger/ros/queues.h"
 
 #include <XmlRpcValue.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
@@ -260,9 +261,9 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.frame = readString(pnh, "frame", "device");
   impl.device = makeDevice(backend, pnh);
   impl.device->start();
-  impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", 1);
+  impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", kPublisherQueue);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-  impl.force_subscriber = nh.subscribe("device/force", 10, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
+  impl.force_subscriber = nh.subscribe("device/force", kSubscriberQueue, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend.c_str(), 1.0 / impl.period,
            guard.max_force);
   impl.thread = std::thread([this]() { impl_->loop(); });

@@ -5,6 +5,7 @@
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/ros/parameters.h"
+#include "god_finger/ros/queues.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
@@ -253,11 +254,11 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   ros::NodeHandle physics_nh(physics);
   impl.model_client = physics_nh.serviceClient<god_finger::SetContactModel>("set_contact_model");
   impl.reset_client = physics_nh.serviceClient<std_srvs::Trigger>("reset_scene");
-  impl.pose_publisher = nh.advertise<geometry_msgs::PoseStamped>("pose", 1);
-  impl.force_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/force", 1);
+  impl.pose_publisher = nh.advertise<geometry_msgs::PoseStamped>("pose", kPublisherQueue);
+  impl.force_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/force", kPublisherQueue);
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
-  impl.state_subscriber = nh.subscribe("device/state", 10, &Impl::onState, &impl, hints);
-  impl.feedback_subscriber = nh.subscribe("feedback", 10, &Impl::onFeedback, &impl, hints);
+  impl.state_subscriber = nh.subscribe("device/state", kSubscriberQueue, &Impl::onState, &impl, hints);
+  impl.feedback_subscriber = nh.subscribe("feedback", kSubscriberQueue, &Impl::onFeedback, &impl, hints);
   impl.proxy_subscriber = nh.subscribe("proxy", 1, &Impl::onProxy, &impl, hints);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.timer = nh.createTimer(ros::Duration(0.05), &Impl::onTimer, &impl);

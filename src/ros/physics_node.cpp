@@ -8,6 +8,7 @@
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/ros/markers.h"
 #include "god_finger/ros/parameters.h"
+#include "god_finger/ros/queues.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
@@ -353,12 +354,12 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     Impl::Interface& interface = impl.interfaces[i];
     interface.name = names[i];
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
-        names[i] + "/pose", 10, [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); },
+        names[i] + "/pose", kSubscriberQueue, [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); },
         ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
-    interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", 1);
-    interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", 1);
+    interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", kPublisherQueue);
+    interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", kPublisherQueue);
   }
-  impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", 10);
+  impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);

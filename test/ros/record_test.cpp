@@ -1,0 +1,89 @@
+// rostest: record:=true writes a bag of the session. Lets the loop run, stops the recorder,
+// then reads the bag: every device state the driver published while recording is in it (the
+// driver numbers them without gaps), and the poses, feedback, contact areas and TF are there.
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+#include <rosbag/bag.h>
+#include <rosbag/view.h>
+
+#include <god_finger/DeviceState.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+
+namespace
+{
+bool exists(const std::string& path)
+{
+  return std::ifstream(path).good();
+}
+
+TEST(Record, BagHoldsEveryDeviceStateAndTheRestOfTheSession)
+{
+  ros::NodeHandle pnh("~");
+  const std::string bag_path = pnh.param<std::string>("bag", "");
+  ASSERT_FALSE(bag_path.empty());
+  // Let the session run, then stop the recorder (it closes the bag on shutdown).
+  const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(30.0);
+  while (!exists(bag_path + ".active"))
+  {
+    ASSERT_LT(ros::WallTime::now(), give_up) << "no " << bag_path << ".active";
+    ros::WallDuration(0.05).sleep();
+  }
+  ros::WallDuration(4.0).sleep();
+  ASSERT_EQ(std::system("rosnode kill /recorder > /dev/null"), 0);
+  const ros::WallTime closed_by = ros::WallTime::now() + ros::WallDuration(20.0);
+  while (!exists(bag_path) || exists(bag_path + ".active"))
+  {
+    ASSERT_LT(ros::WallTime::now(), closed_by) << "the recorder did not close " << bag_path;
+    ros::WallDuration(0.05).sleep();
+  }
+
+  rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
+  std::map<std::string, long> counts;
+  long states = 0;
+  std::uint32_t first_seq = 0;
+  std::uint32_t last_seq = 0;
+  for (const rosbag::MessageInstance& message : rosbag::View(bag))
+  {
+    ++counts[message.getTopic()];
+    if (message.getTopic() == "/finger/device/state")
+    {
+      const god_finger::DeviceState::ConstPtr state = message.instantiate<god_finger::DeviceState>();
+      ASSERT_TRUE(state != nullptr);
+      if (states == 0)
+      {
+        first_seq = state->header.seq;
+      }
+      last_seq = state->header.seq;
+      ++states;
+    }
+  }
+  std::string summary;
+  for (const auto& entry : counts)
+  {
+    summary += " " + entry.first + " " + std::to_string(entry.second);
+  }
+  RecordProperty("measured", "bag:" + summary);
+  std::printf("bag:%s\n", summary.c_str());
+  ASSERT_GT(states, 2000);  // a few seconds at 1 kHz
+  EXPECT_EQ(states, static_cast<long>(last_seq - first_seq + 1)) << "device states missing from the bag";
+  for (const char* topic : {"/finger/device/force", "/finger/pose", "/finger/feedback", "/finger/proxy",
+                            "/contact_areas", "/tf"})
+  {
+    EXPECT_GT(counts[topic], 0) << topic;
+  }
+  // Feedback and poses at the loop's rate too (no gap check: they carry no sequence number).
+  EXPECT_GT(counts["/finger/feedback"], 0.95 * states);
+  EXPECT_GT(counts["/finger/pose"], 0.95 * states);
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  testing::InitGoogleTest(&argc, argv);
+  ros::init(argc, argv, "record_test");
+  return RUN_ALL_TESTS();
+}
