@@ -58,6 +58,8 @@ visualization_msgs::Marker deleteAll(const std::string& ns, const ros::Time& sta
 
 void appendBodyMarkers(const GodFingerWorld& world, const ros::Time& stamp, visualization_msgs::MarkerArray* markers)
 {
+  // rviz's DELETEALL clears every namespace: it goes first, and everything is sent again.
+  markers->markers.push_back(deleteAll("", stamp));
   const SceneDescription& scene = world.scene();
   for (int i = 0; i < world.bodyCount(); ++i)
   {
@@ -104,10 +106,6 @@ void appendBodyMarkers(const GodFingerWorld& world, const ros::Time& stamp, visu
 void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stamp,
                               visualization_msgs::MarkerArray* markers)
 {
-  for (const char* ns : {"contact_areas", "sub_god_objects"})
-  {
-    markers->markers.push_back(deleteAll(ns, stamp));
-  }
   const double proxy_radius = world.params().coupling.proxy_radius;
   visualization_msgs::Marker springs = marker("couplings", 0, visualization_msgs::Marker::LINE_LIST, stamp);
   springs.scale.x = 0.001;

@@ -17,10 +17,10 @@ namespace god_finger
 // Polygons are lifted this far (m) along their normal, above the surface they lie on.
 constexpr double kContactAreaLift = 5e-4;
 
-// Bodies change only in pose: this is sent at the publish rate with the current poses.
+// A DELETEALL (rviz clears every namespace with it), then the bodies at their current poses.
+// Call first, then appendInteractionMarkers: the whole picture is sent at each publish.
 void appendBodyMarkers(const GodFingerWorld& world, const ros::Time& stamp, visualization_msgs::MarkerArray* markers);
-// Contact areas, proxies, interfaces, couplings and forces of every interface. Markers of
-// areas that vanished are deleted (DELETEALL of the namespace first).
+// Contact areas, proxies, interfaces, couplings and forces of every interface.
 void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stamp,
                               visualization_msgs::MarkerArray* markers);
 }  // namespace god_finger
