@@ -47,7 +47,10 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
   if (!started_clock_)
   {
     started_clock_ = true;
-    start_time_ = time;
+    if (!script_start_set_)
+    {
+      start_time_ = time;
+    }
     last_time_ = time;
   }
   double remaining = std::min(std::max(time - last_time_, 0.0), 0.1);

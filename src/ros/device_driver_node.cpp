@@ -72,7 +72,8 @@ WaypointPath readScript(const ros::NodeHandle& pnh)
   }
 }
 
-std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::NodeHandle& pnh)
+std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::NodeHandle& pnh,
+                                         double seconds_since_start)
 {
   if (backend == "fake")
   {
@@ -81,7 +82,22 @@ std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::
     params.handle_damping = readDouble(pnh, "handle_damping", params.handle_damping, 0.0, 1e4, "N s/m");
     params.grip_stiffness = readDouble(pnh, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
     params.grip_damping = readDouble(pnh, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
-    return std::make_unique<FakeDevice>(params, readScript(pnh));
+    auto device = std::make_unique<FakeDevice>(params, readScript(pnh));
+    // Fake devices of one launch follow their scripts in step: time 0 is the launch's
+    // /god_finger_script_epoch (wall clock, s) plus ~script_delay.
+    const double delay = readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s");
+    std::string epoch_text;
+    double epoch = 0.0;
+    if (ros::param::get("/god_finger_script_epoch", epoch_text) &&
+        parseDouble(epoch_text.substr(0, epoch_text.find_last_not_of(" \n\r\t") + 1), &epoch))
+    {
+      device->setScriptStart(seconds_since_start + epoch + delay - ros::WallTime::now().toSec());
+    }
+    else if (ros::param::get("/god_finger_script_epoch", epoch))
+    {
+      device->setScriptStart(seconds_since_start + epoch + delay - ros::WallTime::now().toSec());
+    }
+    return device;
   }
   if (backend == "falcon")
   {
@@ -259,11 +275,12 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.guard = std::make_unique<ForceGuard>(guard);
   const std::string backend = readString(pnh, "backend", "fake");
   impl.frame = readString(pnh, "frame", "device");
-  impl.device = makeDevice(backend, pnh);
+  impl.device = makeDevice(backend, pnh, impl.now());
   impl.device->start();
   impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", kPublisherQueue);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-  impl.force_subscriber = nh.subscribe("device/force", kSubscriberQueue, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
+  impl.force_subscriber =
+      nh.subscribe("device/force", kSubscriberQueue, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend.c_str(), 1.0 / impl.period,
            guard.max_force);
   impl.thread = std::thread([this]() { impl_->loop(); });

@@ -354,8 +354,9 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     Impl::Interface& interface = impl.interfaces[i];
     interface.name = names[i];
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
-        names[i] + "/pose", kSubscriberQueue, [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); },
-        ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
+        names[i] + "/pose", kSubscriberQueue,
+        [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),
+        ros::TransportHints().tcpNoDelay());
     interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", kPublisherQueue);
     interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", kPublisherQueue);
   }

@@ -53,7 +53,8 @@ TEST(NodeErrors, PhysicsNode)
               "link 'widget': mesh 'meshes/not_here.stl' not found");
   expectFails(node, "__name:=p5 _scene:=" + kScene + " _r_max:=-0.01",
               "parameter 'r_max' = -0.01 is out of range (0, 1000] (m)");
-  expectFails(node, "__name:=p6 _scene:=" + kScene + " _rate:=5", "parameter '/p6/rate' = 5 is out of range [10, 10000] (Hz)");
+  expectFails(node, "__name:=p6 _scene:=" + kScene + " _rate:=5",
+              "parameter '/p6/rate' = 5 is out of range [10, 10000] (Hz)");
   expectFails(node, "__name:=p7 _scene:=" + kScene + " _model:=point",
               "parameter '/p7/model' = 'point' is not one of god_object, god_finger, soft_finger");
   expectFails(node, "__name:=p8 _scene:=" + kScene + " _coupling_stiffness:=abc",

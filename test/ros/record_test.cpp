@@ -70,8 +70,8 @@ TEST(Record, BagHoldsEveryDeviceStateAndTheRestOfTheSession)
   std::printf("bag:%s\n", summary.c_str());
   ASSERT_GT(states, 2000);  // a few seconds at 1 kHz
   EXPECT_EQ(states, static_cast<long>(last_seq - first_seq + 1)) << "device states missing from the bag";
-  for (const char* topic : {"/finger/device/force", "/finger/pose", "/finger/feedback", "/finger/proxy",
-                            "/contact_areas", "/tf"})
+  for (const char* topic :
+       {"/finger/device/force", "/finger/pose", "/finger/feedback", "/finger/proxy", "/contact_areas", "/tf"})
   {
     EXPECT_GT(counts[topic], 0) << topic;
   }

@@ -70,7 +70,8 @@ class Safety : public testing::Test
     const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
     subscribers_.push_back(nh_.subscribe<geometry_msgs::WrenchStamped>(
         "finger/feedback", 100,
-        [](const geometry_msgs::WrenchStamped::ConstPtr& m) {
+        [](const geometry_msgs::WrenchStamped::ConstPtr& m)
+        {
           g_non_finite_downstream += finite(m->wrench.force) ? 0 : 1;
           std::lock_guard<std::mutex> lock(g_mutex);
           g_last_feedback = ros::WallTime::now();
@@ -83,7 +84,8 @@ class Safety : public testing::Test
         ros::VoidConstPtr(), hints));
     subscribers_.push_back(nh_.subscribe<geometry_msgs::PoseStamped>(
         "finger/pose", 100,
-        [](const geometry_msgs::PoseStamped::ConstPtr& m) {
+        [](const geometry_msgs::PoseStamped::ConstPtr& m)
+        {
           if (m->header.stamp != kInjectedPose)
           {
             g_non_finite_downstream += finite(m->pose.position) ? 0 : 1;
@@ -92,7 +94,8 @@ class Safety : public testing::Test
         ros::VoidConstPtr(), hints));
     subscribers_.push_back(nh_.subscribe<god_finger::DeviceState>(
         "finger/device/state", 100,
-        [](const god_finger::DeviceState::ConstPtr& m) {
+        [](const god_finger::DeviceState::ConstPtr& m)
+        {
           if (m->header.stamp == kInjectedState)
           {
             return;
@@ -117,7 +120,8 @@ class Safety : public testing::Test
     spinner_.start();
     waitFor([] { return g_feedback > 0; }, 30.0, "feedback");
     waitFor(
-        [] {
+        []
+        {
           std::lock_guard<std::mutex> lock(g_mutex);
           return g_applied_force > 0.5;
         },
@@ -168,7 +172,8 @@ TEST_F(Safety, NonFiniteInputIsRejectedCountedAndNeverPassedOn)
   const long rejected_forces = diagnostic("/finger/device_driver: fake device", "rejected_commands");
   const long rejected_states = diagnostic("/finger/haptic: haptic", "rejected_states");
   char line[300];
-  std::snprintf(line, sizeof(line), "non-finite input: rejected poses %ld, forces %ld, device states %ld; seen downstream %ld",
+  std::snprintf(line, sizeof(line),
+                "non-finite input: rejected poses %ld, forces %ld, device states %ld; seen downstream %ld",
                 rejected_poses, rejected_forces, rejected_states, g_non_finite_downstream.load() - downstream_before);
   RecordProperty("measured", line);
   EXPECT_EQ(rejected_poses, 10);
@@ -189,7 +194,8 @@ TEST_F(Safety, DriverRampsToZeroWhenThePhysicsDiesAndResumesAfterItsRespawn)
   }
   ASSERT_EQ(std::system("rosnode kill /physics > /dev/null"), 0);
   waitFor(
-      [] {
+      []
+      {
         std::lock_guard<std::mutex> lock(g_mutex);
         return !g_first_zero_force.isZero();
       },
@@ -238,16 +244,18 @@ TEST_F(Safety, DriverRampsToZeroWhenThePhysicsDiesAndResumesAfterItsRespawn)
   const long feedback = g_feedback;
   waitFor([feedback] { return g_feedback > feedback + 100; }, 20.0, "the physics to come back");
   waitFor(
-      [] {
+      []
+      {
         std::lock_guard<std::mutex> lock(g_mutex);
         return g_applied_force > 0.5;
       },
       10.0, "the force to come back");
   char line[200];
-  std::snprintf(line, sizeof(line),
-                "physics killed: driver held the last force %.1f ms, ramped to zero in %.1f ms (%.1f ms after the test's "
-                "last feedback); loop back after %.1f s",
-                1e3 * hold, 1e3 * ramp, 1e3 * to_zero, (ros::WallTime::now() - killed).toSec());
+  std::snprintf(
+      line, sizeof(line),
+      "physics killed: driver held the last force %.1f ms, ramped to zero in %.1f ms (%.1f ms after the test's "
+      "last feedback); loop back after %.1f s",
+      1e3 * hold, 1e3 * ramp, 1e3 * to_zero, (ros::WallTime::now() - killed).toSec());
   RecordProperty("measured", line);
 }
 }  // namespace

@@ -32,7 +32,15 @@ class FakeDevice : public HapticDevice
   }
   void start() override;
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
-  // Time of the first update (the script's time 0).
+  // Makes the script's time 0 the given time of update()'s clock (several fake devices then
+  // follow their scripts in step); before it the hand waits at the first waypoint. Without
+  // it, the script starts at the first update.
+  void setScriptStart(double time)
+  {
+    start_time_ = time;
+    script_start_set_ = true;
+  }
+  // The update() time at which the script's time is 0.
   double startTime() const
   {
     return start_time_;
@@ -46,5 +54,6 @@ class FakeDevice : public HapticDevice
   double last_time_ = 0.0;
   double start_time_ = 0.0;
   bool started_clock_ = false;
+  bool script_start_set_ = false;
 };
 }  // namespace god_finger
