@@ -5,6 +5,8 @@
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/fake_device.h"
+#include "god_finger/devices/replay_device.h"
+#include "god_finger/ros/bag_track.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 
@@ -14,6 +16,7 @@
 #include <ros/ros.h>
 
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <mutex>
 #include <thread>
@@ -72,8 +75,27 @@ WaypointPath readScript(const ros::NodeHandle& pnh)
   }
 }
 
-std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::NodeHandle& pnh,
-                                         double seconds_since_start)
+// Script time 0 of the launch's fake and replay devices, on the driver's clock (s): the
+// launch's /god_finger_script_epoch (wall clock) plus ~script_delay; NaN without an epoch.
+double sharedScriptStart(const ros::NodeHandle& pnh, double seconds_since_start)
+{
+  const double delay = readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s");
+  std::string epoch_text;
+  double epoch = 0.0;
+  if (ros::param::get("/god_finger_script_epoch", epoch_text) &&
+      parseDouble(epoch_text.substr(0, epoch_text.find_last_not_of(" \n\r\t") + 1), &epoch))
+  {
+    return seconds_since_start + epoch + delay - ros::WallTime::now().toSec();
+  }
+  if (ros::param::get("/god_finger_script_epoch", epoch))
+  {
+    return seconds_since_start + epoch + delay - ros::WallTime::now().toSec();
+  }
+  return NAN;
+}
+
+std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::NodeHandle& nh,
+                                         const ros::NodeHandle& pnh, double seconds_since_start)
 {
   if (backend == "fake")
   {
@@ -83,19 +105,11 @@ std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::
     params.grip_stiffness = readDouble(pnh, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
     params.grip_damping = readDouble(pnh, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
     auto device = std::make_unique<FakeDevice>(params, readScript(pnh));
-    // Fake devices of one launch follow their scripts in step: time 0 is the launch's
-    // /god_finger_script_epoch (wall clock, s) plus ~script_delay.
-    const double delay = readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s");
-    std::string epoch_text;
-    double epoch = 0.0;
-    if (ros::param::get("/god_finger_script_epoch", epoch_text) &&
-        parseDouble(epoch_text.substr(0, epoch_text.find_last_not_of(" \n\r\t") + 1), &epoch))
+    // Fake devices of one launch follow their scripts in step.
+    const double start = sharedScriptStart(pnh, seconds_since_start);
+    if (std::isfinite(start))
     {
-      device->setScriptStart(seconds_since_start + epoch + delay - ros::WallTime::now().toSec());
-    }
-    else if (ros::param::get("/god_finger_script_epoch", epoch))
-    {
-      device->setScriptStart(seconds_since_start + epoch + delay - ros::WallTime::now().toSec());
+      device->setScriptStart(start);
     }
     return device;
   }
@@ -111,9 +125,25 @@ std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::
         "backend 'omni' needs the OpenHaptics HD API, which this build did not find: install 3D Systems' "
         "OpenHaptics (and the Touch / Phantom device driver), then rebuild god_finger");
   }
-  if (backend == "interactive" || backend == "replay")
+  if (backend == "replay")
   {
-    throw DeviceError("backend '" + backend + "' is not available in this version (fake, falcon, omni)");
+    const std::string bag = readString(pnh, "bag", "");
+    if (bag.empty())
+    {
+      throw InputError("parameter '" + pnh.resolveName("bag") + "' is required by backend 'replay' (a recorded bag)");
+    }
+    const std::string topic = readString(pnh, "topic", nh.resolveName("device/state"));
+    auto device = std::make_unique<ReplayDevice>(readBagTrack(bag, topic));
+    const double start = sharedScriptStart(pnh, seconds_since_start);
+    if (std::isfinite(start))
+    {
+      device->setStart(start);
+    }
+    return device;
+  }
+  if (backend == "interactive")
+  {
+    throw DeviceError("backend '" + backend + "' is not available in this version (fake, replay, falcon, omni)");
   }
   throw InputError("parameter '" + pnh.resolveName("backend") + "' = '" + backend +
                    "' is not one of fake, interactive, replay, falcon, omni");
@@ -275,7 +305,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.guard = std::make_unique<ForceGuard>(guard);
   const std::string backend = readString(pnh, "backend", "fake");
   impl.frame = readString(pnh, "frame", "device");
-  impl.device = makeDevice(backend, pnh, impl.now());
+  impl.device = makeDevice(backend, nh, pnh, impl.now());
   impl.device->start();
   impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", kPublisherQueue);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);

@@ -81,5 +81,8 @@ TEST(NodeErrors, DeviceDriverNode)
   expectFails(node, "__name:=d4 _max_force:=-2", "parameter '/d4/max_force' = -2 is out of range (0, 1000] (N)");
   expectFails(node, "__name:=d5", "parameter '/d5/script' must be a list of [t, x, y, z] waypoints");
   expectFails(node, "__name:=d6", "does not come after the previous one");
+  expectFails(node, "__name:=d7 _backend:=replay", "parameter '/d7/bag' is required by backend 'replay'");
+  expectFails(node, "__name:=d8 _backend:=replay _bag:=/nonexistent/session.bag",
+              "bag '/nonexistent/session.bag': cannot be read");
 }
 }  // namespace
