@@ -42,8 +42,26 @@ FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand)
 
 void FakeDevice::start() {}
 
+void FakeDevice::setHandTarget(const Eigen::Vector3d& position)
+{
+  if (!position.allFinite())
+  {
+    return;
+  }
+  std::lock_guard<std::mutex> lock(target_mutex_);
+  target_ = position;
+  has_target_ = true;
+}
+
 DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
 {
+  bool has_target = false;
+  Eigen::Vector3d target;
+  {
+    std::lock_guard<std::mutex> lock(target_mutex_);
+    has_target = has_target_;
+    target = target_;
+  }
   if (!started_clock_)
   {
     started_clock_ = true;
@@ -60,8 +78,11 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
   {
     const double dt = std::min(remaining, 1e-3);
     t += dt;
-    const Eigen::Vector3d hand = hand_.at(t);
-    const Eigen::Vector3d hand_velocity = (hand_.at(t) - hand_.at(t - dt)) / dt;
+    // A dragged marker jumps between mouse events: the hand moves there, and its velocity is
+    // left to the grip's damping rather than differentiated from the jumps.
+    const Eigen::Vector3d hand = has_target ? target : hand_.at(t);
+    const Eigen::Vector3d hand_velocity =
+        has_target ? Eigen::Vector3d::Zero() : Eigen::Vector3d((hand_.at(t) - hand_.at(t - dt)) / dt);
     const Eigen::Vector3d total = applied + params_.grip_stiffness * (hand - position_) +
                                   params_.grip_damping * (hand_velocity - velocity_) -
                                   params_.handle_damping * velocity_;

@@ -13,11 +13,12 @@
 #include <XmlRpcValue.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/Vector3Stamped.h>
+#include <interactive_markers/interactive_marker_server.h>
 #include <ros/ros.h>
 
 #include <atomic>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <thread>
 
@@ -143,7 +144,14 @@ std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::
   }
   if (backend == "interactive")
   {
-    throw DeviceError("backend '" + backend + "' is not available in this version (fake, replay, falcon, omni)");
+    // A simulated handle whose hand is an rviz marker (DeviceDriverNode adds the marker).
+    FakeDeviceParams params;
+    params.handle_mass = readDouble(pnh, "handle_mass", params.handle_mass, 0.0, 100.0, "kg", true);
+    params.handle_damping = readDouble(pnh, "handle_damping", params.handle_damping, 0.0, 1e4, "N s/m");
+    params.grip_stiffness = readDouble(pnh, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
+    params.grip_damping = readDouble(pnh, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
+    const Eigen::Vector3d start = readVector(pnh, "start", Eigen::Vector3d(0.0, 0.0, 0.12));
+    return std::make_unique<FakeDevice>(params, WaypointPath({{0.0, start}}));
   }
   throw InputError("parameter '" + pnh.resolveName("backend") + "' = '" + backend +
                    "' is not one of fake, interactive, replay, falcon, omni");
@@ -159,6 +167,7 @@ struct DeviceDriverNode::Impl
   ros::Publisher state_publisher;
   ros::Publisher diagnostics_publisher;
   ros::Subscriber force_subscriber;
+  std::unique_ptr<interactive_markers::InteractiveMarkerServer> marker_server;
   std::mutex mutex;  // guards the guard
   std::thread thread;
   std::atomic<bool> running{true};
@@ -170,6 +179,58 @@ struct DeviceDriverNode::Impl
   double now() const
   {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - epoch).count();
+  }
+
+  // The interactive backend's hand: a marker in the device frame, dragged in rviz (a sphere
+  // moved freely in the view plane, and arrows along each axis).
+  void addMarker(ros::NodeHandle& nh, const Eigen::Vector3d& start)
+  {
+    FakeDevice* hand = static_cast<FakeDevice*>(device.get());
+    marker_server = std::make_unique<interactive_markers::InteractiveMarkerServer>(nh.resolveName("device_marker"));
+    visualization_msgs::InteractiveMarker marker;
+    marker.header.frame_id = frame;
+    marker.name = "hand";
+    marker.description = "drag to move the finger";
+    marker.scale = 0.05;
+    marker.pose.position.x = start.x();
+    marker.pose.position.y = start.y();
+    marker.pose.position.z = start.z();
+    marker.pose.orientation.w = 1.0;
+    visualization_msgs::InteractiveMarkerControl free;
+    free.interaction_mode = visualization_msgs::InteractiveMarkerControl::MOVE_3D;
+    free.always_visible = true;
+    visualization_msgs::Marker ball;
+    ball.type = visualization_msgs::Marker::SPHERE;
+    ball.scale.x = ball.scale.y = ball.scale.z = 0.012;
+    ball.color.r = 0.2f;
+    ball.color.g = 0.9f;
+    ball.color.b = 0.2f;
+    ball.color.a = 0.6f;
+    free.markers.push_back(ball);
+    marker.controls.push_back(free);
+    const double axes[3][4] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};  // quaternions x, y, z of each arrow pair
+    const char* names[3] = {"move_x", "move_z", "move_y"};
+    for (int i = 0; i < 3; ++i)
+    {
+      visualization_msgs::InteractiveMarkerControl axis;
+      axis.name = names[i];
+      axis.orientation.w = axes[i][3] / std::sqrt(2.0);
+      axis.orientation.x = axes[i][0] / std::sqrt(2.0);
+      axis.orientation.y = axes[i][1] / std::sqrt(2.0);
+      axis.orientation.z = axes[i][2] / std::sqrt(2.0);
+      axis.interaction_mode = visualization_msgs::InteractiveMarkerControl::MOVE_AXIS;
+      marker.controls.push_back(axis);
+    }
+    marker_server->insert(marker,
+                          [hand](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback)
+                          {
+                            if (feedback->event_type == visualization_msgs::InteractiveMarkerFeedback::POSE_UPDATE)
+                            {
+                              hand->setHandTarget(Eigen::Vector3d(feedback->pose.position.x, feedback->pose.position.y,
+                                                                  feedback->pose.position.z));
+                            }
+                          });
+    marker_server->applyChanges();
   }
 
   void onForce(const geometry_msgs::Vector3Stamped::ConstPtr& message)
@@ -307,6 +368,10 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.frame = readString(pnh, "frame", "device");
   impl.device = makeDevice(backend, nh, pnh, impl.now());
   impl.device->start();
+  if (backend == "interactive")
+  {
+    impl.addMarker(nh, readVector(pnh, "start", Eigen::Vector3d(0.0, 0.0, 0.12)));
+  }
   impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", kPublisherQueue);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.force_subscriber =

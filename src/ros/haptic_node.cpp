@@ -15,6 +15,7 @@
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <mutex>
@@ -48,6 +49,8 @@ struct HapticNode::Impl
   ros::ServiceClient reset_client;
   ros::Timer timer;
   tf2_ros::TransformBroadcaster broadcaster;
+  tf2_ros::StaticTransformBroadcaster static_broadcaster;
+  std::string device_frame;
   std::mutex mutex;
   Eigen::Vector3d proxy = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_velocity = Eigen::Vector3d::Zero();
@@ -103,6 +106,10 @@ struct HapticNode::Impl
     transform.transform.translation.z = world.z();
     transform.transform.rotation.w = 1.0;
     broadcaster.sendTransform(transform);
+    if (!state->header.frame_id.empty() && state->header.frame_id != device_frame)
+    {
+      publishDeviceFrame(state->header.frame_id);
+    }
 
     std::lock_guard<std::mutex> lock(mutex);
     ++states;
@@ -127,6 +134,27 @@ struct HapticNode::Impl
       }
       publishForce(state->header.stamp, force);
     }
+  }
+
+  // world -> the device's frame (the workspace mapping's offset and rotation), so that rviz can
+  // show what lives in device coordinates (the interactive backend's marker). The mapping's
+  // scale has no place in a TF: with a scale other than 1 the marker shows unscaled.
+  void publishDeviceFrame(const std::string& name)
+  {
+    device_frame = name;
+    geometry_msgs::TransformStamped transform;
+    transform.header.stamp = ros::Time::now();
+    transform.header.frame_id = "world";
+    transform.child_frame_id = name;
+    const WorkspaceMappingParams& p = mapping.params();
+    transform.transform.translation.x = p.offset.x();
+    transform.transform.translation.y = p.offset.y();
+    transform.transform.translation.z = p.offset.z();
+    transform.transform.rotation.x = p.rotation.x();
+    transform.transform.rotation.y = p.rotation.y();
+    transform.transform.rotation.z = p.rotation.z();
+    transform.transform.rotation.w = p.rotation.w();
+    static_broadcaster.sendTransform(transform);
   }
 
   void onFeedback(const geometry_msgs::WrenchStamped::ConstPtr& feedback)

@@ -10,6 +10,8 @@
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/devices/haptic_device.h"
 
+#include <mutex>
+
 namespace god_finger
 {
 struct FakeDeviceParams
@@ -40,6 +42,9 @@ class FakeDevice : public HapticDevice
     start_time_ = time;
     script_start_set_ = true;
   }
+  // From now on the hand holds the handle at `position` (m, device frame) instead of following
+  // the script: an interactive hand (an rviz marker dragged with the mouse). Thread-safe.
+  void setHandTarget(const Eigen::Vector3d& position);
   // The update() time at which the script's time is 0.
   double startTime() const
   {
@@ -55,5 +60,8 @@ class FakeDevice : public HapticDevice
   double start_time_ = 0.0;
   bool started_clock_ = false;
   bool script_start_set_ = false;
+  std::mutex target_mutex_;
+  bool has_target_ = false;
+  Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
 };
 }  // namespace god_finger

@@ -14,16 +14,12 @@ namespace god_finger
 class ReplayDevice : public HapticDevice
 {
  public:
-  explicit ReplayDevice(WaypointPath track) : track_(std::move(track))
-  {
-  }
+  explicit ReplayDevice(WaypointPath track) : track_(std::move(track)) {}
   std::string name() const override
   {
     return "replay";
   }
-  void start() override
-  {
-  }
+  void start() override {}
   // Plays the track's time 0 at `time` of update()'s clock; by default at the first update.
   void setStart(double time)
   {

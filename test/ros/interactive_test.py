@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""rostest: the interactive backend. Plays a user dragging the rviz marker (feedback messages,
+as rviz sends them): the device handle follows the marker in free space, and dragged down
+onto the ball the finger touches it: a contact area appears and the hand feels the force."""
+import math
+import sys
+import time
+import unittest
+
+import rospy
+import rostest
+from geometry_msgs.msg import WrenchStamped
+from god_finger.msg import ContactAreaArray, DeviceState
+from visualization_msgs.msg import InteractiveMarkerFeedback
+
+
+class Interactive(unittest.TestCase):
+    def setUp(self):
+        rospy.init_node("interactive_test")
+        self.state = None
+        self.force = 0.0
+        self.areas = 0
+        rospy.Subscriber("/finger/device/state", DeviceState, self.on_state, queue_size=10)
+        rospy.Subscriber("/finger/feedback", WrenchStamped, self.on_feedback, queue_size=10)
+        rospy.Subscriber("/contact_areas", ContactAreaArray, self.on_areas, queue_size=10)
+        self.drag = rospy.Publisher("/finger/device_marker/feedback", InteractiveMarkerFeedback, queue_size=10)
+
+    def on_state(self, message):
+        self.state = message.position
+
+    def on_feedback(self, message):
+        f = message.wrench.force
+        self.force = math.sqrt(f.x * f.x + f.y * f.y + f.z * f.z)
+
+    def on_areas(self, message):
+        self.areas = len(message.areas)
+
+    def drag_to(self, x, y, z, seconds):
+        """Drags in 20 mouse events over `seconds`, from where the handle is."""
+        start = self.state
+        for k in range(1, 21):
+            feedback = InteractiveMarkerFeedback()
+            feedback.header.frame_id = "finger_device"
+            feedback.client_id = "/rviz/InteractiveMarkers"
+            feedback.marker_name = "hand"
+            feedback.event_type = InteractiveMarkerFeedback.POSE_UPDATE
+            s = k / 20.0
+            feedback.pose.position.x = start.x + s * (x - start.x)
+            feedback.pose.position.y = start.y + s * (y - start.y)
+            feedback.pose.position.z = start.z + s * (z - start.z)
+            feedback.pose.orientation.w = 1.0
+            self.drag.publish(feedback)
+            time.sleep(seconds / 20.0)
+
+    def test_marker_moves_the_finger_onto_the_ball(self):
+        deadline = time.time() + 30.0
+        while self.state is None and time.time() < deadline:
+            time.sleep(0.05)
+        self.assertIsNotNone(self.state, "no device state")
+        time.sleep(1.0)  # the marker server's connections
+        # In free space, beside the ball: the handle goes where the marker is.
+        self.drag_to(0.08, 0.02, 0.12, 1.0)
+        time.sleep(1.0)
+        error = math.sqrt((self.state.x - 0.08) ** 2 + (self.state.y - 0.02) ** 2 + (self.state.z - 0.12) ** 2)
+        print("interactive: handle %.2f mm from the marker in free space" % (1e3 * error))
+        self.assertLess(error, 0.001)
+        self.assertLess(self.force, 0.05)
+        # Onto the top of the ball (r = 4 cm at z = 0.04): 5 mm into it.
+        self.drag_to(0.0, 0.0, 0.12, 1.0)
+        self.drag_to(0.0, 0.0, 0.075, 1.5)
+        time.sleep(1.0)
+        print("interactive: on the ball, force on the hand %.2f N, %d contact area(s), handle at z %.4f m"
+              % (self.force, self.areas, self.state.z))
+        self.assertGreater(self.force, 1.0)
+        self.assertEqual(self.areas, 1)
+        # The finger rests on the ball (god-object at 8.3 cm) while the hand is lower.
+        self.assertLess(self.state.z, 0.083)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("god_finger", "interactive", Interactive, sys.argv)
