@@ -7,16 +7,6 @@
 
 namespace god_finger
 {
-namespace
-{
-std::string outOfRange(const char* name, double value, const char* range, const char* unit)
-{
-  std::ostringstream message;
-  message << "parameter '" << name << "' = " << value << " is out of range " << range << " (" << unit << ")";
-  return message.str();
-}
-}  // namespace
-
 const char* walkVariantName(WalkVariant variant)
 {
   return variant == WalkVariant::kProject ? "project" : "unfold";

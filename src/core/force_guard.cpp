@@ -7,16 +7,6 @@
 
 namespace god_finger
 {
-namespace
-{
-std::string outOfRange(const char* name, double value, const char* range, const char* unit)
-{
-  std::ostringstream message;
-  message << "parameter '" << name << "' = " << value << " is out of range " << range << " (" << unit << ")";
-  return message.str();
-}
-}  // namespace
-
 std::string validate(const ForceGuardParams& params)
 {
   if (!(params.max_force > 0.0 && params.max_force <= 1e3))

@@ -6,16 +6,6 @@
 
 namespace god_finger
 {
-namespace
-{
-std::string outOfRange(const char* name, double value, const char* range, const char* unit)
-{
-  std::ostringstream message;
-  message << "parameter '" << name << "' = " << value << " is out of range " << range << " (" << unit << ")";
-  return message.str();
-}
-}  // namespace
-
 std::string validate(const WorldParams& params)
 {
   // Written as !(in range) so that NaN is out of range.

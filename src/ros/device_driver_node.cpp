@@ -76,6 +76,16 @@ WaypointPath readScript(const ros::NodeHandle& pnh)
   }
 }
 
+FakeDeviceParams readFakeDeviceParams(const ros::NodeHandle& pnh)
+{
+  FakeDeviceParams params;
+  params.handle_mass = readDouble(pnh, "handle_mass", params.handle_mass, 0.0, 100.0, "kg", true);
+  params.handle_damping = readDouble(pnh, "handle_damping", params.handle_damping, 0.0, 1e4, "N s/m");
+  params.grip_stiffness = readDouble(pnh, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
+  params.grip_damping = readDouble(pnh, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
+  return params;
+}
+
 // Script time 0 of the launch's fake and replay devices, on the driver's clock (s): the
 // launch's /god_finger_script_epoch (wall clock) plus ~script_delay; NaN without an epoch.
 double sharedScriptStart(const ros::NodeHandle& pnh, double seconds_since_start)
@@ -100,11 +110,7 @@ std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::
 {
   if (backend == "fake")
   {
-    FakeDeviceParams params;
-    params.handle_mass = readDouble(pnh, "handle_mass", params.handle_mass, 0.0, 100.0, "kg", true);
-    params.handle_damping = readDouble(pnh, "handle_damping", params.handle_damping, 0.0, 1e4, "N s/m");
-    params.grip_stiffness = readDouble(pnh, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
-    params.grip_damping = readDouble(pnh, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
+    const FakeDeviceParams params = readFakeDeviceParams(pnh);
     auto device = std::make_unique<FakeDevice>(params, readScript(pnh));
     // Fake devices of one launch follow their scripts in step.
     const double start = sharedScriptStart(pnh, seconds_since_start);
@@ -145,11 +151,7 @@ std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::
   if (backend == "interactive")
   {
     // A simulated handle whose hand is an rviz marker (DeviceDriverNode adds the marker).
-    FakeDeviceParams params;
-    params.handle_mass = readDouble(pnh, "handle_mass", params.handle_mass, 0.0, 100.0, "kg", true);
-    params.handle_damping = readDouble(pnh, "handle_damping", params.handle_damping, 0.0, 1e4, "N s/m");
-    params.grip_stiffness = readDouble(pnh, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
-    params.grip_damping = readDouble(pnh, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
+    const FakeDeviceParams params = readFakeDeviceParams(pnh);
     const Eigen::Vector3d start = readVector(pnh, "start", Eigen::Vector3d(0.0, 0.0, 0.12));
     return std::make_unique<FakeDevice>(params, WaypointPath({{0.0, start}}));
   }

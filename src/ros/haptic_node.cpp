@@ -4,6 +4,7 @@
 #include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/workspace_mapping.h"
+#include "god_finger/ros/conversions.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 
@@ -24,10 +25,6 @@ namespace god_finger
 {
 namespace
 {
-Eigen::Vector3d fromMessage(const geometry_msgs::Vector3& v)
-{
-  return Eigen::Vector3d(v.x, v.y, v.z);
-}
 }  // namespace
 
 struct HapticNode::Impl
@@ -79,8 +76,8 @@ struct HapticNode::Impl
 
   void onState(const god_finger::DeviceState::ConstPtr& state)
   {
-    const Eigen::Vector3d position = fromMessage(state->position);
-    const Eigen::Vector3d velocity = fromMessage(state->velocity);
+    const Eigen::Vector3d position = fromVector(state->position);
+    const Eigen::Vector3d velocity = fromVector(state->velocity);
     if (!position.allFinite() || !velocity.allFinite())
     {
       std::lock_guard<std::mutex> lock(mutex);
@@ -163,7 +160,7 @@ struct HapticNode::Impl
     {
       return;
     }
-    const Eigen::Vector3d force = fromMessage(feedback->wrench.force);
+    const Eigen::Vector3d force = fromVector(feedback->wrench.force);
     if (!force.allFinite())
     {
       std::lock_guard<std::mutex> lock(mutex);

@@ -1,20 +1,11 @@
 #include "god_finger/ros/markers.h"
 
-#include <geometry_msgs/Point.h>
+#include "god_finger/ros/conversions.h"
 
 namespace god_finger
 {
 namespace
 {
-geometry_msgs::Point point(const Eigen::Vector3d& p)
-{
-  geometry_msgs::Point result;
-  result.x = p.x();
-  result.y = p.y();
-  result.z = p.z();
-  return result;
-}
-
 visualization_msgs::Marker marker(const std::string& ns, int id, int type, const ros::Time& stamp)
 {
   visualization_msgs::Marker m;
@@ -41,7 +32,7 @@ void setColor(visualization_msgs::Marker* m, float r, float g, float b, float a 
 void setPose(visualization_msgs::Marker* m, const Eigen::Isometry3d& pose)
 {
   const Eigen::Quaterniond q(pose.linear());
-  m->pose.position = point(pose.translation());
+  m->pose.position = toPoint(pose.translation());
   m->pose.orientation.x = q.x();
   m->pose.orientation.y = q.y();
   m->pose.orientation.z = q.z();
@@ -115,23 +106,23 @@ void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stam
   {
     const InterfaceState& state = world.interfaceState(i);
     visualization_msgs::Marker proxy = marker("god_objects", i, visualization_msgs::Marker::SPHERE, stamp);
-    proxy.pose.position = point(state.proxy_position);
+    proxy.pose.position = toPoint(state.proxy_position);
     proxy.scale.x = proxy.scale.y = proxy.scale.z = 2.0 * proxy_radius;
     setColor(&proxy, 0.1f, 0.3f, 1.0f);
     markers->markers.push_back(proxy);
 
     visualization_msgs::Marker device = marker("interfaces", i, visualization_msgs::Marker::SPHERE, stamp);
-    device.pose.position = point(state.interface_position);
+    device.pose.position = toPoint(state.interface_position);
     device.scale.x = device.scale.y = device.scale.z = proxy_radius;
     setColor(&device, 0.2f, 0.9f, 0.2f, 0.8f);
     markers->markers.push_back(device);
 
-    springs.points.push_back(point(state.interface_position));
-    springs.points.push_back(point(state.proxy_position));
+    springs.points.push_back(toPoint(state.interface_position));
+    springs.points.push_back(toPoint(state.proxy_position));
 
     visualization_msgs::Marker force = marker("forces", i, visualization_msgs::Marker::ARROW, stamp);
-    force.points.push_back(point(state.proxy_position));
-    force.points.push_back(point(state.proxy_position + 0.01 * state.user_force));
+    force.points.push_back(toPoint(state.proxy_position));
+    force.points.push_back(toPoint(state.proxy_position + 0.01 * state.user_force));
     force.scale.x = 0.001;
     force.scale.y = 0.002;
     force.scale.z = 0.003;
@@ -148,9 +139,9 @@ void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stam
       const int n = area.sub_god_object_count;
       for (int k = 0; n >= 2 && k < n; ++k)
       {
-        polygon.points.push_back(point(area.point + lift));
-        polygon.points.push_back(point(area.positions[k] + lift));
-        polygon.points.push_back(point(area.positions[(k + 1) % n] + lift));
+        polygon.points.push_back(toPoint(area.point + lift));
+        polygon.points.push_back(toPoint(area.positions[k] + lift));
+        polygon.points.push_back(toPoint(area.positions[(k + 1) % n] + lift));
       }
       if (!polygon.points.empty())
       {
@@ -162,7 +153,7 @@ void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stam
       setColor(&sgos, 1.0f, 0.5f, 0.0f);
       for (int k = 0; k < n; ++k)
       {
-        sgos.points.push_back(point(area.positions[k] + lift));
+        sgos.points.push_back(toPoint(area.positions[k] + lift));
       }
       if (!sgos.points.empty())
       {

@@ -6,6 +6,7 @@
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/physics/urdf_scene.h"
+#include "god_finger/ros/conversions.h"
 #include "god_finger/ros/markers.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
@@ -64,23 +65,6 @@ WorldParams readWorldParams(const ros::NodeHandle& pnh)
   return params;
 }
 
-geometry_msgs::Point toPoint(const Eigen::Vector3d& p)
-{
-  geometry_msgs::Point result;
-  result.x = p.x();
-  result.y = p.y();
-  result.z = p.z();
-  return result;
-}
-
-geometry_msgs::Vector3 toVector(const Eigen::Vector3d& v)
-{
-  geometry_msgs::Vector3 result;
-  result.x = v.x();
-  result.y = v.y();
-  result.z = v.z();
-  return result;
-}
 }  // namespace
 
 struct PhysicsNode::Impl

@@ -13,4 +13,8 @@ class InputError : public std::runtime_error
  public:
   explicit InputError(const std::string& message) : std::runtime_error(message) {}
 };
+
+// The one-line message of a parameter out of its range:
+// "parameter 'NAME' = VALUE is out of range RANGE (UNIT)".
+std::string outOfRange(const char* name, double value, const char* range, const char* unit);
 }  // namespace god_finger

@@ -1,0 +1,33 @@
+// Eigen vectors to geometry_msgs (SI units, frames unchanged).
+#pragma once
+
+#include <geometry_msgs/Point.h>
+#include <geometry_msgs/Vector3.h>
+
+#include <Eigen/Core>
+
+namespace god_finger
+{
+inline geometry_msgs::Point toPoint(const Eigen::Vector3d& p)
+{
+  geometry_msgs::Point result;
+  result.x = p.x();
+  result.y = p.y();
+  result.z = p.z();
+  return result;
+}
+
+inline geometry_msgs::Vector3 toVector(const Eigen::Vector3d& v)
+{
+  geometry_msgs::Vector3 result;
+  result.x = v.x();
+  result.y = v.y();
+  result.z = v.z();
+  return result;
+}
+
+inline Eigen::Vector3d fromVector(const geometry_msgs::Vector3& v)
+{
+  return Eigen::Vector3d(v.x, v.y, v.z);
+}
+}  // namespace god_finger
