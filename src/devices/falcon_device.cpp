@@ -1,0 +1,100 @@
+#include "god_finger/devices/falcon_device.h"
+
+#include <cmath>
+
+namespace god_finger
+{
+FalconDevice::FalconDevice(std::unique_ptr<FalconIo> io, const FalconParams& params, std::function<double()> now,
+                           std::function<void()> wait)
+    : io_(std::move(io)), params_(params), now_(std::move(now)), wait_(std::move(wait))
+{
+}
+
+Eigen::Vector3d FalconDevice::falconToDevice(const std::array<double, 3>& falcon, double center_z)
+{
+  return Eigen::Vector3d(-(falcon[2] - center_z), -falcon[0], falcon[1]);
+}
+
+std::array<double, 3> FalconDevice::deviceToFalcon(const Eigen::Vector3d& force)
+{
+  return {-force.y(), force.z(), -force.x()};
+}
+
+void FalconDevice::start()
+{
+  const int count = io_->deviceCount();
+  if (count <= params_.index)
+  {
+    throw DeviceError("falcon: " + std::to_string(count) + " Falcon(s) found, asked for number " +
+                      std::to_string(params_.index) +
+                      ": check the USB cable and the power supply, and the udev rule (README, Devices)");
+  }
+  if (!io_->open(params_.index))
+  {
+    throw DeviceError("falcon: cannot open Falcon " + std::to_string(params_.index) + " (" + io_->lastError() +
+                      "): is another program using it? does the udev rule give you access?");
+  }
+  firmware_attempts_ = 0;
+  while (!io_->isFirmwareLoaded())
+  {
+    if (firmware_attempts_ >= params_.firmware_attempts)
+    {
+      throw DeviceError("falcon: firmware not loaded after " + std::to_string(firmware_attempts_) + " attempts (" +
+                        io_->lastError() + "): unplug the USB cable and the power, plug them back, try again");
+    }
+    ++firmware_attempts_;
+    io_->loadFirmware();
+  }
+  io_->setHomingMode(true);
+  const double deadline = now_() + params_.homing_timeout;
+  while (true)
+  {
+    io_->runIoLoop();
+    if (io_->isHomed())
+    {
+      break;
+    }
+    if (now_() > deadline)
+    {
+      throw DeviceError("falcon: not homed within " + std::to_string(static_cast<int>(params_.homing_timeout)) +
+                        " s: pull the grip all the way out, then push it all the way in (the LED turns green)");
+    }
+    wait_();
+  }
+  io_->setHomingMode(false);
+}
+
+DeviceReading FalconDevice::update(double time, const Eigen::Vector3d& force)
+{
+  Eigen::Vector3d command = force.allFinite() ? force : Eigen::Vector3d::Zero();
+  const double magnitude = command.norm();
+  if (magnitude > params_.max_force)
+  {
+    command *= params_.max_force / magnitude;
+  }
+  io_->setForce(deviceToFalcon(command));
+  if (!io_->runIoLoop())
+  {
+    if (++io_failures_ > params_.io_failures_allowed)
+    {
+      throw DeviceError("falcon: USB communication lost (" + std::to_string(io_failures_) +
+                        " failed cycles in a row; " + io_->lastError() + ")");
+    }
+  }
+  else
+  {
+    io_failures_ = 0;
+  }
+  DeviceReading reading;
+  reading.position = falconToDevice(io_->position(), params_.center_z);
+  if (have_last_ && time > last_time_)
+  {
+    reading.velocity = (reading.position - last_position_) / (time - last_time_);
+  }
+  have_last_ = true;
+  last_time_ = time;
+  last_position_ = reading.position;
+  reading.buttons = io_->buttons();
+  return reading;
+}
+}  // namespace god_finger
