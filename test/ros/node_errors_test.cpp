@@ -2,44 +2,25 @@
 // a missing, malformed or incomplete URDF, an unavailable device backend. Runs the node
 // binaries as a user would (rosrun-style, private parameters on the command line; lists set in
 // node_errors.test) against rostest's master.
+#include "tool_run.h"
+
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <cstdio>
 #include <string>
 
+namespace god_finger
+{
 namespace
 {
-struct Run
-{
-  int exit_code = -1;
-  std::string output;
-};
-
-Run run(const std::string& command)
-{
-  Run result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  char buffer[4096];
-  std::size_t n = 0;
-  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0)
-  {
-    result.output.append(buffer, n);
-  }
-  const int status = pclose(pipe);
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
 const std::string kData = std::string(GOD_FINGER_SOURCE_DIR) + "/test/data";
 const std::string kScene = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/table_sphere.urdf";
 
 void expectFails(const std::string& binary, const std::string& arguments, const std::string& message)
 {
   SCOPED_TRACE(arguments);
-  const Run result = run("timeout 20 " + binary + " " + arguments);
-  EXPECT_EQ(result.exit_code, 1) << result.output;
-  EXPECT_NE(result.output.find(message), std::string::npos) << result.output;
+  const test::ToolRun result = test::runTool("timeout 20 " + binary, arguments);
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_NE(result.err.find(message), std::string::npos) << result.err;
 }
 
 TEST(NodeErrors, PhysicsNode)
@@ -86,3 +67,4 @@ TEST(NodeErrors, DeviceDriverNode)
               "bag '/nonexistent/session.bag': cannot be read");
 }
 }  // namespace
+}  // namespace god_finger
