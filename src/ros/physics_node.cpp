@@ -1,6 +1,7 @@
 #include "god_finger/ros/physics_node.h"
 
 #include "god_finger/ContactAreaArray.h"
+#include "god_finger/GodFingerConfig.h"
 #include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
@@ -12,6 +13,7 @@
 #include "god_finger/ros/queues.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TransformStamped.h>
@@ -98,6 +100,10 @@ struct PhysicsNode::Impl
   std::atomic<bool> running{true};
   long rejected_poses = 0;
   long overruns = 0;
+  boost::recursive_mutex reconfigure_mutex;
+  std::unique_ptr<dynamic_reconfigure::Server<god_finger::GodFingerConfig>> reconfigure;
+  god_finger::GodFingerConfig last_good_config;
+  bool have_good_config = false;
   std::vector<double> step_us;
 
   void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
@@ -123,6 +129,38 @@ struct PhysicsNode::Impl
     response.success = true;
     response.message = "scene reset";
     return true;
+  }
+
+  // dynamic_reconfigure: the method's parameters and the model, applied together if valid;
+  // otherwise the previous ones stay (and the tool shows them again).
+  void onReconfigure(god_finger::GodFingerConfig& config, std::uint32_t)
+  {
+    ContactModel model;
+    std::lock_guard<std::mutex> lock(mutex);
+    ContactParams contact = world->params().contact;
+    contact.max_radius = config.r_max;
+    contact.distance_constant = config.d0;
+    contact.alpha = config.alpha;
+    contact.sub_god_objects = config.n_sgo;
+    contact.max_angle = config.tau_a;
+    contact.friction = config.friction;
+    const bool walk_ok = parseWalkVariant(config.walk, &contact.walk);
+    const bool model_ok = parseContactModel(config.model, &model);
+    const std::string error = validate(contact);
+    if (!walk_ok || !model_ok || !error.empty())
+    {
+      ROS_WARN("physics: reconfiguration refused (%s); the previous parameters stay",
+               !error.empty() ? error.c_str() : "unknown model or walk");
+      if (have_good_config)
+      {
+        config = last_good_config;
+      }
+      return;
+    }
+    world->setContactParams(contact);
+    world->setContactModel(model);
+    last_good_config = config;
+    have_good_config = true;
   }
 
   bool onSetModel(god_finger::SetContactModel::Request& request, god_finger::SetContactModel::Response& response)
@@ -349,6 +387,22 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);
   impl.model_service = nh.advertiseService("set_contact_model", &Impl::onSetModel, &impl);
+  // Starts from the parameters read above (the same private names), so it changes nothing
+  // until someone reconfigures.
+  impl.reconfigure =
+      std::make_unique<dynamic_reconfigure::Server<god_finger::GodFingerConfig>>(impl.reconfigure_mutex, pnh);
+  god_finger::GodFingerConfig initial;
+  initial.model = contactModelName(params.model);
+  initial.r_max = params.contact.max_radius;
+  initial.d0 = params.contact.distance_constant;
+  initial.alpha = params.contact.alpha;
+  initial.n_sgo = params.contact.sub_god_objects;
+  initial.tau_a = params.contact.max_angle;
+  initial.friction = params.contact.friction;
+  initial.walk = walkVariantName(params.contact.walk);
+  impl.reconfigure->updateConfig(initial);
+  impl.reconfigure->setCallback([this](god_finger::GodFingerConfig& config, std::uint32_t level)
+                                { impl_->onReconfigure(config, level); });
   ROS_INFO("physics: scene '%s' (%d bodies), %zu interface(s), %.0f Hz, model %s", scene_path.c_str(),
            impl.world->bodyCount(), names.size(), 1.0 / params.time_step, contactModelName(params.model));
   impl.thread = std::thread([this]() { impl_->loop(); });
