@@ -231,12 +231,13 @@ TEST_F(Safety, DriverRampsToZeroWhenThePhysicsDiesAndResumesAfterItsRespawn)
     g_watch_zero = false;
   }
   // The driver holds the last command for command_timeout (20 ms), then ramps to zero within
-  // ramp_time (10 ms): 30 ms from the last command to zero, measured on the driver's stamps.
-  // ForceGuard's unit test checks the exact times; here the samples are the driver's 1 kHz
-  // ticks, which a loaded 2-core machine delays by a few ms (seen: up to 4 ms while rosnode
-  // starts), so zero shows at the first tick at or after 30 ms. The test's own clock is not
-  // used: its feedback can arrive late (seen: 0.5 s) while the physics dies.
-  EXPECT_GE(hold + ramp, 0.0275);
+  // ramp_time (10 ms): 30 ms from the last command to zero. ForceGuard's unit test checks the
+  // exact times; here both ends are sampled by the driver's 1 kHz ticks as stamped when each
+  // state is published: the held force shows from the first tick after the command arrived,
+  // the zero at the first tick at or after 30 ms, and a loaded 2-core machine delays ticks by a
+  // few ms (seen: 27.2 to 32.7 ms), hence +-5 ms. The test's own clock is not used: its
+  // feedback can arrive late (seen: 0.5 s) while the physics dies.
+  EXPECT_GE(hold + ramp, 0.025);
   EXPECT_LE(hold + ramp, 0.035);
   EXPECT_GE(ramp, 0.008);
   EXPECT_LE(ramp, 0.015);
