@@ -1,12 +1,14 @@
 #include "god_finger/devices/falcon_device.h"
 
-#include <cmath>
-
 namespace god_finger
 {
 FalconDevice::FalconDevice(std::unique_ptr<FalconIo> io, const FalconParams& params, std::function<double()> now,
                            std::function<void()> wait)
-    : io_(std::move(io)), params_(params), now_(std::move(now)), wait_(std::move(wait))
+    : io_(std::move(io)),
+      params_(params),
+      now_(std::move(now)),
+      wait_(std::move(wait)),
+      io_failures_(params.io_failures_allowed)
 {
 }
 
@@ -66,34 +68,15 @@ void FalconDevice::start()
 
 DeviceReading FalconDevice::update(double time, const Eigen::Vector3d& force)
 {
-  Eigen::Vector3d command = force.allFinite() ? force : Eigen::Vector3d::Zero();
-  const double magnitude = command.norm();
-  if (magnitude > params_.max_force)
+  io_->setForce(deviceToFalcon(motorCommand(force, params_.max_force)));
+  if (io_failures_.record(io_->runIoLoop()))
   {
-    command *= params_.max_force / magnitude;
-  }
-  io_->setForce(deviceToFalcon(command));
-  if (!io_->runIoLoop())
-  {
-    if (++io_failures_ > params_.io_failures_allowed)
-    {
-      throw DeviceError("falcon: USB communication lost (" + std::to_string(io_failures_) +
-                        " failed cycles in a row; " + io_->lastError() + ")");
-    }
-  }
-  else
-  {
-    io_failures_ = 0;
+    throw DeviceError("falcon: USB communication lost (" + std::to_string(io_failures_.consecutive()) +
+                      " failed cycles in a row; " + io_->lastError() + ")");
   }
   DeviceReading reading;
   reading.position = falconToDevice(io_->position(), params_.center_z);
-  if (have_last_ && time > last_time_)
-  {
-    reading.velocity = (reading.position - last_position_) / (time - last_time_);
-  }
-  have_last_ = true;
-  last_time_ = time;
-  last_position_ = reading.position;
+  reading.velocity = velocity_.update(time, reading.position);
   reading.buttons = io_->buttons();
   return reading;
 }

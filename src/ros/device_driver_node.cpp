@@ -5,7 +5,10 @@
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/fake_device.h"
+#include "god_finger/devices/falcon_device.h"
+#include "god_finger/devices/omni_device.h"
 #include "god_finger/devices/replay_device.h"
+#include "god_finger/devices/vendor_io.h"
 #include "god_finger/ros/bag_track.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
@@ -16,6 +19,7 @@
 #include <interactive_markers/interactive_marker_server.h>
 #include <ros/ros.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -105,8 +109,22 @@ double sharedScriptStart(const ros::NodeHandle& pnh, double seconds_since_start)
   return NAN;
 }
 
+#if defined(GOD_FINGER_HAVE_NIFALCON) || defined(GOD_FINGER_HAVE_OPENHAPTICS)
+// Clock and wait for the hardware backends' start-up (homing, calibration), which waits for the user.
+double steadySeconds()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void waitForUser()
+{
+  std::this_thread::sleep_for(std::chrono::milliseconds(10));
+}
+#endif
+
+// `max_force` (N) is the profile's limit; hardware backends clamp to it as well as the guard.
 std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::NodeHandle& nh,
-                                         const ros::NodeHandle& pnh, double seconds_since_start)
+                                         const ros::NodeHandle& pnh, double seconds_since_start, double max_force)
 {
   if (backend == "fake")
   {
@@ -122,15 +140,40 @@ std::unique_ptr<HapticDevice> makeDevice(const std::string& backend, const ros::
   }
   if (backend == "falcon")
   {
+    FalconParams params;
+    params.index = readInt(pnh, "index", params.index, 0, 15);
+    params.firmware_attempts = readInt(pnh, "firmware_attempts", params.firmware_attempts, 1, 100);
+    params.homing_timeout = readDouble(pnh, "homing_timeout", params.homing_timeout, 0.0, 600.0, "s", true);
+    params.max_force = std::min(max_force, params.max_force);
+    params.center_z = readDouble(pnh, "center_z", params.center_z, 0.0, 0.3, "m");
+#ifdef GOD_FINGER_HAVE_NIFALCON
+    return std::make_unique<FalconDevice>(makeNifalconIo(), params, steadySeconds, waitForUser);
+#else
     throw DeviceError(
         "backend 'falcon' needs libnifalcon, which this build did not find: build and install libnifalcon "
-        "(https://github.com/libnifalcon/libnifalcon), then rebuild god_finger");
+        "(https://github.com/libnifalcon/libnifalcon), then rebuild god_finger (README, Devices)");
+#endif
   }
   if (backend == "omni")
   {
+    OmniParams params;
+    params.device_name = readString(pnh, "device_name", params.device_name);
+    params.calibration_timeout =
+        readDouble(pnh, "calibration_timeout", params.calibration_timeout, 0.0, 600.0, "s", true);
+    params.max_force = max_force;
+    const Eigen::VectorXd center = readVector(pnh, "center_mm", Eigen::Vector3d::Zero());
+    if (center.size() != 3)
+    {
+      throw InputError("parameter '" + pnh.resolveName("center_mm") + "' must be [x, y, z] (mm, Omni frame)");
+    }
+    params.center_mm = {center[0], center[1], center[2]};
+#ifdef GOD_FINGER_HAVE_OPENHAPTICS
+    return std::make_unique<OmniDevice>(makeOpenHapticsIo(), params, steadySeconds, waitForUser);
+#else
     throw DeviceError(
         "backend 'omni' needs the OpenHaptics HD API, which this build did not find: install 3D Systems' "
-        "OpenHaptics (and the Touch / Phantom device driver), then rebuild god_finger");
+        "OpenHaptics (and the Touch / Phantom device driver), then rebuild god_finger (README, Devices)");
+#endif
   }
   if (backend == "replay")
   {
@@ -368,7 +411,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.guard = std::make_unique<ForceGuard>(guard);
   const std::string backend = readString(pnh, "backend", "fake");
   impl.frame = readString(pnh, "frame", "device");
-  impl.device = makeDevice(backend, nh, pnh, impl.now());
+  impl.device = makeDevice(backend, nh, pnh, impl.now(), guard.max_force);
   impl.device->start();
   if (backend == "interactive")
   {

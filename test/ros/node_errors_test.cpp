@@ -65,6 +65,10 @@ TEST(NodeErrors, DeviceDriverNode)
   expectFails(node, "__name:=d7 _backend:=replay", "parameter '/d7/bag' is required by backend 'replay'");
   expectFails(node, "__name:=d8 _backend:=replay _bag:=/nonexistent/session.bag",
               "bag '/nonexistent/session.bag': cannot be read");
+  // Hardware backends check their parameters before looking for the vendor library.
+  expectFails(node, "__name:=d9 _backend:=falcon _index:=20", "parameter '/d9/index' = 20 is out of range [0, 15]");
+  expectFails(node, "__name:=d10 _backend:=omni _calibration_timeout:=0",
+              "parameter '/d10/calibration_timeout' = 0 is out of range (0, 600] (s)");
 }
 }  // namespace
 }  // namespace god_finger

@@ -12,6 +12,7 @@
 // as zero.
 #pragma once
 
+#include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
 
 #include <array>
@@ -80,9 +81,7 @@ class FalconDevice : public HapticDevice
   std::function<double()> now_;
   std::function<void()> wait_;
   int firmware_attempts_ = 0;
-  int io_failures_ = 0;
-  bool have_last_ = false;
-  double last_time_ = 0.0;
-  Eigen::Vector3d last_position_ = Eigen::Vector3d::Zero();
+  IoFailureCounter io_failures_;
+  VelocityEstimator velocity_;
 };
 }  // namespace god_finger

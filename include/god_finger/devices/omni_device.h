@@ -1,0 +1,101 @@
+// Phantom Omni / Geomagic Touch backend. Everything that is not an OpenHaptics HD API call
+// lives here, behind OmniIo (the seam): frames and units, calibration, force clamping, I/O
+// failure handling. The HD API calls go in one source file implementing OmniIo
+// (src/devices/vendor/omni_io_openhaptics.cpp), built only when CMake finds OpenHaptics.
+//
+// Frames: the HD API reports the stylus tip in millimetres in the Omni's frame, x to the
+// user's right, y up, z towards the user. The device frame (haptic_device.h) is REP-103 as
+// the user sees it: x away from the user, y to the left, z up, in metres, origin at
+// `center_mm` of the Omni frame. So
+//   device = (-(z - c_z), -(x - c_x), y - c_y) / 1000,   omni force = (-f_y, f_z, -f_x).
+// Invariants: the force sent to the motors never exceeds min(max_force, the device's nominal
+// maximum); non-finite forces are sent as zero.
+#pragma once
+
+#include "god_finger/devices/device_signals.h"
+#include "god_finger/devices/haptic_device.h"
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace god_finger
+{
+enum class OmniCalibration
+{
+  ok,
+  needs_update,        // the HD API can update it by itself (HD_CALIBRATION_NEEDS_UPDATE)
+  needs_manual_input,  // the user must put the stylus in the inkwell (HD_CALIBRATION_NEEDS_MANUAL_INPUT)
+};
+
+struct OmniFrame
+{
+  std::array<double, 3> position_mm{0.0, 0.0, 0.0};  // mm, Omni frame
+  unsigned buttons = 0;                              // bit i: stylus button i
+};
+
+// The HD API calls god_finger needs, one method each.
+class OmniIo
+{
+ public:
+  virtual ~OmniIo() = default;
+  // hdInitDevice; empty name = the default device. False with a reason in lastError().
+  virtual bool open(const std::string& device_name) = 0;
+  virtual OmniCalibration calibration() = 0;  // hdCheckCalibration
+  virtual bool updateCalibration() = 0;       // hdUpdateCalibration with the device's style
+  // hdEnable(HD_FORCE_OUTPUT) and hdStartScheduler. False with a reason in lastError().
+  virtual bool startServo() = 0;
+  // One servo frame (hdBeginFrame ... hdEndFrame): applies `force` (N, Omni frame), reads the
+  // stylus. False on a device fault.
+  virtual bool exchange(const std::array<double, 3>& force, OmniFrame* frame) = 0;
+  virtual double nominalMaxForce() = 0;  // N, HD_NOMINAL_MAX_FORCE
+  virtual std::string lastError() = 0;   // hdGetErrorString of the last error
+};
+
+struct OmniParams
+{
+  std::string device_name;                         // "" = OpenHaptics' default device
+  double max_force = 3.3;                          // N, range (0, 10]: the profile's limit
+  double calibration_timeout = 30.0;               // s, range (0, 600]: time to put the stylus in the inkwell
+  std::array<double, 3> center_mm{0.0, 0.0, 0.0};  // mm, Omni frame: the workspace centre
+  int io_failures_allowed = 50;                    // consecutive failed servo frames before giving up
+};
+
+class OmniDevice : public HapticDevice
+{
+ public:
+  // `now` gives seconds (monotonic), `wait` sleeps a little; injected so that tests run
+  // calibration without a clock.
+  OmniDevice(std::unique_ptr<OmniIo> io, const OmniParams& params, std::function<double()> now,
+             std::function<void()> wait);
+  std::string name() const override
+  {
+    return "omni";
+  }
+  // Opens, calibrates (by itself, or waiting for the inkwell), starts the servo loop. Throws
+  // DeviceError saying what to do.
+  void start() override;
+  DeviceReading update(double time, const Eigen::Vector3d& force) override;
+
+  static Eigen::Vector3d omniToDevice(const std::array<double, 3>& omni_mm, const std::array<double, 3>& center_mm);
+  static std::array<double, 3> deviceToOmni(const Eigen::Vector3d& force);
+  // The force limit in use after start(): min(max_force, nominal maximum if the device reports one).
+  double forceLimit() const
+  {
+    return force_limit_;
+  }
+
+ private:
+  void calibrate();
+
+  std::unique_ptr<OmniIo> io_;
+  OmniParams params_;
+  std::function<double()> now_;
+  std::function<void()> wait_;
+  double force_limit_;
+  IoFailureCounter io_failures_;
+  VelocityEstimator velocity_;
+  OmniFrame last_frame_;
+};
+}  // namespace god_finger

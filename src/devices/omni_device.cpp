@@ -1,0 +1,95 @@
+#include "god_finger/devices/omni_device.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace god_finger
+{
+OmniDevice::OmniDevice(std::unique_ptr<OmniIo> io, const OmniParams& params, std::function<double()> now,
+                       std::function<void()> wait)
+    : io_(std::move(io)),
+      params_(params),
+      now_(std::move(now)),
+      wait_(std::move(wait)),
+      force_limit_(params.max_force),
+      io_failures_(params.io_failures_allowed)
+{
+}
+
+Eigen::Vector3d OmniDevice::omniToDevice(const std::array<double, 3>& omni_mm, const std::array<double, 3>& center_mm)
+{
+  return Eigen::Vector3d(-(omni_mm[2] - center_mm[2]), -(omni_mm[0] - center_mm[0]), omni_mm[1] - center_mm[1]) * 1e-3;
+}
+
+std::array<double, 3> OmniDevice::deviceToOmni(const Eigen::Vector3d& force)
+{
+  return {-force.y(), force.z(), -force.x()};
+}
+
+void OmniDevice::start()
+{
+  const std::string shown_name = params_.device_name.empty() ? "the default device" : "'" + params_.device_name + "'";
+  if (!io_->open(params_.device_name))
+  {
+    throw DeviceError("omni: cannot open " + shown_name + " (" + io_->lastError() +
+                      "): is the Touch / Phantom driver installed, the device configured with Touch_Setup, "
+                      "and no other program using it?");
+  }
+  calibrate();
+  const double nominal = io_->nominalMaxForce();
+  force_limit_ = std::isfinite(nominal) && nominal > 0.0 ? std::min(params_.max_force, nominal) : params_.max_force;
+  if (!io_->startServo())
+  {
+    throw DeviceError("omni: cannot start the servo loop (" + io_->lastError() +
+                      "): check that the device's motors are powered");
+  }
+}
+
+void OmniDevice::calibrate()
+{
+  const double deadline = now_() + params_.calibration_timeout;
+  while (true)
+  {
+    const OmniCalibration state = io_->calibration();
+    if (state == OmniCalibration::ok)
+    {
+      return;
+    }
+    if (state == OmniCalibration::needs_update)
+    {
+      if (!io_->updateCalibration())
+      {
+        throw DeviceError("omni: calibration update failed (" + io_->lastError() +
+                          "): run Touch_Diagnostic to calibrate it by hand");
+      }
+      continue;
+    }
+    if (now_() > deadline)
+    {
+      throw DeviceError("omni: not calibrated within " + std::to_string(static_cast<int>(params_.calibration_timeout)) +
+                        " s: put the stylus in the inkwell (or, on an old Omni, push the arm to its reset "
+                        "position) and start again");
+    }
+    wait_();
+  }
+}
+
+DeviceReading OmniDevice::update(double time, const Eigen::Vector3d& force)
+{
+  OmniFrame frame;
+  if (io_failures_.record(io_->exchange(deviceToOmni(motorCommand(force, force_limit_)), &frame)))
+  {
+    throw DeviceError("omni: device fault (" + std::to_string(io_failures_.consecutive()) +
+                      " failed servo frames in a row; " + io_->lastError() + ")");
+  }
+  if (io_failures_.consecutive() == 0)
+  {
+    last_frame_ = frame;
+  }
+  DeviceReading reading;
+  reading.position = omniToDevice(last_frame_.position_mm, params_.center_mm);
+  reading.velocity = velocity_.update(time, reading.position);
+  reading.buttons = last_frame_.buttons;
+  return reading;
+}
+}  // namespace god_finger

@@ -1,0 +1,149 @@
+// OmniIo on the OpenHaptics HD API. The only file that includes an HD header; built when
+// CMake finds OpenHaptics. Every device access runs inside the HD scheduler's servo thread
+// (hdScheduleSynchronous), as the HD API requires for hdBeginFrame/hdEndFrame.
+#include "god_finger/devices/vendor_io.h"
+
+#include <HD/hd.h>
+
+namespace god_finger
+{
+namespace
+{
+struct ServoExchange
+{
+  HHD device;
+  HDdouble force[3];
+  HDdouble position[3];
+  HDint buttons;
+  HDErrorInfo error;
+};
+
+HDCallbackCode HDCALLBACK servoFrame(void* data)
+{
+  auto* exchange = static_cast<ServoExchange*>(data);
+  hdBeginFrame(exchange->device);
+  hdGetDoublev(HD_CURRENT_POSITION, exchange->position);
+  hdGetIntegerv(HD_CURRENT_BUTTONS, &exchange->buttons);
+  hdSetDoublev(HD_CURRENT_FORCE, exchange->force);
+  hdEndFrame(exchange->device);
+  exchange->error = hdGetError();
+  return HD_CALLBACK_DONE;
+}
+
+struct CalibrationCheck
+{
+  HHD device;
+  HDenum status;
+};
+
+HDCallbackCode HDCALLBACK checkCalibration(void* data)
+{
+  auto* check = static_cast<CalibrationCheck*>(data);
+  hdBeginFrame(check->device);
+  check->status = hdCheckCalibration();
+  hdEndFrame(check->device);
+  return HD_CALLBACK_DONE;
+}
+
+class OpenHapticsIo : public OmniIo
+{
+ public:
+  ~OpenHapticsIo() override
+  {
+    if (scheduler_running_)
+    {
+      hdStopScheduler();
+    }
+    if (device_ != HD_INVALID_HANDLE)
+    {
+      hdDisableDevice(device_);
+    }
+  }
+  bool open(const std::string& device_name) override
+  {
+    device_ = hdInitDevice(device_name.empty() ? HD_DEFAULT_DEVICE : device_name.c_str());
+    if (failed(hdGetError()))
+    {
+      device_ = HD_INVALID_HANDLE;
+      return false;
+    }
+    // Calibration checks need the scheduler; forces stay off until startServo().
+    hdStartScheduler();
+    scheduler_running_ = !failed(hdGetError());
+    return scheduler_running_;
+  }
+  OmniCalibration calibration() override
+  {
+    CalibrationCheck check{device_, HD_CALIBRATION_OK};
+    hdScheduleSynchronous(checkCalibration, &check, HD_DEFAULT_SCHEDULER_PRIORITY);
+    if (check.status == HD_CALIBRATION_OK)
+    {
+      return OmniCalibration::ok;
+    }
+    return check.status == HD_CALIBRATION_NEEDS_UPDATE ? OmniCalibration::needs_update
+                                                       : OmniCalibration::needs_manual_input;
+  }
+  bool updateCalibration() override
+  {
+    hdMakeCurrentDevice(device_);
+    HDint styles = 0;
+    hdGetIntegerv(HD_CALIBRATION_STYLE, &styles);
+    const HDenum style = (styles & HD_CALIBRATION_AUTO)      ? HD_CALIBRATION_AUTO
+                         : (styles & HD_CALIBRATION_INKWELL) ? HD_CALIBRATION_INKWELL
+                                                             : HD_CALIBRATION_ENCODER_RESET;
+    hdUpdateCalibration(style);
+    return !failed(hdGetError());
+  }
+  bool startServo() override
+  {
+    hdMakeCurrentDevice(device_);
+    hdEnable(HD_FORCE_OUTPUT);
+    return !failed(hdGetError());
+  }
+  bool exchange(const std::array<double, 3>& force, OmniFrame* frame) override
+  {
+    ServoExchange exchange{device_, {force[0], force[1], force[2]}, {0.0, 0.0, 0.0}, 0, HDErrorInfo()};
+    hdScheduleSynchronous(servoFrame, &exchange, HD_DEFAULT_SCHEDULER_PRIORITY);
+    if (failed(exchange.error))
+    {
+      return false;
+    }
+    frame->position_mm = {exchange.position[0], exchange.position[1], exchange.position[2]};
+    frame->buttons = static_cast<unsigned>(exchange.buttons);
+    return true;
+  }
+  double nominalMaxForce() override
+  {
+    hdMakeCurrentDevice(device_);
+    HDdouble force = 0.0;
+    hdGetDoublev(HD_NOMINAL_MAX_FORCE, &force);
+    return force;
+  }
+  std::string lastError() override
+  {
+    return std::string(hdGetErrorString(last_error_.errorCode)) + ", HD error " +
+           std::to_string(last_error_.errorCode) + ", internal " + std::to_string(last_error_.internalErrorCode);
+  }
+
+ private:
+  bool failed(const HDErrorInfo& error)
+  {
+    if (HD_DEVICE_ERROR(error))
+    {
+      last_error_ = error;
+      return true;
+    }
+    return false;
+  }
+
+  HHD device_ = HD_INVALID_HANDLE;
+  bool scheduler_running_ = false;
+  HDErrorInfo last_error_{};
+};
+}  // namespace
+
+std::unique_ptr<OmniIo> makeOpenHapticsIo()
+{
+  return std::make_unique<OpenHapticsIo>();
+}
+}  // namespace god_finger

@@ -1,0 +1,229 @@
+// The Omni / Touch backend through its seam (no device, no OpenHaptics): axes and units to
+// REP-103, force clamping to the profile and the device, calibration, device faults.
+#include "god_finger/devices/omni_device.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace god_finger
+{
+namespace
+{
+// An Omni in memory: counts calls, fails on demand.
+struct ScriptedOmni : OmniIo
+{
+  bool opens = true;
+  std::string opened_name = "<not opened>";
+  OmniCalibration state = OmniCalibration::ok;
+  int calibration_checks = 0;
+  int inkwell_after_checks = 0;  // with needs_manual_input: checks before the stylus is in the inkwell
+  bool update_works = true;
+  int updates = 0;
+  bool servo_starts = true;
+  bool servo_running = false;
+  bool frames_ok = true;
+  double nominal_max_force = 3.3;
+  OmniFrame stylus;
+  std::array<double, 3> force{0.0, 0.0, 0.0};
+
+  bool open(const std::string& name) override
+  {
+    opened_name = name;
+    return opens;
+  }
+  OmniCalibration calibration() override
+  {
+    ++calibration_checks;
+    if (state == OmniCalibration::needs_manual_input && calibration_checks > inkwell_after_checks)
+    {
+      state = OmniCalibration::ok;
+    }
+    return state;
+  }
+  bool updateCalibration() override
+  {
+    ++updates;
+    if (update_works)
+    {
+      state = OmniCalibration::ok;
+    }
+    return update_works;
+  }
+  bool startServo() override
+  {
+    servo_running = servo_starts;
+    return servo_starts;
+  }
+  bool exchange(const std::array<double, 3>& f, OmniFrame* frame) override
+  {
+    force = f;
+    if (!frames_ok)
+    {
+      return false;
+    }
+    *frame = stylus;
+    return true;
+  }
+  double nominalMaxForce() override
+  {
+    return nominal_max_force;
+  }
+  std::string lastError() override
+  {
+    return "HD_DEVICE_FAULT (scripted)";
+  }
+};
+
+struct Fixture
+{
+  ScriptedOmni* io = new ScriptedOmni;
+  double clock = 0.0;
+  std::unique_ptr<OmniDevice> device;
+  explicit Fixture(OmniParams params = OmniParams())
+  {
+    device = std::make_unique<OmniDevice>(
+        std::unique_ptr<OmniIo>(io), params, [this] { return clock; }, [this] { clock += 0.01; });
+  }
+};
+
+std::string startError(Fixture& f)
+{
+  try
+  {
+    f.device->start();
+  }
+  catch (const DeviceError& error)
+  {
+    return error.what();
+  }
+  return "<no error>";
+}
+
+TEST(OmniDevice, AxesAndUnitsFollowRep103)
+{
+  OmniParams params;
+  params.center_mm = {0.0, -10.0, 20.0};
+  Fixture f(params);
+  f.device->start();
+  EXPECT_TRUE(f.io->servo_running);
+  // Stylus 30 mm towards the user's right (x+), 40 mm up from the centre (y+), 50 mm away from
+  // the user (z smaller).
+  f.io->stylus.position_mm = {30.0, 30.0, -30.0};
+  f.io->stylus.buttons = 2;
+  const DeviceReading reading = f.device->update(1.0, Eigen::Vector3d::Zero());
+  EXPECT_LT((reading.position - Eigen::Vector3d(0.05, -0.03, 0.04)).norm(), 1e-15);
+  EXPECT_EQ(reading.buttons, 2u);
+  // A force away from the user and up: Omni -z and +y.
+  f.device->update(1.001, Eigen::Vector3d(2.0, 0.0, 1.0));
+  EXPECT_EQ(f.io->force, (std::array<double, 3>{-0.0, 1.0, -2.0}));
+  // Velocity from successive frames: 1 mm towards the user in 1 ms is -1 m/s along device x.
+  f.io->stylus.position_mm = {30.0, 30.0, -29.0};
+  const DeviceReading moved = f.device->update(1.002, Eigen::Vector3d::Zero());
+  EXPECT_NEAR(moved.velocity.x(), -1.0, 1e-9);
+  // The rotation is proper: a force along the motion does the same work in both frames.
+  const Eigen::Vector3d step(0.001, 0.002, -0.001);
+  const Eigen::Vector3d force(1.0, -2.0, 0.5);
+  const std::array<double, 3> omni_force = OmniDevice::deviceToOmni(force);
+  const std::array<double, 3> omni_step{-step.y(), step.z(), -step.x()};
+  EXPECT_NEAR(omni_force[0] * omni_step[0] + omni_force[1] * omni_step[1] + omni_force[2] * omni_step[2],
+              force.dot(step), 1e-15);
+}
+
+TEST(OmniDevice, ForceIsClampedToTheProfileAndTheDeviceAndNaNSentAsZero)
+{
+  OmniParams params;
+  params.max_force = 3.3;
+  Fixture profile_bound(params);
+  profile_bound.device->start();
+  profile_bound.device->update(1.0, Eigen::Vector3d(0.0, 0.0, 30.0));
+  EXPECT_NEAR(profile_bound.io->force[1], 3.3, 1e-12);
+  profile_bound.device->update(1.001, Eigen::Vector3d(NAN, 0.0, 1.0));
+  EXPECT_EQ(profile_bound.io->force, (std::array<double, 3>{0.0, 0.0, 0.0}));
+  profile_bound.device->update(1.002, Eigen::Vector3d(INFINITY, 0.0, 1.0));
+  EXPECT_EQ(profile_bound.io->force, (std::array<double, 3>{0.0, 0.0, 0.0}));
+
+  // A Touch reports a lower nominal maximum than the profile: the lower one wins.
+  Fixture device_bound(params);
+  device_bound.io->nominal_max_force = 0.88;
+  device_bound.device->start();
+  EXPECT_DOUBLE_EQ(device_bound.device->forceLimit(), 0.88);
+  device_bound.device->update(1.0, Eigen::Vector3d(3.0, 4.0, 0.0));
+  const auto& sent = device_bound.io->force;
+  EXPECT_NEAR(std::sqrt(sent[0] * sent[0] + sent[1] * sent[1] + sent[2] * sent[2]), 0.88, 1e-12);
+  EXPECT_NEAR(sent[0] / sent[2], 4.0 / 3.0, 1e-12);  // direction kept: (-f_y)/(-f_x)
+}
+
+TEST(OmniDevice, CalibrationUpdatesByItselfOrWaitsForTheInkwell)
+{
+  Fixture automatic;
+  automatic.io->state = OmniCalibration::needs_update;
+  automatic.device->start();
+  EXPECT_EQ(automatic.io->updates, 1);
+  EXPECT_EQ(automatic.clock, 0.0);
+
+  Fixture inkwell;
+  inkwell.io->state = OmniCalibration::needs_manual_input;
+  inkwell.io->inkwell_after_checks = 50;
+  inkwell.device->start();
+  EXPECT_NEAR(inkwell.clock, 0.5, 1e-9);  // waited 50 x 10 ms for the user
+  EXPECT_TRUE(inkwell.io->servo_running);
+
+  OmniParams params;
+  params.calibration_timeout = 2.0;
+  Fixture never(params);
+  never.io->state = OmniCalibration::needs_manual_input;
+  never.io->inkwell_after_checks = 1000000;
+  EXPECT_NE(startError(never).find("not calibrated within 2 s: put the stylus in the inkwell"), std::string::npos)
+      << startError(never);
+  EXPECT_FALSE(never.io->servo_running);
+
+  Fixture broken;
+  broken.io->state = OmniCalibration::needs_update;
+  broken.io->update_works = false;
+  EXPECT_NE(startError(broken).find("calibration update failed (HD_DEVICE_FAULT"), std::string::npos);
+}
+
+TEST(OmniDevice, MissingDeviceOrDeadMotorsSayWhatToCheck)
+{
+  OmniParams params;
+  params.device_name = "Left Omni";
+  Fixture missing(params);
+  missing.io->opens = false;
+  const std::string error = startError(missing);
+  EXPECT_EQ(missing.io->opened_name, "Left Omni");
+  EXPECT_NE(error.find("cannot open 'Left Omni' (HD_DEVICE_FAULT (scripted)): is the Touch / Phantom driver installed"),
+            std::string::npos)
+      << error;
+
+  Fixture no_servo;
+  no_servo.io->servo_starts = false;
+  EXPECT_NE(startError(no_servo).find("cannot start the servo loop"), std::string::npos);
+}
+
+TEST(OmniDevice, FaultsAreToleratedBrieflyHoldingTheLastPoseThenAnError)
+{
+  OmniParams params;
+  params.io_failures_allowed = 5;
+  Fixture f(params);
+  f.device->start();
+  f.io->stylus.position_mm = {10.0, 0.0, 0.0};
+  f.device->update(1.0, Eigen::Vector3d::Zero());
+  f.io->frames_ok = false;
+  for (int i = 1; i <= 5; ++i)
+  {
+    const DeviceReading held = f.device->update(1.0 + i * 1e-3, Eigen::Vector3d::Zero());
+    EXPECT_NEAR(held.position.y(), -0.01, 1e-15);  // the last good frame, not zeros
+  }
+  try
+  {
+    f.device->update(1.006, Eigen::Vector3d::Zero());
+    FAIL() << "no error";
+  }
+  catch (const DeviceError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("6 failed servo frames in a row"), std::string::npos) << error.what();
+  }
+}
+}  // namespace
+}  // namespace god_finger
