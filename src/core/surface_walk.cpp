@@ -330,10 +330,12 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
   }
   r.normalize();
   double remaining = distance;
+  // The current face's gradients; an edge crossing computes the next face's anyway and hands
+  // them on, so each face entered costs one faceGradients().
+  FaceGradients gradients = faceGradients(mesh, face);
 
   while (true)
   {
-    const FaceGradients gradients = faceGradients(mesh, face);
     double rate[3];
     int exit_index = -1;
     double exit_t = std::numeric_limits<double>::infinity();
@@ -416,6 +418,7 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
       face = choice.face;
       lambda = choice.barycentric;
       r = choice.direction;
+      gradients = faceGradients(mesh, face);
       ++crossings;
       continue;
     }
@@ -463,6 +466,7 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
     face = next;
     lambda = next_lambda;
     r = carried;
+    gradients = next_gradients;
     ++crossings;
   }
 }

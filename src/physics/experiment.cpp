@@ -384,6 +384,7 @@ WorldParams scenarioParams(const ExperimentOptions& options)
 {
   WorldParams params;
   params.time_step = options.time_step;
+  params.solver_iterations = options.solver_iterations;
   params.model = options.model;
   // D0' = 1 mm: with the coupling's 400 N/m the contact radius reaches 63 % of r_max at
   // 0.4 N and 92 % at 1 N, as a real finger pad's does (its area grows fast, then saturates
@@ -391,6 +392,21 @@ WorldParams scenarioParams(const ExperimentOptions& options)
   // with a 1.4 mm area. The paper leaves D0' to the user.
   params.contact.distance_constant = 0.001;
   return params;
+}
+
+ScenarioSetup loadScenario(const ExperimentOptions& options)
+{
+  const Script script = scriptFor(options);
+  ScenarioSetup setup;
+  setup.scene = loadUrdfScene(options.scenes_dir + "/" + script.scene_file);
+  setup.object = setup.scene.find(script.object);
+  if (setup.object < 0)
+  {
+    throw InputError("scene '" + script.scene_file + "' has no link '" + script.object + "'");
+  }
+  setup.fingers = script.fingers;
+  setup.duration = script.duration;
+  return setup;
 }
 
 ExperimentResult runExperiment(const ExperimentOptions& options)
@@ -410,12 +426,9 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
                      " is out of range [0, 0.04] (m)");
   }
   const Script script = scriptFor(options);
-  const SceneDescription scene = loadUrdfScene(options.scenes_dir + "/" + script.scene_file);
-  const int object = scene.find(script.object);
-  if (object < 0)
-  {
-    throw InputError("scene '" + script.scene_file + "' has no link '" + script.object + "'");
-  }
+  const ScenarioSetup setup = loadScenario(options);
+  const SceneDescription& scene = setup.scene;
+  const int object = setup.object;
   GodFingerWorld world(scene, scenarioParams(options));
   for (const WaypointPath& finger : script.fingers)
   {
@@ -429,6 +442,8 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));
   ExperimentResult result;
+  const long sample_every =
+      options.sample_period > 0.0 ? std::max(1L, std::lround(options.sample_period / options.time_step)) : 0;
   for (long i = 0; i < steps; ++i)
   {
     const double next_time = (i + 1) * options.time_step;
@@ -449,6 +464,10 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
     }
     metrics.add(world.time(), options.time_step, state);
     csv.add(world.time(), state, world);
+    if (sample_every > 0 && (i + 1) % sample_every == 0)
+    {
+      result.trajectory.push_back({world.time(), state.center_of_mass, Eigen::Quaterniond(state.pose.linear())});
+    }
   }
   csv.close();
   result.scenario = scenarioName(options.scenario);
@@ -457,6 +476,10 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
   result.steps = steps;
   result.step_us_median = percentile(step_us, 0.5);
   result.step_us_p99 = percentile(step_us, 0.99);
+  for (double us : step_us)
+  {
+    result.step_us_total += us;
+  }
   result.metrics = metrics.metrics();
   return result;
 }

@@ -23,11 +23,15 @@
 // Contact parameters: the core's, except D0' = 1 mm (see scenarioParams).
 #pragma once
 
+#include "god_finger/core/waypoint_path.h"
+#include "god_finger/physics/scene_description.h"
 #include "god_finger/physics/world_params.h"
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace god_finger
 {
@@ -54,6 +58,17 @@ struct ExperimentOptions
   std::uint64_t seed = 1;
   std::string csv;         // time series path, empty for none
   std::string scenes_dir;  // folder of the scene URDFs (urdf/scenes of the package)
+  int solver_iterations = 60;  // range [1, 1000]: Bullet's sequential-impulse iterations
+  // > 0: the watched object's pose is sampled every sample_period (s; rounded to whole steps)
+  // into ExperimentResult::trajectory, for comparing runs of different settings.
+  double sample_period = 0.0;
+};
+
+struct PoseSample
+{
+  double time = 0.0;                                    // s
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, centre of mass, world
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };
 
 struct ExperimentResult
@@ -66,11 +81,25 @@ struct ExperimentResult
   double step_us_p99 = 0.0;
   double max_penetration_m = 0.0;
   long nan = 0;
+  double step_us_total = 0.0;  // compute time of all steps (us)
   std::map<std::string, double> metrics;
+  std::vector<PoseSample> trajectory;  // see ExperimentOptions::sample_period
 };
 
 // The world parameters a scenario runs with (its contact parameters, documented there).
 WorldParams scenarioParams(const ExperimentOptions& options);
+
+// A scenario's set-up without running it (benchmarks step it themselves): its scene, the
+// watched object, the hand's path per finger (device targets in world, m, against time, s),
+// and its own length (s).
+struct ScenarioSetup
+{
+  SceneDescription scene;
+  int object = -1;
+  std::vector<WaypointPath> fingers;
+  double duration = 0.0;
+};
+ScenarioSetup loadScenario(const ExperimentOptions& options);
 // Throws InputError on a bad scene or option.
 ExperimentResult runExperiment(const ExperimentOptions& options);
 std::string toJson(const ExperimentResult& result);

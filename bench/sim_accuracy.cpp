@@ -1,0 +1,130 @@
+// Speed against error of the simulation: runs a paper scenario (god-finger model) at the time
+// steps and solver iterations given, and prints one JSON line per run with the compute time per
+// simulated second and the watched object's trajectory (centre of mass and orientation every
+// 20 ms). scripts/bench_report compares each run with the finest one (the reference) and marks
+// the Pareto front. Built twice: against Bullet in float64 (sim_accuracy) and in float32
+// (sim_accuracy_f32), the same sources.
+//
+// usage: sim_accuracy --scenario slide|pinch_cylinder --duration S --dt S[,S...] --iterations N[,N...]
+#include "god_finger/core/text_numbers.h"
+#include "god_finger/physics/experiment.h"
+
+#include <LinearMath/btScalar.h>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+std::vector<std::string> splitList(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ','))
+  {
+    items.push_back(item);
+  }
+  return items;
+}
+
+int fail(const std::string& message)
+{
+  std::cerr << "sim_accuracy: " << message << "\n"
+            << "usage: sim_accuracy --scenario NAME --duration S --dt S[,S...] --iterations N[,N...]\n";
+  return 2;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  using namespace god_finger;
+  ExperimentOptions options;
+  options.scenes_dir = GOD_FINGER_SCENES_DIR;
+  options.sample_period = 0.02;
+  std::vector<double> time_steps;
+  std::vector<int> iterations;
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string option = argv[i];
+    const std::string value = argv[i + 1];
+    if (option == "--scenario")
+    {
+      if (!parseScenario(value, &options.scenario))
+      {
+        return fail("unknown scenario '" + value + "'");
+      }
+    }
+    else if (option == "--duration")
+    {
+      if (!parseDouble(value, &options.duration) || !(options.duration > 0.0))
+      {
+        return fail("bad --duration '" + value + "'");
+      }
+    }
+    else if (option == "--dt" || option == "--iterations")
+    {
+      for (const std::string& item : splitList(value))
+      {
+        double number = 0.0;
+        if (!parseDouble(item, &number) || !(number > 0.0))
+        {
+          return fail("bad " + option + " '" + item + "'");
+        }
+        if (option == "--dt")
+        {
+          time_steps.push_back(number);
+        }
+        else
+        {
+          iterations.push_back(static_cast<int>(number));
+        }
+      }
+    }
+    else
+    {
+      return fail("unknown option '" + option + "'");
+    }
+  }
+  if (time_steps.empty() || iterations.empty())
+  {
+    return fail("--dt and --iterations are required");
+  }
+  const char* precision = sizeof(btScalar) == 8 ? "float64" : "float32";
+  for (double dt : time_steps)
+  {
+    for (int iteration_count : iterations)
+    {
+      options.time_step = dt;
+      options.solver_iterations = iteration_count;
+      try
+      {
+        const ExperimentResult result = runExperiment(options);
+        std::ostringstream line;
+        line << "{\"scenario\": \"" << result.scenario << "\", \"precision\": \"" << precision
+             << "\", \"dt\": " << jsonNumber(dt) << ", \"iterations\": " << iteration_count
+             << ", \"compute_s_per_sim_s\": " << jsonNumber(1e-6 * result.step_us_total / result.duration_s)
+             << ", \"nan\": " << result.nan << ", \"trajectory\": [";
+        for (std::size_t k = 0; k < result.trajectory.size(); ++k)
+        {
+          const PoseSample& sample = result.trajectory[k];
+          line << (k ? ", " : "") << "[" << jsonNumber(sample.time) << ", " << jsonNumber(sample.position.x()) << ", "
+               << jsonNumber(sample.position.y()) << ", " << jsonNumber(sample.position.z()) << ", "
+               << jsonNumber(sample.orientation.w()) << ", " << jsonNumber(sample.orientation.x()) << ", "
+               << jsonNumber(sample.orientation.y()) << ", " << jsonNumber(sample.orientation.z()) << "]";
+        }
+        line << "]}";
+        std::cout << line.str() << std::endl;
+      }
+      catch (const std::exception& error)
+      {
+        std::cerr << "sim_accuracy: " << error.what() << "\n";
+        return 1;
+      }
+    }
+  }
+  return 0;
+}
