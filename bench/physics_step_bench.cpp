@@ -140,8 +140,8 @@ void BM_ObjectsStep(benchmark::State& state)
   {
     scene.bodies.push_back(ball(i, Eigen::Vector3d(0.1 * (i % 10), 0.1 * (i / 10), 0.04)));
   }
-  runWorlds(state, scene, generatedParams(kModels[state.range(1)]),
-            pressAndSlide({Eigen::Vector3d(0.0, 0.0, 0.083)}), 1.5);
+  runWorlds(state, scene, generatedParams(kModels[state.range(1)]), pressAndSlide({Eigen::Vector3d(0.0, 0.0, 0.083)}),
+            1.5);
   state.SetLabel(contactModelName(kModels[state.range(1)]));
 }
 }  // namespace

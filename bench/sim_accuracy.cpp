@@ -6,6 +6,7 @@
 // (sim_accuracy_f32), the same sources.
 //
 // usage: sim_accuracy --scenario slide|pinch_cylinder --duration S --dt S[,S...] --iterations N[,N...]
+//        [--reference 1]   (marks the lines as the reference run)
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/physics/experiment.h"
 
@@ -47,6 +48,7 @@ int main(int argc, char** argv)
   options.sample_period = 0.02;
   std::vector<double> time_steps;
   std::vector<int> iterations;
+  bool reference = false;
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string option = argv[i];
@@ -64,6 +66,10 @@ int main(int argc, char** argv)
       {
         return fail("bad --duration '" + value + "'");
       }
+    }
+    else if (option == "--reference")
+    {
+      reference = value == "1";
     }
     else if (option == "--dt" || option == "--iterations")
     {
@@ -107,7 +113,8 @@ int main(int argc, char** argv)
         line << "{\"scenario\": \"" << result.scenario << "\", \"precision\": \"" << precision
              << "\", \"dt\": " << jsonNumber(dt) << ", \"iterations\": " << iteration_count
              << ", \"compute_s_per_sim_s\": " << jsonNumber(1e-6 * result.step_us_total / result.duration_s)
-             << ", \"nan\": " << result.nan << ", \"trajectory\": [";
+             << ", \"nan\": " << result.nan << ", \"reference\": " << (reference ? "true" : "false")
+             << ", \"trajectory\": [";
         for (std::size_t k = 0; k < result.trajectory.size(); ++k)
         {
           const PoseSample& sample = result.trajectory[k];

@@ -74,7 +74,8 @@ void runWalkCase(benchmark::State& state, const TriangleMesh& mesh, const std::v
   const SurfaceLocator locator(mesh);
   const ContactParams params = walkParams(state.range(1) == 0 ? WalkVariant::kProject : WalkVariant::kUnfold);
   ContactAreaResult area;
-  auto contactAt = [&](int i) {
+  auto contactAt = [&](int i)
+  {
     const SurfaceLocation location = locator.closest(probes[i]);
     ContactQuery query;
     query.location = location;
@@ -143,12 +144,8 @@ void BM_WalkCylinder(benchmark::State& state)
 }
 }  // namespace
 
-BENCHMARK(BM_WalkSphere)
-    ->ArgsProduct({{2, 3, 4, 5, 6, 7}, {0, 1}})
-    ->ArgNames({"level", "walk"});
-BENCHMARK(BM_WalkCylinder)
-    ->ArgsProduct({{12, 24, 48, 96, 192, 384, 768}, {0, 1}})
-    ->ArgNames({"segments", "walk"});
+BENCHMARK(BM_WalkSphere)->ArgsProduct({{2, 3, 4, 5, 6, 7}, {0, 1}})->ArgNames({"level", "walk"});
+BENCHMARK(BM_WalkCylinder)->ArgsProduct({{12, 24, 48, 96, 192, 384, 768}, {0, 1}})->ArgNames({"segments", "walk"});
 }  // namespace god_finger
 
 BENCHMARK_MAIN();

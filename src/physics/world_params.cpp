@@ -42,6 +42,19 @@ std::string validate(const WorldParams& params)
   {
     return outOfRange("max_force", c.max_force, "(0, 1e+04]", "N");
   }
+  // The coupling force is explicit (from the proxy's state at the start of the step, then
+  // symplectic Euler): in free space it is stable iff k dt^2 / m + 2 c dt / m < 4.
+  const double stability = (c.stiffness * params.time_step + 2.0 * c.damping) * params.time_step / c.proxy_mass;
+  if (!(stability < 4.0))
+  {
+    std::ostringstream message;
+    message
+        << "coupling unstable at this time step: (coupling_stiffness * dt + 2 coupling_damping) * dt / proxy_mass = "
+        << stability << " must be < 4 (stiffness " << c.stiffness << " N/m, damping " << c.damping
+        << " N s/m, proxy_mass " << c.proxy_mass << " kg, dt " << params.time_step
+        << " s): lower the stiffness, damping or time step, or raise proxy_mass";
+    return message.str();
+  }
   if (!(params.soft_finger.spinning_friction >= 0.0 && params.soft_finger.spinning_friction <= 1.0))
   {
     return outOfRange("spinning_friction", params.soft_finger.spinning_friction, "[0, 1]", "m");

@@ -25,6 +25,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <mutex>
 #include <thread>
 
@@ -82,6 +83,7 @@ struct PhysicsNode::Impl
     Eigen::Vector3d target = Eigen::Vector3d::Zero();
     ros::Time target_stamp;  // of the pose the target came from: feedback carries it on
     bool have_target = false;
+    bool fresh = false;  // a pose came since the last step
   };
 
   ros::NodeHandle nh;
@@ -89,6 +91,7 @@ struct PhysicsNode::Impl
   std::unique_ptr<GodFingerWorld> world;
   std::vector<Interface> interfaces;
   std::mutex mutex;  // guards world and the targets
+  std::condition_variable pose_arrived;
   ros::Publisher contact_publisher;
   ros::Publisher marker_publisher;
   ros::Publisher diagnostics_publisher;
@@ -120,6 +123,26 @@ struct PhysicsNode::Impl
     interfaces[i].target = p;
     interfaces[i].target_stamp = message->header.stamp;
     interfaces[i].have_target = true;
+    interfaces[i].fresh = true;
+    pose_arrived.notify_one();
+  }
+
+  // True when every interface that has sent a pose has sent a new one since the last step.
+  bool allPosesFresh() const
+  {
+    bool any = false;
+    for (const Interface& interface : interfaces)
+    {
+      if (interface.have_target)
+      {
+        any = true;
+        if (!interface.fresh)
+        {
+          return false;
+        }
+      }
+    }
+    return any;
   }
 
   bool onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
@@ -180,11 +203,12 @@ struct PhysicsNode::Impl
   }
 
   // One step under the lock; publishes the per-step messages.
+  // Called with `mutex` held.
   void step()
   {
-    std::lock_guard<std::mutex> lock(mutex);
     for (Interface& interface : interfaces)
     {
+      interface.fresh = false;
       if (!interface.have_target)
       {
         continue;
@@ -311,6 +335,10 @@ struct PhysicsNode::Impl
     diagnostics_publisher.publish(array);
   }
 
+  // Fixed-step at 1/time_step on average, but each step is taken as soon as every interface's
+  // new pose is in (so the feedback answers the freshest pose without waiting for a timer
+  // tick), never earlier than half a period before its slot and never later than half a period
+  // after it. A step that ends after that latest moment is an overrun.
   void loop()
   {
     using Clock = std::chrono::steady_clock;
@@ -318,14 +346,18 @@ struct PhysicsNode::Impl
         std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world->params().time_step));
     const auto publish_every =
         std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(publish_period));
-    auto next = Clock::now();
-    auto next_publish = next;
-    auto diagnostics_start = next;
+    auto slot = Clock::now() + period;
+    auto next_publish = slot;
+    auto diagnostics_start = slot;
     long diagnostics_steps = 0;
     while (running && ros::ok())
     {
-      next += period;
-      step();
+      std::this_thread::sleep_until(slot - period / 2);
+      {
+        std::unique_lock<std::mutex> lock(mutex);
+        pose_arrived.wait_until(lock, slot + period / 2, [this] { return allPosesFresh() || !running; });
+        step();
+      }
       ++diagnostics_steps;
       const auto now = Clock::now();
       if (now >= next_publish)
@@ -340,17 +372,14 @@ struct PhysicsNode::Impl
         diagnostics_steps = 0;
       }
       const auto after = Clock::now();
-      if (after > next)
+      if (after > slot + period / 2)
       {
         ++overruns;
-        if (after - next > 10 * period)
-        {
-          next = after;  // far behind (a debugger, a suspended process): do not race to catch up
-        }
       }
-      else
+      slot += period;
+      if (after - slot > 10 * period)
       {
-        std::this_thread::sleep_until(next);
+        slot = after + period;  // far behind (a debugger, a suspended process): do not race to catch up
       }
     }
   }
@@ -411,6 +440,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
 PhysicsNode::~PhysicsNode()
 {
   impl_->running = false;
+  impl_->pose_arrived.notify_all();
   if (impl_->thread.joinable())
   {
     impl_->thread.join();

@@ -1,8 +1,8 @@
 #include "contact_tool.h"
 
 #include "god_finger/core/contact_area.h"
+#include "god_finger/core/contact_sampling.h"
 #include "god_finger/core/input_error.h"
-#include "god_finger/core/radial_frame.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/mesh_io/mesh_loader.h"
@@ -15,7 +15,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
-#include <random>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -156,16 +156,17 @@ int runContactTool(const ContactToolOptions& options, std::ostream& out, std::os
          << health.components << " connected components\n";
 
   const SurfaceLocator locator(mesh);
-  std::vector<double> cumulative_area(mesh.triangleCount());
-  double total_area = 0.0;
-  for (int t = 0; t < mesh.triangleCount(); ++t)
-  {
-    total_area += 0.5 * (mesh.corner(t, 1) - mesh.corner(t, 0)).cross(mesh.corner(t, 2) - mesh.corner(t, 0)).norm();
-    cumulative_area[t] = total_area;
-  }
-  std::mt19937_64 random(options.seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   const ContactParams& params = options.params;
+  std::unique_ptr<RandomContacts> contacts;
+  try
+  {
+    contacts = std::make_unique<RandomContacts>(mesh, params, options.seed);
+  }
+  catch (const InputError& error)
+  {
+    report << "god_finger_contact: " << options.mesh << ": " << error.what() << "\n";
+    return 2;
+  }
   const double surface_tolerance = 1e-9 * std::max(mesh.boundingBoxDiagonal(), 1e-300);
   ContactAreaResult area;
   std::vector<double> times;
@@ -177,30 +178,14 @@ int runContactTool(const ContactToolOptions& options, std::ostream& out, std::os
   double radius_total = 0.0;
   for (int sample = 0; sample < options.samples; ++sample)
   {
-    const double pick = unit(random) * total_area;
-    const int face = static_cast<int>(std::min<std::ptrdiff_t>(
-        std::upper_bound(cumulative_area.begin(), cumulative_area.end(), pick) - cumulative_area.begin(),
-        mesh.triangleCount() - 1));
-    const double r1 = std::sqrt(unit(random));
-    const double r2 = unit(random);
-    const Eigen::Vector3d barycentric(1.0 - r1, r1 * (1.0 - r2), r1 * r2);
-    ContactQuery query;
-    query.location = locationFromBarycentric(mesh, face, barycentric);
-    query.normal = mesh.normals()[face];
-    const double compression = 3.0 * params.distance_constant * unit(random);
-    const double tangential = compression * unit(random);
-    const double angle = 2.0 * M_PI * unit(random);
-    const Eigen::Vector3d t1 = defaultTangent(query.normal);
-    const Eigen::Vector3d t2 = query.normal.cross(t1);
-    query.coupling = -compression * query.normal + tangential * (std::cos(angle) * t1 + std::sin(angle) * t2);
-    query.depth = compression;
+    const ContactQuery query = contacts->next();
 
     const auto start = std::chrono::steady_clock::now();
     computeContactArea(mesh, query, params, &area);
     const auto stop = std::chrono::steady_clock::now();
     times.push_back(std::chrono::duration<double, std::nano>(stop - start).count());
 
-    bool failed = !area.valid;
+    bool failed = !area.valid || !contactAreaDefect(locator, query, area, surface_tolerance).empty();
     nan_count += std::isfinite(area.radius) ? 0 : 1;
     radius_total += std::isfinite(area.radius) ? area.radius : 0.0;
     active_total += area.active;
@@ -212,22 +197,10 @@ int runContactTool(const ContactToolOptions& options, std::ostream& out, std::os
     {
       const SubGodObject& sgo = area.sub_god_objects[i];
       ++stops[walkStopName(sgo.walk.stop)];
-      if (!sgo.position.allFinite())
-      {
-        nan_count += 3 - sgo.position.array().isFinite().count();
-        failed = true;
-        continue;
-      }
-      if (sgo.dropped())
+      nan_count += 3 - sgo.position.array().isFinite().count();
+      if (sgo.dropped() || !sgo.position.allFinite())
       {
         continue;
-      }
-      // On the surface, and no farther (straight) than the distance it walked.
-      if (locator.closest(sgo.position).distance > surface_tolerance ||
-          (sgo.position - query.location.point).norm() > sgo.walk.walked + surface_tolerance ||
-          sgo.walk.walked > sgo.target_distance * (1.0 + 1e-12) + surface_tolerance)
-      {
-        failed = true;
       }
       if (dump.is_open())
       {
