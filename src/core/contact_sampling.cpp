@@ -70,7 +70,7 @@ std::string contactAreaDefect(const SurfaceLocator& locator, const ContactQuery&
     {
       continue;
     }
-    if (locator.closest(sgo.position).distance > tolerance)
+    if (locator.closest(sgo.position, 0.0).distance > tolerance)  // no snapping onto features
     {
       return which + "off the mesh";
     }

@@ -51,14 +51,24 @@ std::vector<int> weld(const std::vector<Eigen::Vector3d>& vertices, double toler
   std::vector<int> map(vertices.size());
   std::unordered_map<std::int64_t, std::vector<int>> grid;
   const double cell = tolerance > 0.0 ? tolerance : 1.0;
+  // Unsigned arithmetic: the hash may wrap (signed overflow would be undefined; found by
+  // test/fuzz/walk_fuzz with coordinates far larger than the tolerance).
   auto key = [](std::int64_t x, std::int64_t y, std::int64_t z)
-  { return (x * 73856093) ^ (y * 19349663) ^ (z * 83492791); };
+  {
+    return static_cast<std::int64_t>((static_cast<std::uint64_t>(x) * 73856093u) ^
+                                     (static_cast<std::uint64_t>(y) * 19349663u) ^
+                                     (static_cast<std::uint64_t>(z) * 83492791u));
+  };
   for (std::size_t i = 0; i < vertices.size(); ++i)
   {
     const Eigen::Vector3d& v = vertices[i];
-    const std::int64_t cx = static_cast<std::int64_t>(std::floor(v.x() / cell));
-    const std::int64_t cy = static_cast<std::int64_t>(std::floor(v.y() / cell));
-    const std::int64_t cz = static_cast<std::int64_t>(std::floor(v.z() / cell));
+    // Clamped so that the conversion is defined for any finite coordinate (cells that far out
+    // are shared, which costs only comparisons).
+    auto cellOf = [cell](double coordinate)
+    { return static_cast<std::int64_t>(std::clamp(std::floor(coordinate / cell), -4e18, 4e18)); };
+    const std::int64_t cx = cellOf(v.x());
+    const std::int64_t cy = cellOf(v.y());
+    const std::int64_t cz = cellOf(v.z());
     int found = -1;
     for (int dx = -1; dx <= 1 && found < 0; ++dx)
     {

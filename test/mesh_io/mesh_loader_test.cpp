@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace god_finger
@@ -132,6 +134,36 @@ TEST(MeshLoader, ShippedMeshesAreClosedAndManifold)
     EXPECT_EQ(mesh.health().flipped_triangles, 0) << name;
     EXPECT_EQ(mesh.health().components, 1) << name;
   }
+}
+TEST(MeshLoader, FuzzFoundFilesGiveAnErrorNotACrashOrAHang)
+{
+  // Inputs kept by test/fuzz/mesh_loading_fuzz (first byte: the extension, as the target
+  // reads them): OFF files on which assimp's triangulation aborted the process, PLY headers on
+  // which assimp looped forever, STL/PLY files on which it leaks (upstream). Each must now load
+  // or give InputError naming the file, at once.
+  const std::filesystem::path kept =
+      std::filesystem::path(GOD_FINGER_SOURCE_DIR) / "test/fuzz/regressions/mesh_loading_fuzz";
+  const char* const extensions[] = {"stl", "obj", "ply", "off"};
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(kept))
+  {
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(bytes.empty()) << entry.path();
+    const std::string path = std::string(::testing::TempDir()) + "fuzz_kept." + extensions[bytes[0] % 4];
+    std::ofstream(path, std::ios::binary) << bytes.substr(1);
+    try
+    {
+      loadTriangleMesh(path);
+    }
+    catch (const InputError& error)
+    {
+      EXPECT_NE(std::string(error.what()).find("mesh file '" + path + "'"), std::string::npos) << error.what();
+    }
+    std::remove(path.c_str());
+    ++files;
+  }
+  EXPECT_GE(files, 3);
 }
 }  // namespace
 }  // namespace god_finger

@@ -97,3 +97,37 @@ TEST(SurfaceLocator, FarFromTheOrigin)
 }
 }  // namespace
 }  // namespace god_finger
+
+namespace god_finger
+{
+namespace
+{
+TEST(SurfaceLocator, PointsOnNeedleTrianglesAreFoundOnThem)
+{
+  // A 33 m x 6 cm needle (the shape test/fuzz/walk_fuzz found): a point on it, anywhere, is at
+  // distance ~0 from it. The former region test (Ericson 5.1.5) put such points 0.23 mm off.
+  TriangleSoup soup;
+  soup.vertices = {Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(0.06, 0.0, 0.0), Eigen::Vector3d(0.02, 32.7, 1.5)};
+  soup.triangles = {{0, 1, 2}};
+  const TriangleMesh mesh = TriangleMesh::build(soup);
+  for (const Eigen::Vector3d& barycentric : {Eigen::Vector3d(0.428, 2.31e-14, 0.572), Eigen::Vector3d(0.3, 0.3, 0.4),
+                                             Eigen::Vector3d(0.01, 0.5, 0.49)})
+  {
+    const Eigen::Vector3d on =
+        barycentric[0] * mesh.corner(0, 0) + barycentric[1] * mesh.corner(0, 1) + barycentric[2] * mesh.corner(0, 2);
+    const SurfaceLocation location = locateOnFace(mesh, 0, on);
+    EXPECT_LT(location.distance, 1e-12) << barycentric.transpose();
+    EXPECT_LT((location.point - on).norm(), 1e-12) << barycentric.transpose();
+  }
+  // Off the needle, beside its long edge a-c in its plane: the closest point is on that edge.
+  const Eigen::Vector3d a = mesh.corner(0, 0);
+  const Eigen::Vector3d c = mesh.corner(0, 2);
+  const Eigen::Vector3d beside = 0.5 * (a + c) + Eigen::Vector3d(-0.01, 0.0, 0.0);
+  const Eigen::Vector3d along = (c - a).normalized();
+  const double exact = ((beside - a) - (beside - a).dot(along) * along).norm();
+  const SurfaceLocation location = locateOnFace(mesh, 0, beside);
+  EXPECT_EQ(location.feature, FeatureKind::kEdge);
+  EXPECT_NEAR(location.distance, exact, 1e-12);
+}
+}  // namespace
+}  // namespace god_finger
