@@ -12,6 +12,7 @@
 #include "god_finger/ros/bag_track.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
+#include "god_finger/ros/realtime.h"
 
 #include <XmlRpcValue.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
@@ -208,6 +209,7 @@ struct DeviceDriverNode::Impl
   std::unique_ptr<HapticDevice> device;
   std::unique_ptr<ForceGuard> guard;
   double period = 1e-3;
+  int realtime_priority = 0;
   std::string frame;
   ros::Publisher state_publisher;
   ros::Publisher diagnostics_publisher;
@@ -336,6 +338,7 @@ struct DeviceDriverNode::Impl
 
   void loop()
   {
+    requestRealTimePriority(realtime_priority, ros::this_node::getName() + " (device loop)");
     using Clock = std::chrono::steady_clock;
     const auto step = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period));
     auto next = Clock::now();
@@ -404,6 +407,9 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
 {
   Impl& impl = *impl_;
   impl.period = 1.0 / readDouble(pnh, "rate", 1000.0, 10.0, 10000.0, "Hz");
+  // SCHED_FIFO priority of the servo loop (0: normal scheduling). It sleeps every tick, so it
+  // never holds a core.
+  impl.realtime_priority = readInt(pnh, "realtime_priority", 80, 0, 99);
   ForceGuardParams guard;
   guard.max_force = readDouble(pnh, "max_force", guard.max_force, 0.0, 1e3, "N", true);
   guard.command_timeout = readDouble(pnh, "command_timeout", guard.command_timeout, 0.0, 10.0, "s", true);
