@@ -1,8 +1,10 @@
 // libFuzzer target: mesh files from arbitrary bytes. The first byte picks the extension (stl,
-// obj, ply, off); the rest is the file. PLY is skipped: Debian's assimp 5.2 loops forever on
-// malformed PLY headers (mesh_loader.cpp now refuses those before assimp sees them; the kept
-// inputs are in mesh_loader_test) and runs out of memory on some malformed PLY bodies
-// (test/fuzz/known_upstream/, not fixed: it needs a PLY reader of our own). A bad file must
+// obj, ply, off); the rest is the file. With GOD_FINGER_FUZZ_STL_OBJ_ONLY set in the
+// environment (scripts/test does), PLY and OFF inputs are skipped: Debian's assimp 5.2 runs
+// out of memory on some malformed PLY bodies and reads out of bounds on some OFF files
+// (test/fuzz/known_upstream/, not fixed: they need readers of our own). Its endless loop on
+// malformed PLY headers and its assertion abort on OFF are now avoided (mesh_loader.cpp); those
+// inputs are replayed by mesh_loader_test. A bad file must
 // give InputError, never a crash, a hang or a sanitizer report; a file that loads must give a
 // mesh on which contact areas are sound (contactAreaDefect). Run by scripts/fuzz.
 #include "god_finger/core/contact_sampling.h"
@@ -23,7 +25,8 @@ const char* const kExtensions[] = {"stl", "obj", "ply", "off"};
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-  if (size < 1 || data[0] % 4 == 2)
+  static const bool stl_obj_only = std::getenv("GOD_FINGER_FUZZ_STL_OBJ_ONLY") != nullptr;
+  if (size < 1 || (stl_obj_only && data[0] % 4 >= 2))
   {
     return 0;
   }
