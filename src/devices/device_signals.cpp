@@ -2,6 +2,11 @@
 
 namespace god_finger
 {
+std::array<double, 3> deviceForceToVendorAxes(const Eigen::Vector3d& force)
+{
+  return {-force.y(), force.z(), -force.x()};
+}
+
 Eigen::Vector3d motorCommand(const Eigen::Vector3d& force, double max_force)
 {
   if (!force.allFinite())

@@ -30,6 +30,38 @@ std::string validate(const FakeDeviceParams& params)
   return message.str();
 }
 
+FakeDeviceParams readFakeDeviceParams(const ParameterSource& source)
+{
+  FakeDeviceParams params;
+  params.handle_mass = readDouble(source, "handle_mass", params.handle_mass, 0.0, 100.0, "kg", true);
+  params.handle_damping = readDouble(source, "handle_damping", params.handle_damping, 0.0, 1e4, "N s/m");
+  params.grip_stiffness = readDouble(source, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
+  params.grip_damping = readDouble(source, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
+  return params;
+}
+
+WaypointPath readScript(const ParameterSource& source, const Eigen::Vector3d& fallback)
+{
+  std::vector<std::vector<double>> rows;
+  if (!readTable(source, "script", 4, "a list of [t, x, y, z] waypoints (s, m)", &rows))
+  {
+    return WaypointPath({{0.0, fallback}});
+  }
+  std::vector<Waypoint> waypoints;
+  for (const std::vector<double>& row : rows)
+  {
+    waypoints.push_back({row[0], Eigen::Vector3d(row[1], row[2], row[3])});
+  }
+  try
+  {
+    return WaypointPath(waypoints);
+  }
+  catch (const InputError& error)
+  {
+    throw InputError("parameter '" + source.fullName("script") + "': " + error.what());
+  }
+}
+
 FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand)
     : params_(params), hand_(std::move(hand)), position_(hand_.at(0.0))
 {
@@ -42,15 +74,15 @@ FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand)
 
 void FakeDevice::start() {}
 
-void FakeDevice::setHandTarget(const Eigen::Vector3d& position)
+bool FakeDevice::setHandTarget(const Eigen::Vector3d& position)
 {
-  if (!position.allFinite())
+  if (position.allFinite())
   {
-    return;
+    std::lock_guard<std::mutex> lock(target_mutex_);
+    target_ = position;
+    has_target_ = true;
   }
-  std::lock_guard<std::mutex> lock(target_mutex_);
-  target_ = position;
-  has_target_ = true;
+  return true;
 }
 
 DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)

@@ -1,7 +1,20 @@
 #include "god_finger/devices/falcon_device.h"
 
+#include <algorithm>
+
 namespace god_finger
 {
+FalconParams readFalconParams(const ParameterSource& source, double max_force)
+{
+  FalconParams params;
+  params.index = readInt(source, "index", params.index, 0, 15);
+  params.firmware_attempts = readInt(source, "firmware_attempts", params.firmware_attempts, 1, 100);
+  params.homing_timeout = readDouble(source, "homing_timeout", params.homing_timeout, 0.0, 600.0, "s", true);
+  params.max_force = std::min(max_force, params.max_force);
+  params.center_z = readDouble(source, "center_z", params.center_z, 0.0, 0.3, "m");
+  return params;
+}
+
 FalconDevice::FalconDevice(std::unique_ptr<FalconIo> io, const FalconParams& params, std::function<double()> now,
                            std::function<void()> wait)
     : io_(std::move(io)),
@@ -15,11 +28,6 @@ FalconDevice::FalconDevice(std::unique_ptr<FalconIo> io, const FalconParams& par
 Eigen::Vector3d FalconDevice::falconToDevice(const std::array<double, 3>& falcon, double center_z)
 {
   return Eigen::Vector3d(-(falcon[2] - center_z), -falcon[0], falcon[1]);
-}
-
-std::array<double, 3> FalconDevice::deviceToFalcon(const Eigen::Vector3d& force)
-{
-  return {-force.y(), force.z(), -force.x()};
 }
 
 void FalconDevice::start()
@@ -68,7 +76,7 @@ void FalconDevice::start()
 
 DeviceReading FalconDevice::update(double time, const Eigen::Vector3d& force)
 {
-  io_->setForce(deviceToFalcon(motorCommand(force, params_.max_force)));
+  io_->setForce(deviceForceToVendorAxes(motorCommand(force, params_.max_force)));
   if (io_failures_.record(io_->runIoLoop()))
   {
     throw DeviceError("falcon: USB communication lost (" + std::to_string(io_failures_.consecutive()) +

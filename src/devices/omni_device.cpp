@@ -5,6 +5,18 @@
 
 namespace god_finger
 {
+OmniParams readOmniParams(const ParameterSource& source, double max_force)
+{
+  OmniParams params;
+  params.device_name = readString(source, "device_name", params.device_name);
+  params.calibration_timeout =
+      readDouble(source, "calibration_timeout", params.calibration_timeout, 0.0, 600.0, "s", true);
+  params.max_force = max_force;
+  const Eigen::VectorXd center = readVector(source, "center_mm", Eigen::Vector3d::Zero());
+  params.center_mm = {center[0], center[1], center[2]};
+  return params;
+}
+
 OmniDevice::OmniDevice(std::unique_ptr<OmniIo> io, const OmniParams& params, std::function<double()> now,
                        std::function<void()> wait)
     : io_(std::move(io)),
@@ -19,11 +31,6 @@ OmniDevice::OmniDevice(std::unique_ptr<OmniIo> io, const OmniParams& params, std
 Eigen::Vector3d OmniDevice::omniToDevice(const std::array<double, 3>& omni_mm, const std::array<double, 3>& center_mm)
 {
   return Eigen::Vector3d(-(omni_mm[2] - center_mm[2]), -(omni_mm[0] - center_mm[0]), omni_mm[1] - center_mm[1]) * 1e-3;
-}
-
-std::array<double, 3> OmniDevice::deviceToOmni(const Eigen::Vector3d& force)
-{
-  return {-force.y(), force.z(), -force.x()};
 }
 
 void OmniDevice::start()
@@ -77,7 +84,7 @@ void OmniDevice::calibrate()
 DeviceReading OmniDevice::update(double time, const Eigen::Vector3d& force)
 {
   OmniFrame frame;
-  if (io_failures_.record(io_->exchange(deviceToOmni(motorCommand(force, force_limit_)), &frame)))
+  if (io_failures_.record(io_->exchange(deviceForceToVendorAxes(motorCommand(force, force_limit_)), &frame)))
   {
     throw DeviceError("omni: device fault (" + std::to_string(io_failures_.consecutive()) +
                       " failed servo frames in a row; " + io_->lastError() + ")");

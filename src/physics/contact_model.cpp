@@ -16,9 +16,32 @@ const char* contactModelName(ContactModel model)
   return "unknown";
 }
 
+ContactModel nextContactModel(ContactModel model)
+{
+  const int count = static_cast<int>(sizeof(kContactModels) / sizeof(kContactModels[0]));
+  for (int i = 0; i < count; ++i)
+  {
+    if (kContactModels[i] == model)
+    {
+      return kContactModels[(i + 1) % count];
+    }
+  }
+  return kContactModels[0];
+}
+
+std::string contactModelNames()
+{
+  std::string names;
+  for (ContactModel model : kContactModels)
+  {
+    names += (names.empty() ? "" : ", ") + std::string(contactModelName(model));
+  }
+  return names;
+}
+
 bool parseContactModel(const std::string& text, ContactModel* model)
 {
-  for (ContactModel candidate : {ContactModel::kGodObject, ContactModel::kGodFinger, ContactModel::kSoftFinger})
+  for (ContactModel candidate : kContactModels)
   {
     if (text == contactModelName(candidate))
     {

@@ -141,6 +141,7 @@ struct GodFingerWorld::Impl
     std::unique_ptr<btSphereShape> shape;
     std::unique_ptr<btRigidBody> rigid;
     Eigen::Vector3d initial = Eigen::Vector3d::Zero();
+    CouplingProfile coupling;
     Eigen::Vector3d target = Eigen::Vector3d::Zero();
     Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();
     InterfaceState state;
@@ -483,20 +484,14 @@ struct GodFingerWorld::Impl
   void step()
   {
     const double dt = params.time_step;
-    const CouplingParams& coupling = params.coupling;
     for (Proxy& proxy : proxies)
     {
       const Eigen::Vector3d position = toEigen(proxy.rigid->getWorldTransform().getOrigin());
       const Eigen::Vector3d velocity = toEigen(proxy.rigid->getLinearVelocity());
       const Eigen::Vector3d target_velocity = (proxy.target - proxy.previous_target) / dt;
-      Eigen::Vector3d force =
-          coupling.stiffness * (proxy.target - position) + coupling.damping * (target_velocity - velocity);
-      const double magnitude = force.norm();
-      proxy.state.saturated = magnitude > coupling.max_force;
-      if (proxy.state.saturated)
-      {
-        force *= coupling.max_force / magnitude;
-      }
+      const CouplingForce coupled = couplingForce(proxy.coupling, proxy.target, target_velocity, position, velocity);
+      const Eigen::Vector3d& force = coupled.on_proxy;
+      proxy.state.saturated = coupled.saturated;
       proxy.rigid->applyCentralForce(toBullet(force));
       proxy.state.user_force = -force;
       proxy.state.interface_position = proxy.target;
@@ -570,12 +565,27 @@ GodFingerWorld::~GodFingerWorld()
 
 int GodFingerWorld::addInterface(const Eigen::Vector3d& position)
 {
+  return addInterface(position, impl_->params.coupling);
+}
+
+int GodFingerWorld::addInterface(const Eigen::Vector3d& position, const CouplingProfile& coupling)
+{
   if (!position.allFinite())
   {
     throw InputError("interface start position must be finite");
   }
+  std::string error = validate(coupling);
+  if (error.empty())
+  {
+    error = couplingStabilityError(coupling, impl_->params.coupling.proxy_mass, impl_->params.time_step);
+  }
+  if (!error.empty())
+  {
+    throw InputError(error);
+  }
   Impl::Proxy proxy;
   proxy.initial = position;
+  proxy.coupling = coupling;
   impl_->proxies.push_back(std::move(proxy));
   const int index = static_cast<int>(impl_->proxies.size()) - 1;
   impl_->addProxyToWorld(index);
@@ -638,6 +648,11 @@ int GodFingerWorld::interfaceCount() const
   return static_cast<int>(impl_->proxies.size());
 }
 
+const CouplingProfile& GodFingerWorld::coupling(int interface) const
+{
+  return impl_->proxies.at(interface).coupling;
+}
+
 const InterfaceState& GodFingerWorld::interfaceState(int interface) const
 {
   return impl_->proxies.at(interface).state;
@@ -659,6 +674,23 @@ BodyState GodFingerWorld::bodyState(int body) const
   state.angular_velocity = toEigen(b.rigid->getAngularVelocity());
   state.net_force = b.net_force;
   return state;
+}
+
+void GodFingerWorld::snapshot(WorldSnapshot* out) const
+{
+  out->time = impl_->time;
+  out->steps = impl_->steps;
+  out->model = impl_->params.model;
+  out->bodies.resize(impl_->bodies.size());
+  for (std::size_t i = 0; i < impl_->bodies.size(); ++i)
+  {
+    out->bodies[i] = bodyState(static_cast<int>(i));
+  }
+  out->interfaces.resize(impl_->proxies.size());
+  for (std::size_t i = 0; i < impl_->proxies.size(); ++i)
+  {
+    out->interfaces[i] = impl_->proxies[i].state;
+  }
 }
 
 const SceneDescription& GodFingerWorld::scene() const

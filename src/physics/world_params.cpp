@@ -22,13 +22,10 @@ std::string validate(const WorldParams& params)
     return "parameter 'gravity' must be finite (m/s^2)";
   }
   const CouplingParams& c = params.coupling;
-  if (!(c.stiffness > 0.0 && c.stiffness <= 1e5))
+  const std::string coupling_error = validate(static_cast<const CouplingProfile&>(c));
+  if (!coupling_error.empty())
   {
-    return outOfRange("coupling_stiffness", c.stiffness, "(0, 1e+05]", "N/m");
-  }
-  if (!(c.damping >= 0.0 && c.damping <= 1e3))
-  {
-    return outOfRange("coupling_damping", c.damping, "[0, 1000]", "N s/m");
+    return coupling_error;
   }
   if (!(c.proxy_mass > 0.0 && c.proxy_mass <= 10.0))
   {
@@ -38,22 +35,10 @@ std::string validate(const WorldParams& params)
   {
     return outOfRange("proxy_radius", c.proxy_radius, "(0, 0.1]", "m");
   }
-  if (!(c.max_force > 0.0 && c.max_force <= 1e4))
+  const std::string stability_error = couplingStabilityError(c, c.proxy_mass, params.time_step);
+  if (!stability_error.empty())
   {
-    return outOfRange("max_force", c.max_force, "(0, 1e+04]", "N");
-  }
-  // The coupling force is explicit (from the proxy's state at the start of the step, then
-  // symplectic Euler): in free space it is stable iff k dt^2 / m + 2 c dt / m < 4.
-  const double stability = (c.stiffness * params.time_step + 2.0 * c.damping) * params.time_step / c.proxy_mass;
-  if (!(stability < 4.0))
-  {
-    std::ostringstream message;
-    message
-        << "coupling unstable at this time step: (coupling_stiffness * dt + 2 coupling_damping) * dt / proxy_mass = "
-        << stability << " must be < 4 (stiffness " << c.stiffness << " N/m, damping " << c.damping
-        << " N s/m, proxy_mass " << c.proxy_mass << " kg, dt " << params.time_step
-        << " s): lower the stiffness, damping or time step, or raise proxy_mass";
-    return message.str();
+    return stability_error;
   }
   if (!(params.soft_finger.spinning_friction >= 0.0 && params.soft_finger.spinning_friction <= 1.0))
   {
@@ -85,5 +70,22 @@ void validateOrThrow(const WorldParams& params)
   {
     throw InputError(error);
   }
+}
+
+std::string couplingStabilityError(const CouplingProfile& c, double proxy_mass, double time_step)
+{
+  // The coupling force is explicit (from the proxy's state at the start of the step, then
+  // symplectic Euler): in free space it is stable iff k dt^2 / m + 2 c dt / m < 4.
+  const double stability = (c.stiffness * time_step + 2.0 * c.damping) * time_step / proxy_mass;
+  if (stability < 4.0)
+  {
+    return "";
+  }
+  std::ostringstream message;
+  message << "coupling unstable at this time step: (coupling_stiffness * dt + 2 coupling_damping) * dt / proxy_mass = "
+          << stability << " must be < 4 (stiffness " << c.stiffness << " N/m, damping " << c.damping
+          << " N s/m, proxy_mass " << proxy_mass << " kg, dt " << time_step
+          << " s): lower the stiffness, damping or time step, or raise proxy_mass";
+  return message.str();
 }
 }  // namespace god_finger

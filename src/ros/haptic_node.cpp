@@ -3,7 +3,10 @@
 #include "god_finger/DeviceState.h"
 #include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/virtual_coupling.h"
 #include "god_finger/core/workspace_mapping.h"
+#include "god_finger/physics/contact_model.h"
+#include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
@@ -32,9 +35,7 @@ struct HapticNode::Impl
   ros::NodeHandle nh;
   WorkspaceMapping mapping;
   bool local_coupling = false;
-  double stiffness = 400.0;
-  double damping = 4.0;
-  double max_force = 20.0;
+  CouplingProfile coupling;  // the device's profile: the physics pulls the proxy with the same
   std::string frame;
   ros::Subscriber state_subscriber;
   ros::Subscriber feedback_subscriber;
@@ -56,7 +57,7 @@ struct HapticNode::Impl
   std::uint32_t buttons = 0;
   int pending_model_switch = 0;
   bool pending_reset = false;
-  int model_index = 1;  // god_finger
+  ContactModel model = ContactModel::kGodFinger;  // the physics' initial one (~model)
   long rejected_states = 0;
   long rejected_feedback = 0;
   long states = 0;
@@ -122,14 +123,10 @@ struct HapticNode::Impl
     }
     if (local_coupling && have_proxy)
     {
-      // The hand feels k (p_GO - p_I) + b (v_GO - v_I), saturated as in the physics.
-      Eigen::Vector3d force =
-          stiffness * (proxy - world) + damping * (proxy_velocity - mapping.velocityToWorld(velocity));
-      if (force.norm() > max_force)
-      {
-        force *= max_force / force.norm();
-      }
-      publishForce(state->header.stamp, force);
+      // The hand feels the reaction of the force that pulls the proxy.
+      const CouplingForce coupled =
+          couplingForce(coupling, world, mapping.velocityToWorld(velocity), proxy, proxy_velocity);
+      publishForce(state->header.stamp, -coupled.on_proxy);
     }
   }
 
@@ -228,15 +225,14 @@ struct HapticNode::Impl
       std::swap(switches, pending_model_switch);
       std::swap(reset, pending_reset);
     }
-    static const char* const kModels[] = {"god_object", "god_finger", "soft_finger"};
     for (int i = 0; i < switches; ++i)
     {
-      model_index = (model_index + 1) % 3;
+      model = nextContactModel(model);
       god_finger::SetContactModel call;
-      call.request.model = kModels[model_index];
+      call.request.model = contactModelName(model);
       if (!model_client.call(call) || !call.response.success)
       {
-        ROS_WARN("haptic: could not switch the contact model to %s", kModels[model_index]);
+        ROS_WARN("haptic: could not switch the contact model to %s", contactModelName(model));
       }
       else
       {
@@ -258,17 +254,19 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
 {
   Impl& impl = *impl_;
   impl.nh = nh;
-  WorkspaceMappingParams mapping;
-  mapping.scale = readDouble(pnh, "workspace_scale", 1.0, 0.0, 1e3, "dimensionless", true);
-  mapping.force_scale = readDouble(pnh, "force_scale", 1.0, 0.0, 1e3, "dimensionless", true);
-  mapping.offset = readVector(pnh, "workspace_offset", Eigen::Vector3d::Zero());
-  const Eigen::Vector4d q = readVector(pnh, "workspace_rotation", Eigen::Vector4d(0, 0, 0, 1));
-  mapping.rotation = Eigen::Quaterniond(q[3], q[0], q[1], q[2]);
-  impl.mapping = WorkspaceMapping(mapping);
-  impl.local_coupling = readBool(pnh, "local_coupling", false);
-  impl.stiffness = readDouble(pnh, "coupling_stiffness", 400.0, 0.0, 1e5, "N/m", true);
-  impl.damping = readDouble(pnh, "coupling_damping", 4.0, 0.0, 1e3, "N s/m");
-  impl.max_force = readDouble(pnh, "max_force", 20.0, 0.0, 1e4, "N", true);
+  // The interface's namespace holds its profile and mapping (interface_parameters.h).
+  const InterfaceConfig config = readInterfaceConfig(nh, nh.getNamespace());
+  impl.mapping = WorkspaceMapping(config.mapping);
+  impl.coupling = config.profile.coupling;
+  // Across processes or machines the hand's spring is rendered here, from the freshest device
+  // position, so that no topic latency sits between the hand and its spring.
+  impl.local_coupling = readBool(pnh, "local_coupling", true);
+  const std::string model_name = readString(pnh, "model", contactModelName(impl.model));
+  if (!parseContactModel(model_name, &impl.model))
+  {
+    throw InputError("parameter '" + pnh.resolveName("model") + "' = '" + model_name + "' is not one of " +
+                     contactModelNames());
+  }
   std::string ns = nh.getNamespace();
   while (!ns.empty() && ns.front() == '/')
   {

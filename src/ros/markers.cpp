@@ -47,15 +47,15 @@ visualization_msgs::Marker deleteAll(const std::string& ns, const ros::Time& sta
 }
 }  // namespace
 
-void appendBodyMarkers(const GodFingerWorld& world, const ros::Time& stamp, visualization_msgs::MarkerArray* markers)
+void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world, const ros::Time& stamp,
+                       visualization_msgs::MarkerArray* markers)
 {
   // rviz's DELETEALL clears every namespace: it goes first, and everything is sent again.
   markers->markers.push_back(deleteAll("", stamp));
-  const SceneDescription& scene = world.scene();
-  for (int i = 0; i < world.bodyCount(); ++i)
+  for (std::size_t i = 0; i < world.bodies.size() && i < scene.bodies.size(); ++i)
   {
     const BodyDescription& body = scene.bodies[i];
-    const Eigen::Isometry3d geometry_pose = world.bodyState(i).pose * body.collision_origin;
+    const Eigen::Isometry3d geometry_pose = world.bodies[i].pose * body.collision_origin;
     visualization_msgs::Marker m = marker("bodies", i, visualization_msgs::Marker::CUBE, stamp);
     setPose(&m, geometry_pose);
     switch (body.geometry.kind)
@@ -94,17 +94,16 @@ void appendBodyMarkers(const GodFingerWorld& world, const ros::Time& stamp, visu
   }
 }
 
-void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stamp,
+void appendInteractionMarkers(const WorldSnapshot& world, double proxy_radius, const ros::Time& stamp,
                               visualization_msgs::MarkerArray* markers)
 {
-  const double proxy_radius = world.params().coupling.proxy_radius;
   visualization_msgs::Marker springs = marker("couplings", 0, visualization_msgs::Marker::LINE_LIST, stamp);
   springs.scale.x = 0.001;
   setColor(&springs, 0.2f, 0.9f, 0.2f);
   int area_id = 0;
-  for (int i = 0; i < world.interfaceCount(); ++i)
+  for (std::size_t i = 0; i < world.interfaces.size(); ++i)
   {
-    const InterfaceState& state = world.interfaceState(i);
+    const InterfaceState& state = world.interfaces[i];
     visualization_msgs::Marker proxy = marker("god_objects", i, visualization_msgs::Marker::SPHERE, stamp);
     proxy.pose.position = toPoint(state.proxy_position);
     proxy.scale.x = proxy.scale.y = proxy.scale.z = 2.0 * proxy_radius;

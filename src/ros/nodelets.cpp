@@ -3,6 +3,7 @@
 #include "god_finger/ros/device_driver_node.h"
 #include "god_finger/ros/haptic_node.h"
 #include "god_finger/ros/physics_node.h"
+#include "god_finger/ros/servo_node.h"
 
 #include <nodelet/nodelet.h>
 #include <pluginlib/class_list_macros.hpp>
@@ -40,8 +41,12 @@ class HapticNodelet : public NodeletOf<HapticNode>
 class DeviceDriverNodelet : public NodeletOf<DeviceDriverNode>
 {
 };
+class ServoNodelet : public NodeletOf<ServoNode>
+{
+};
 }  // namespace god_finger
 
 PLUGINLIB_EXPORT_CLASS(god_finger::PhysicsNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(god_finger::HapticNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(god_finger::DeviceDriverNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(god_finger::ServoNodelet, nodelet::Nodelet)

@@ -1,156 +1,80 @@
 #include "god_finger/ros/parameters.h"
 
-#include "god_finger/core/input_error.h"
-
 #include <XmlRpcValue.h>
-
-#include <cmath>
-#include <sstream>
 
 namespace god_finger
 {
 namespace
 {
-std::string fullName(const ros::NodeHandle& nh, const std::string& name)
+ParameterValue fromXmlRpc(XmlRpc::XmlRpcValue& value)
 {
-  return nh.resolveName(name);
-}
-
-bool toNumber(const XmlRpc::XmlRpcValue& value, double* number)
-{
-  if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble)
+  ParameterValue result;
+  switch (value.getType())
   {
-    *number = static_cast<double>(const_cast<XmlRpc::XmlRpcValue&>(value));
-    return true;
+    case XmlRpc::XmlRpcValue::TypeBoolean:
+      return ParameterValue::of(static_cast<bool>(value));
+    case XmlRpc::XmlRpcValue::TypeInt:
+      return ParameterValue::ofInteger(static_cast<int>(value));
+    case XmlRpc::XmlRpcValue::TypeDouble:
+      return ParameterValue::of(static_cast<double>(value));
+    case XmlRpc::XmlRpcValue::TypeString:
+      return ParameterValue::of(static_cast<std::string>(value));
+    case XmlRpc::XmlRpcValue::TypeArray:
+      result.kind = ParameterValue::Kind::kList;
+      for (int i = 0; i < value.size(); ++i)
+      {
+        result.items.push_back(fromXmlRpc(value[i]));
+      }
+      return result;
+    default:
+      // A struct, date or binary: an empty list, which every reader refuses with its message
+      // (a reader of lists of names or rows requires a non-empty one).
+      result.kind = ParameterValue::Kind::kList;
+      return result;
   }
-  if (value.getType() == XmlRpc::XmlRpcValue::TypeInt)
-  {
-    *number = static_cast<int>(const_cast<XmlRpc::XmlRpcValue&>(value));
-    return true;
-  }
-  return false;
-}
-
-[[noreturn]] void notA(const ros::NodeHandle& nh, const std::string& name, const std::string& what)
-{
-  throw InputError("parameter '" + fullName(nh, name) + "' must be " + what);
 }
 }  // namespace
+
+bool RosParameterSource::get(const std::string& name, ParameterValue* value) const
+{
+  XmlRpc::XmlRpcValue raw;
+  if (!nh_.getParam(name, raw))
+  {
+    return false;
+  }
+  *value = fromXmlRpc(raw);
+  return true;
+}
 
 double readDouble(const ros::NodeHandle& nh, const std::string& name, double fallback, double low, double high,
                   const std::string& unit, bool low_open)
 {
-  XmlRpc::XmlRpcValue value;
-  double number = fallback;
-  if (nh.getParam(name, value) && !toNumber(value, &number))
-  {
-    notA(nh, name, "a number (" + unit + ")");
-  }
-  const bool low_ok = low_open ? number > low : number >= low;
-  if (!(low_ok && number <= high))
-  {
-    std::ostringstream message;
-    message << "parameter '" << fullName(nh, name) << "' = " << number << " is out of range " << (low_open ? "(" : "[")
-            << low << ", " << high << "] (" << unit << ")";
-    throw InputError(message.str());
-  }
-  return number;
+  return readDouble(RosParameterSource(nh), name, fallback, low, high, unit, low_open);
 }
 
 int readInt(const ros::NodeHandle& nh, const std::string& name, int fallback, int low, int high)
 {
-  XmlRpc::XmlRpcValue value;
-  int number = fallback;
-  if (nh.getParam(name, value))
-  {
-    if (value.getType() != XmlRpc::XmlRpcValue::TypeInt)
-    {
-      notA(nh, name, "an integer");
-    }
-    number = static_cast<int>(value);
-  }
-  if (number < low || number > high)
-  {
-    std::ostringstream message;
-    message << "parameter '" << fullName(nh, name) << "' = " << number << " is out of range [" << low << ", " << high
-            << "] (count)";
-    throw InputError(message.str());
-  }
-  return number;
+  return readInt(RosParameterSource(nh), name, fallback, low, high);
 }
 
 bool readBool(const ros::NodeHandle& nh, const std::string& name, bool fallback)
 {
-  XmlRpc::XmlRpcValue value;
-  if (!nh.getParam(name, value))
-  {
-    return fallback;
-  }
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeBoolean)
-  {
-    notA(nh, name, "true or false");
-  }
-  return static_cast<bool>(value);
+  return readBool(RosParameterSource(nh), name, fallback);
 }
 
 std::string readString(const ros::NodeHandle& nh, const std::string& name, const std::string& fallback)
 {
-  XmlRpc::XmlRpcValue value;
-  if (!nh.getParam(name, value))
-  {
-    return fallback;
-  }
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeString)
-  {
-    notA(nh, name, "a string");
-  }
-  return static_cast<std::string>(value);
+  return readString(RosParameterSource(nh), name, fallback);
 }
 
 Eigen::VectorXd readVector(const ros::NodeHandle& nh, const std::string& name, const Eigen::VectorXd& fallback)
 {
-  XmlRpc::XmlRpcValue value;
-  if (!nh.getParam(name, value))
-  {
-    return fallback;
-  }
-  const std::string what = "a list of " + std::to_string(fallback.size()) + " numbers";
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray || value.size() != fallback.size())
-  {
-    notA(nh, name, what);
-  }
-  Eigen::VectorXd result(fallback.size());
-  for (int i = 0; i < value.size(); ++i)
-  {
-    if (!toNumber(value[i], &result[i]) || !std::isfinite(result[i]))
-    {
-      notA(nh, name, what + " (finite)");
-    }
-  }
-  return result;
+  return readVector(RosParameterSource(nh), name, fallback);
 }
 
 std::vector<std::string> readStringList(const ros::NodeHandle& nh, const std::string& name,
                                         const std::vector<std::string>& fallback)
 {
-  XmlRpc::XmlRpcValue value;
-  if (!nh.getParam(name, value))
-  {
-    return fallback;
-  }
-  if (value.getType() != XmlRpc::XmlRpcValue::TypeArray || value.size() == 0)
-  {
-    notA(nh, name, "a non-empty list of names");
-  }
-  std::vector<std::string> result;
-  for (int i = 0; i < value.size(); ++i)
-  {
-    if (value[i].getType() != XmlRpc::XmlRpcValue::TypeString || static_cast<std::string>(value[i]).empty())
-    {
-      notA(nh, name, "a non-empty list of names");
-    }
-    result.push_back(static_cast<std::string>(value[i]));
-  }
-  return result;
+  return readStringList(RosParameterSource(nh), name, fallback);
 }
 }  // namespace god_finger

@@ -8,9 +8,11 @@
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/ros/conversions.h"
-#include "god_finger/ros/markers.h"
+#include "god_finger/ros/interface_parameters.h"
+#include "god_finger/ros/world_messages.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
+#include "god_finger/ros/reconfigure.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/server.h>
@@ -31,44 +33,6 @@
 
 namespace god_finger
 {
-namespace
-{
-WorldParams readWorldParams(const ros::NodeHandle& pnh)
-{
-  WorldParams params;
-  const double rate = readDouble(pnh, "rate", 1000.0, 10.0, 10000.0, "Hz");
-  params.time_step = 1.0 / rate;
-  params.solver_iterations = readInt(pnh, "solver_iterations", params.solver_iterations, 1, 1000);
-  const std::string model = readString(pnh, "model", contactModelName(params.model));
-  if (!parseContactModel(model, &params.model))
-  {
-    throw InputError("parameter '" + pnh.resolveName("model") + "' = '" + model +
-                     "' is not one of god_object, god_finger, soft_finger");
-  }
-  ContactParams& contact = params.contact;
-  // Ranges are the core's (validate() below names the parameter); here only the types.
-  contact.max_radius = readDouble(pnh, "r_max", contact.max_radius, -INFINITY, INFINITY, "m");
-  contact.distance_constant = readDouble(pnh, "d0", 0.001, -INFINITY, INFINITY, "m");
-  contact.alpha = readDouble(pnh, "alpha", contact.alpha, -INFINITY, INFINITY, "dimensionless");
-  contact.sub_god_objects = readInt(pnh, "n_sgo", contact.sub_god_objects, -1000000, 1000000);
-  contact.max_angle = readDouble(pnh, "tau_a", contact.max_angle, -INFINITY, INFINITY, "rad");
-  contact.friction = readDouble(pnh, "friction", contact.friction, -INFINITY, INFINITY, "dimensionless");
-  const std::string walk = readString(pnh, "walk", walkVariantName(contact.walk));
-  if (!parseWalkVariant(walk, &contact.walk))
-  {
-    throw InputError("parameter '" + pnh.resolveName("walk") + "' = '" + walk + "' is not one of project, unfold");
-  }
-  CouplingParams& coupling = params.coupling;
-  coupling.stiffness = readDouble(pnh, "coupling_stiffness", coupling.stiffness, -INFINITY, INFINITY, "N/m");
-  coupling.damping = readDouble(pnh, "coupling_damping", coupling.damping, -INFINITY, INFINITY, "N s/m");
-  coupling.max_force = readDouble(pnh, "max_force", coupling.max_force, -INFINITY, INFINITY, "N");
-  coupling.proxy_radius = readDouble(pnh, "proxy_radius", coupling.proxy_radius, -INFINITY, INFINITY, "m");
-  coupling.proxy_mass = readDouble(pnh, "proxy_mass", coupling.proxy_mass, -INFINITY, INFINITY, "kg");
-  validateOrThrow(params);
-  return params;
-}
-
-}  // namespace
 
 struct PhysicsNode::Impl
 {
@@ -76,6 +40,7 @@ struct PhysicsNode::Impl
   {
     std::string name;
     int index = -1;  // in the world, once the first pose came
+    CouplingProfile coupling;  // the device's (NAME/coupling_*), as its haptic node renders it
     ros::Subscriber pose_subscriber;
     ros::Publisher feedback_publisher;
     ros::Publisher proxy_publisher;
@@ -108,6 +73,7 @@ struct PhysicsNode::Impl
   god_finger::GodFingerConfig last_good_config;
   bool have_good_config = false;
   std::vector<double> step_us;
+  WorldSnapshot snapshot;  // read by publishScene
 
   void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
   {
@@ -159,21 +125,12 @@ struct PhysicsNode::Impl
   void onReconfigure(god_finger::GodFingerConfig& config, std::uint32_t)
   {
     ContactModel model;
+    ContactParams contact;
+    std::string error;
     std::lock_guard<std::mutex> lock(mutex);
-    ContactParams contact = world->params().contact;
-    contact.max_radius = config.r_max;
-    contact.distance_constant = config.d0;
-    contact.alpha = config.alpha;
-    contact.sub_god_objects = config.n_sgo;
-    contact.max_angle = config.tau_a;
-    contact.friction = config.friction;
-    const bool walk_ok = parseWalkVariant(config.walk, &contact.walk);
-    const bool model_ok = parseContactModel(config.model, &model);
-    const std::string error = validate(contact);
-    if (!walk_ok || !model_ok || !error.empty())
+    if (!contactFromConfig(config, world->params().contact, &contact, &model, &error))
     {
-      ROS_WARN("physics: reconfiguration refused (%s); the previous parameters stay",
-               !error.empty() ? error.c_str() : "unknown model or walk");
+      ROS_WARN("physics: reconfiguration refused (%s); the previous parameters stay", error.c_str());
       if (have_good_config)
       {
         config = last_good_config;
@@ -192,7 +149,7 @@ struct PhysicsNode::Impl
     if (!parseContactModel(request.model, &model))
     {
       response.success = false;
-      response.message = "unknown contact model '" + request.model + "' (god_object, god_finger, soft_finger)";
+      response.message = "unknown contact model '" + request.model + "' (" + contactModelNames() + ")";
       return true;
     }
     std::lock_guard<std::mutex> lock(mutex);
@@ -215,7 +172,7 @@ struct PhysicsNode::Impl
       }
       if (interface.index < 0)
       {
-        interface.index = world->addInterface(interface.target);
+        interface.index = world->addInterface(interface.target, interface.coupling);
       }
       world->setInterfaceTarget(interface.index, interface.target);
     }
@@ -247,61 +204,24 @@ struct PhysicsNode::Impl
 
   void publishScene()
   {
-    std::lock_guard<std::mutex> lock(mutex);
-    const ros::Time stamp = ros::Time::now();
-    god_finger::ContactAreaArrayPtr areas(new god_finger::ContactAreaArray);
-    areas->header.stamp = stamp;
-    areas->header.frame_id = "world";
-    for (const Interface& interface : interfaces)
+    std::vector<std::string> names(interfaces.size());
     {
-      if (interface.index < 0)
+      std::lock_guard<std::mutex> lock(mutex);
+      world->snapshot(&snapshot);
+      // The snapshot lists the world's interfaces, which are added in the order poses came.
+      for (const Interface& interface : interfaces)
       {
-        continue;
-      }
-      const InterfaceState& state = world->interfaceState(interface.index);
-      for (int c = 0; c < state.contact_count; ++c)
-      {
-        const WorldContactArea& area = state.contacts[c];
-        god_finger::ContactArea message;
-        message.header = areas->header;
-        message.interface = interface.name;
-        message.object = world->scene().bodies[area.body].name;
-        message.point = toPoint(area.point);
-        message.normal = toVector(area.normal);
-        message.depth = area.depth;
-        message.feature = static_cast<std::uint8_t>(area.feature);
-        message.radius = area.radius;
-        for (int k = 0; k < area.sub_god_object_count; ++k)
+        if (interface.index >= 0)
         {
-          message.sub_god_objects.push_back(toPoint(area.positions[k]));
+          names[interface.index] = interface.name;
         }
-        areas->areas.push_back(message);
       }
     }
-    contact_publisher.publish(areas);
-
-    visualization_msgs::MarkerArrayPtr markers(new visualization_msgs::MarkerArray);
-    appendBodyMarkers(*world, stamp, markers.get());
-    appendInteractionMarkers(*world, stamp, markers.get());
-    marker_publisher.publish(markers);
-
-    std::vector<geometry_msgs::TransformStamped> transforms;
-    for (int i = 0; i < world->bodyCount(); ++i)
-    {
-      const BodyState body = world->bodyState(i);
-      geometry_msgs::TransformStamped transform;
-      transform.header.stamp = stamp;
-      transform.header.frame_id = "world";
-      transform.child_frame_id = world->scene().bodies[i].name;
-      transform.transform.translation = toVector(body.pose.translation());
-      const Eigen::Quaterniond q(body.pose.linear());
-      transform.transform.rotation.x = q.x();
-      transform.transform.rotation.y = q.y();
-      transform.transform.rotation.z = q.z();
-      transform.transform.rotation.w = q.w();
-      transforms.push_back(transform);
-    }
-    broadcaster.sendTransform(transforms);
+    const ros::Time stamp = ros::Time::now();
+    const SceneDescription& scene = world->scene();
+    contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
+    marker_publisher.publish(markerMessage(scene, snapshot, world->params().coupling.proxy_radius, stamp));
+    broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
   }
 
   void publishDiagnostics(double seconds, long steps)
@@ -404,6 +324,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   {
     Impl::Interface& interface = impl.interfaces[i];
     interface.name = names[i];
+    interface.coupling = readInterfaceConfig(ros::NodeHandle(nh, names[i]), names[i]).profile.coupling;
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
         names[i] + "/pose", kSubscriberQueue,
         [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),
@@ -420,15 +341,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   // until someone reconfigures.
   impl.reconfigure =
       std::make_unique<dynamic_reconfigure::Server<god_finger::GodFingerConfig>>(impl.reconfigure_mutex, pnh);
-  god_finger::GodFingerConfig initial;
-  initial.model = contactModelName(params.model);
-  initial.r_max = params.contact.max_radius;
-  initial.d0 = params.contact.distance_constant;
-  initial.alpha = params.contact.alpha;
-  initial.n_sgo = params.contact.sub_god_objects;
-  initial.tau_a = params.contact.max_angle;
-  initial.friction = params.contact.friction;
-  initial.walk = walkVariantName(params.contact.walk);
+  const god_finger::GodFingerConfig initial = configOf(params);
   impl.reconfigure->updateConfig(initial);
   impl.reconfigure->setCallback([this](god_finger::GodFingerConfig& config, std::uint32_t level)
                                 { impl_->onReconfigure(config, level); });

@@ -2,10 +2,7 @@
 
 #include <ros/console.h>
 
-#include <pthread.h>
-#include <sched.h>
-
-#include <cstring>
+#include "god_finger/runtime/servo_clock.h"
 
 namespace god_finger
 {
@@ -15,15 +12,12 @@ bool requestRealTimePriority(int priority, const std::string& who)
   {
     return false;
   }
-  sched_param parameters{};
-  parameters.sched_priority = priority;
-  const int error = pthread_setschedparam(pthread_self(), SCHED_FIFO, &parameters);
-  if (error != 0)
+  if (!setRealTimePriority(priority))
   {
     ROS_WARN(
-        "%s: runs without real-time priority (SCHED_FIFO %d: %s); grant CAP_SYS_NICE or an rtprio limit "
+        "%s: runs without real-time priority (SCHED_FIFO %d not permitted); grant CAP_SYS_NICE or an rtprio limit "
         "for steadier 1 kHz timing",
-        who.c_str(), priority, std::strerror(error));
+        who.c_str(), priority);
     return false;
   }
   ROS_INFO("%s: servo thread at real-time priority %d (SCHED_FIFO)", who.c_str(), priority);

@@ -56,7 +56,7 @@ namespace
 TEST(ReplayDevice, FollowsTheTrackAndIgnoresTheForce)
 {
   ReplayDevice device(WaypointPath({{0.0, Eigen::Vector3d(0, 0, 0)}, {1.0, Eigen::Vector3d(0.1, 0.2, 0)}}));
-  device.setStart(5.0);
+  device.setScriptStart(5.0);
   EXPECT_EQ(device.update(4.0, Eigen::Vector3d(100, 0, 0)).position, Eigen::Vector3d::Zero());  // waits
   const DeviceReading middle = device.update(5.5, Eigen::Vector3d(0, 0, -50));
   EXPECT_LT((middle.position - Eigen::Vector3d(0.05, 0.1, 0)).norm(), 1e-15);

@@ -99,7 +99,7 @@ TEST(FalconDevice, AxesAndUnitsFollowRep103)
   // Round trip of the rotation (it is proper: a force along the motion does positive work).
   const Eigen::Vector3d step(0.001, 0.002, -0.001);
   const Eigen::Vector3d force(1.0, -2.0, 0.5);
-  const std::array<double, 3> falcon_force = FalconDevice::deviceToFalcon(force);
+  const std::array<double, 3> falcon_force = deviceForceToVendorAxes(force);
   const std::array<double, 3> falcon_step{-step.y(), step.z(), -step.x()};
   EXPECT_NEAR(falcon_force[0] * falcon_step[0] + falcon_force[1] * falcon_step[1] + falcon_force[2] * falcon_step[2],
               force.dot(step), 1e-15);

@@ -124,7 +124,7 @@ TEST(OmniDevice, AxesAndUnitsFollowRep103)
   // The rotation is proper: a force along the motion does the same work in both frames.
   const Eigen::Vector3d step(0.001, 0.002, -0.001);
   const Eigen::Vector3d force(1.0, -2.0, 0.5);
-  const std::array<double, 3> omni_force = OmniDevice::deviceToOmni(force);
+  const std::array<double, 3> omni_force = deviceForceToVendorAxes(force);
   const std::array<double, 3> omni_step{-step.y(), step.z(), -step.x()};
   EXPECT_NEAR(omni_force[0] * omni_step[0] + omni_force[1] * omni_step[1] + omni_force[2] * omni_step[2],
               force.dot(step), 1e-15);

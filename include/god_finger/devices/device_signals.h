@@ -7,9 +7,14 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 
 namespace god_finger
 {
+// The Falcon's and the Omni's own frames share their axes (x to the user's right, y up, z
+// towards the user): a force in the device frame (REP-103 as the user sees it) in theirs.
+std::array<double, 3> deviceForceToVendorAxes(const Eigen::Vector3d& force);
+
 // `force` scaled down to `max_force` if longer (direction kept); non-finite forces become zero.
 Eigen::Vector3d motorCommand(const Eigen::Vector3d& force, double max_force);
 

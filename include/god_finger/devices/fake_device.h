@@ -7,6 +7,7 @@
 // update() calls, split into sub-steps of at most 1 ms. Deterministic for identical calls.
 #pragma once
 
+#include "god_finger/core/parameter_source.h"
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/devices/haptic_device.h"
 
@@ -22,6 +23,12 @@ struct FakeDeviceParams
   double grip_damping = 20;      // N s/m, range [0, 1e4]
 };
 std::string validate(const FakeDeviceParams& params);
+// handle_mass, handle_damping, grip_stiffness, grip_damping (defaults above); InputError on a
+// bad one.
+FakeDeviceParams readFakeDeviceParams(const ParameterSource& source);
+// `script`: a list of [t, x, y, z] waypoints (s, m, device frame); without it the hand holds
+// the handle at `fallback` (m). InputError on a malformed script.
+WaypointPath readScript(const ParameterSource& source, const Eigen::Vector3d& fallback);
 
 class FakeDevice : public HapticDevice
 {
@@ -37,14 +44,15 @@ class FakeDevice : public HapticDevice
   // Makes the script's time 0 the given time of update()'s clock (several fake devices then
   // follow their scripts in step); before it the hand waits at the first waypoint. Without
   // it, the script starts at the first update.
-  void setScriptStart(double time)
+  void setScriptStart(double time) override
   {
     start_time_ = time;
     script_start_set_ = true;
   }
   // From now on the hand holds the handle at `position` (m, device frame) instead of following
-  // the script: an interactive hand (an rviz marker dragged with the mouse). Thread-safe.
-  void setHandTarget(const Eigen::Vector3d& position);
+  // the script: an interactive hand (an rviz marker dragged with the mouse). Thread-safe; a
+  // non-finite position is ignored.
+  bool setHandTarget(const Eigen::Vector3d& position) override;
   // The update() time at which the script's time is 0.
   double startTime() const
   {

@@ -12,6 +12,7 @@
 // as zero.
 #pragma once
 
+#include "god_finger/core/parameter_source.h"
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
 
@@ -48,9 +49,13 @@ struct FalconParams
   int firmware_attempts = 10;    // range [1, 100]: loading fails now and then over USB
   double homing_timeout = 30.0;  // s, range (0, 600]: time the user has to home it
   double max_force = 8.9;        // N, range (0, 8.9]: the Falcon's rated peak
-  double center_z = 0.11;        // m: Falcon z of the workspace centre
+  double center_z = 0.11;        // m, range [0, 0.3]: Falcon z of the workspace centre
   int io_failures_allowed = 50;  // consecutive failed USB cycles before giving up
 };
+
+// index, firmware_attempts, homing_timeout, center_z from `source` (ranges above); max_force is
+// the profile's limit, capped at the Falcon's rating. InputError on a bad one.
+FalconParams readFalconParams(const ParameterSource& source, double max_force);
 
 class FalconDevice : public HapticDevice
 {
@@ -69,7 +74,6 @@ class FalconDevice : public HapticDevice
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
 
   static Eigen::Vector3d falconToDevice(const std::array<double, 3>& falcon, double center_z);
-  static std::array<double, 3> deviceToFalcon(const Eigen::Vector3d& force);
   int firmwareAttempts() const
   {
     return firmware_attempts_;

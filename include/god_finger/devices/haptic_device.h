@@ -38,5 +38,16 @@ class HapticDevice
   // One servo tick at `time` (s, monotonic): applies `force` (N, device frame, already
   // guarded) and reads the state. Throws DeviceError on a fault it cannot recover from.
   virtual DeviceReading update(double time, const Eigen::Vector3d& force) = 0;
+  // Simulated devices that follow a script (fake, replay): the time of update()'s clock at
+  // which the script's time 0 is played, so that the devices of one session move in step.
+  // Devices a person holds ignore it.
+  virtual void setScriptStart(double /*time*/) {}
+  // Devices moved by a simulated hand (interactive): from now on the hand holds the handle at
+  // `position` (m, device frame). Returns false for devices that take no hand target. The fake
+  // backend's is thread-safe; the servo loop calls it from its own thread.
+  virtual bool setHandTarget(const Eigen::Vector3d& /*position*/)
+  {
+    return false;
+  }
 };
 }  // namespace god_finger

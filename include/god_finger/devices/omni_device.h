@@ -12,6 +12,7 @@
 // maximum); non-finite forces are sent as zero.
 #pragma once
 
+#include "god_finger/core/parameter_source.h"
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
 
@@ -62,6 +63,10 @@ struct OmniParams
   int io_failures_allowed = 50;                    // consecutive failed servo frames before giving up
 };
 
+// device_name, calibration_timeout, center_mm ([x, y, z], mm, Omni frame) from `source`;
+// max_force is the profile's limit. InputError on a bad one.
+OmniParams readOmniParams(const ParameterSource& source, double max_force);
+
 class OmniDevice : public HapticDevice
 {
  public:
@@ -79,7 +84,6 @@ class OmniDevice : public HapticDevice
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
 
   static Eigen::Vector3d omniToDevice(const std::array<double, 3>& omni_mm, const std::array<double, 3>& center_mm);
-  static std::array<double, 3> deviceToOmni(const Eigen::Vector3d& force);
   // The force limit in use after start(): min(max_force, nominal maximum if the device reports one).
   double forceLimit() const
   {

@@ -3,7 +3,7 @@
 // session's interface motion is reproduced exactly, and with it (up to the loop's timing
 // jitter) the objects' motion.
 //
-// Units: s, m. The track's time 0 is its first sample; setStart() says when that is played.
+// Units: s, m. The track's time 0 is its first sample; setScriptStart() says when that is played.
 #pragma once
 
 #include "god_finger/core/waypoint_path.h"
@@ -21,7 +21,7 @@ class ReplayDevice : public HapticDevice
   }
   void start() override {}
   // Plays the track's time 0 at `time` of update()'s clock; by default at the first update.
-  void setStart(double time)
+  void setScriptStart(double time) override
   {
     start_ = time;
     start_set_ = true;

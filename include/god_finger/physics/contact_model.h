@@ -14,4 +14,10 @@ enum class ContactModel
 const char* contactModelName(ContactModel model);
 // "god_object", "god_finger", "soft_finger"; false on anything else.
 bool parseContactModel(const std::string& text, ContactModel* model);
+// The models in order, for lists and the device's model button (which cycles through them).
+constexpr ContactModel kContactModels[] = {ContactModel::kGodObject, ContactModel::kGodFinger,
+                                           ContactModel::kSoftFinger};
+ContactModel nextContactModel(ContactModel model);
+// "god_object, god_finger, soft_finger".
+std::string contactModelNames();
 }  // namespace god_finger

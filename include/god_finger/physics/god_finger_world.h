@@ -2,7 +2,8 @@
 //
 // One step (fixed time step, deterministic: the same calls give the same trajectory bit for
 // bit):
-//  1. each proxy gets the coupling force k (p_I - p_GO) + b (v_I - v_GO), saturated;
+//  1. each proxy gets the coupling force k (p_I - p_GO) + b (v_I - v_GO), saturated
+//     (core/virtual_coupling.h, with its interface's profile);
 //  2. Bullet's collision detection finds the proxies' contacts;
 //  3. kGodFinger: for the deepest contact of each (proxy, object) pair, the contact area is
 //     computed on the object's walk surface and every active sub-god-object is added to the
@@ -60,6 +61,17 @@ struct BodyState
       Eigen::Vector3d::Zero();  // N on the centre of mass, m dv/dt over the last step (gravity included)
 };
 
+// Everything an observer shows of a world at one step (markers, TF, contact-area messages),
+// copied out so that it can be read in another thread while the world steps on.
+struct WorldSnapshot
+{
+  double time = 0.0;  // s, world time of the step
+  long steps = 0;
+  ContactModel model = ContactModel::kGodFinger;
+  std::vector<BodyState> bodies;          // by scene body index
+  std::vector<InterfaceState> interfaces;  // by interface index
+};
+
 class GodFingerWorld
 {
  public:
@@ -69,8 +81,13 @@ class GodFingerWorld
   GodFingerWorld(const GodFingerWorld&) = delete;
   GodFingerWorld& operator=(const GodFingerWorld&) = delete;
 
-  // Adds a finger: a proxy at `position` (m, world). Returns its index.
+  // Adds a finger: a proxy at `position` (m, world) pulled with the world's coupling profile
+  // (params().coupling) or the device's own. Returns its index. Throws InputError on a
+  // non-finite position, a bad profile, or one unstable at this time step and proxy mass.
   int addInterface(const Eigen::Vector3d& position);
+  int addInterface(const Eigen::Vector3d& position, const CouplingProfile& coupling);
+  // The profile that pulls this interface's proxy (the hand must feel the same).
+  const CouplingProfile& coupling(int interface) const;
   // The device's position in the world for the next step; non-finite values are ignored
   // (and counted), the previous target stays.
   void setInterfaceTarget(int interface, const Eigen::Vector3d& position);
@@ -89,6 +106,9 @@ class GodFingerWorld
   int bodyCount() const;
   BodyState bodyState(int body) const;
   const SceneDescription& scene() const;
+  // Fills `out` with the current state. Allocates only when out's vectors are smaller than
+  // the body or interface count (so a snapshot buffer filled once never allocates again).
+  void snapshot(WorldSnapshot* out) const;
   const TriangleMesh& walkSurface(int body) const;
   // Contact points the solver received in the last step, all pairs (test hook for the
   // Bullet manifold limits).

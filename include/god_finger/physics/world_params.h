@@ -3,6 +3,7 @@
 #pragma once
 
 #include "god_finger/core/contact_params.h"
+#include "god_finger/core/virtual_coupling.h"
 #include "god_finger/physics/contact_model.h"
 
 #include <Eigen/Core>
@@ -10,15 +11,13 @@
 
 namespace god_finger
 {
-// The virtual coupling (Colgate et al. 1995): a spring-damper between the interface position
-// p_I and the god-object p_GO. The god-object is a small sphere with locked rotation.
-struct CouplingParams
+// The virtual coupling's default profile (core/virtual_coupling.h: stiffness, damping,
+// max_force; an interface may bring its device's own) and the god-object it pulls: a small
+// sphere with locked rotation.
+struct CouplingParams : CouplingProfile
 {
-  double stiffness = 400.0;     // N/m, range (0, 1e5]; the device profile's stable value
-  double damping = 4.0;         // N s/m, range [0, 1e3]; near critical for the proxy mass
   double proxy_mass = 0.02;     // kg, range (0, 10]
   double proxy_radius = 0.003;  // m, range (0, 0.1]
-  double max_force = 20.0;      // N, range (0, 1e4]: the coupling force is saturated here
 };
 
 // The soft-finger baseline: Bullet's torsional and rolling friction at the single point.
@@ -62,5 +61,8 @@ struct WorldParams
 };
 
 std::string validate(const WorldParams& params);
+// Empty when `profile` pulling a proxy of `proxy_mass` (kg) is stable at `time_step` (s): the
+// coupling is explicit, stable in free space iff (k dt + 2 b) dt / m < 4; else one line saying so.
+std::string couplingStabilityError(const CouplingProfile& profile, double proxy_mass, double time_step);
 void validateOrThrow(const WorldParams& params);
 }  // namespace god_finger

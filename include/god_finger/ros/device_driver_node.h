@@ -2,13 +2,14 @@
 //
 // Publishes device/state (god_finger/DeviceState) every tick; subscribes device/force
 // (geometry_msgs/Vector3Stamped, device frame, N). Every force goes through a ForceGuard:
-// saturated to ~max_force, rejected (and counted) when not finite, ramped to zero within
-// ~ramp_time when no command came for ~command_timeout. /diagnostics at 1 Hz: rate, overruns,
-// rejected and saturated commands, watchdog state.
+// saturated to the profile's max_force, rejected (and counted) when not finite, ramped to zero
+// within ramp_time when no command came for command_timeout. /diagnostics at 1 Hz: rate,
+// overruns, rejected and saturated commands, watchdog state.
 //
-// ~backend: fake (a simulated handle held by a scripted hand: ~script, a list of
-// [t, x, y, z] waypoints in s and m, device frame; ~handle_mass, ~handle_damping,
-// ~grip_stiffness, ~grip_damping), falcon, omni (need their SDKs), interactive, replay.
+// The device, its profile and parameters are the interface's, in the node's namespace
+// (ros/interface_parameters.h): backend (devices/device_registry.h: fake, interactive, replay,
+// falcon, omni) and the backend's own parameters. Private: rate (Hz), realtime_priority,
+// frame, script_delay.
 #pragma once
 
 #include <ros/node_handle.h>

@@ -4,10 +4,13 @@
 // frame world: the interface position mapped by WorkspaceMapping) and its TF (world ->
 // ~interface_frame). Turns feedback (geometry_msgs/WrenchStamped, world) into device/force
 // (geometry_msgs/Vector3Stamped, device frame).
-// With ~local_coupling the node renders the virtual coupling itself from the freshest device
-// position and the last god-object position (proxy, geometry_msgs/PointStamped), on every
-// device state (multi-rate rendering: topic latency then delays the proxy, not the spring);
-// otherwise it forwards the physics' feedback.
+// With ~local_coupling (the default) the node renders the virtual coupling itself, with the
+// device's profile (the one the physics pulls the proxy with, read from the interface's
+// namespace), from the freshest device position and the last god-object position (proxy,
+// geometry_msgs/PointStamped), on every device state (multi-rate rendering: topic latency then
+// delays the proxy, not the spring); otherwise it forwards the physics' feedback. Workspace
+// mapping: the interface's workspace_scale, force_scale, workspace_offset, workspace_rotation.
+// ~model: the physics' initial contact model (where button 0 cycles from).
 // Buttons: button 0 cycles the contact model (god_object -> god_finger -> soft_finger), button
 // 1 resets the scene (services set_contact_model, reset_scene, resolved in ~physics_namespace).
 // Non-finite device states are rejected and counted (diagnostics), never published.

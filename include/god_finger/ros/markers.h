@@ -19,8 +19,10 @@ constexpr double kContactAreaLift = 5e-4;
 
 // A DELETEALL (rviz clears every namespace with it), then the bodies at their current poses.
 // Call first, then appendInteractionMarkers: the whole picture is sent at each publish.
-void appendBodyMarkers(const GodFingerWorld& world, const ros::Time& stamp, visualization_msgs::MarkerArray* markers);
-// Contact areas, proxies, interfaces, couplings and forces of every interface.
-void appendInteractionMarkers(const GodFingerWorld& world, const ros::Time& stamp,
+void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world, const ros::Time& stamp,
+                       visualization_msgs::MarkerArray* markers);
+// Contact areas, proxies (spheres of proxy_radius, m), interfaces, couplings and forces of
+// every interface.
+void appendInteractionMarkers(const WorldSnapshot& world, double proxy_radius, const ros::Time& stamp,
                               visualization_msgs::MarkerArray* markers);
 }  // namespace god_finger

@@ -1,7 +1,10 @@
-// Reading node parameters with a unit, a default and a range, checked at start-up: a bad
-// value is an InputError whose one line names the parameter, its value and the allowed range
-// (the node then stops with that line).
+// Node parameters through the ROS-free readers of core/parameter_source.h: a ParameterSource
+// over a node handle, and the same typed readers taking the node handle directly. A bad value
+// is an InputError whose one line names the parameter, its value and the allowed range (the
+// node then stops with that line).
 #pragma once
+
+#include "god_finger/core/parameter_source.h"
 
 #include <ros/node_handle.h>
 
@@ -11,6 +14,21 @@
 
 namespace god_finger
 {
+// The parameters under a node handle's namespace (names relative to it, as NodeHandle takes).
+class RosParameterSource : public ParameterSource
+{
+ public:
+  explicit RosParameterSource(ros::NodeHandle nh) : nh_(std::move(nh)) {}
+  bool get(const std::string& name, ParameterValue* value) const override;
+  std::string fullName(const std::string& name) const override
+  {
+    return nh_.resolveName(name);
+  }
+
+ private:
+  ros::NodeHandle nh_;
+};
+
 // A number in [low, high] (or (low, high] when low_open).
 double readDouble(const ros::NodeHandle& nh, const std::string& name, double fallback, double low, double high,
                   const std::string& unit, bool low_open = false);

@@ -12,7 +12,8 @@
 // Parameters (private; checked at start-up, a bad one is an InputError naming it): scene (URDF
 // path, required), interfaces (["finger"]), rate (Hz, 1000), publish_rate (Hz, 60), model,
 // solver_iterations, the method's r_max, d0, alpha, n_sgo, tau_a, friction, walk, and the
-// coupling's coupling_stiffness, coupling_damping, max_force, proxy_radius, proxy_mass.
+// proxies' proxy_radius and proxy_mass. Each interface's proxy is pulled with its device's coupling
+// profile, read from NAME/ (ros/interface_parameters.h), as its haptic node renders it.
 #pragma once
 
 #include <ros/node_handle.h>

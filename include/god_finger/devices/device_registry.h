@@ -1,0 +1,50 @@
+// Every device backend, by name: the one list the driver node, the servo loop and the tools
+// build devices from. Adding a device is a backend in devices/ plus one row in
+// src/devices/registry/device_registry.cpp (and CMake, for a vendor library).
+//
+// Each backend reads and validates its own parameters from a ParameterSource (no ROS), so a
+// bad one is an InputError naming it, and a missing vendor library a DeviceError saying what
+// to install.
+#pragma once
+
+#include "god_finger/core/parameter_source.h"
+#include "god_finger/core/waypoint_path.h"
+#include "god_finger/devices/haptic_device.h"
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace god_finger
+{
+struct DeviceContext
+{
+  explicit DeviceContext(const ParameterSource& source) : params(source) {}
+  const ParameterSource& params;  // the device's own parameters (the driver's private namespace)
+  double max_force = 8.0;         // N: the device profile's limit (hardware clamps to it as well)
+  // When the script's time 0 is played, on update()'s clock (s); NaN: at the first update.
+  double script_start = NAN;
+  // Replay: reads the recorded device positions of `topic` in the file `bag`; empty where no
+  // recording can be read (then backend replay is refused).
+  std::function<WaypointPath(const std::string& bag, const std::string& topic)> read_track;
+  std::string default_track_topic = "device/state";
+};
+
+struct DeviceBackend
+{
+  const char* name;
+  const char* profile;  // config/devices/PROFILE.yaml: force limit, coupling, workspace
+  bool simulated;       // needs no hardware (can run on simulated time, in lockstep)
+  std::unique_ptr<HapticDevice> (*make)(const DeviceContext& context);
+};
+
+const std::vector<DeviceBackend>& deviceBackends();
+// "fake, interactive, replay, falcon, omni".
+std::string deviceBackendNames();
+// InputError naming `parameter` and the known names when there is no such backend.
+const DeviceBackend& findDeviceBackend(const std::string& name, const std::string& parameter);
+// Builds (does not start) the device; its script starts at context.script_start.
+std::unique_ptr<HapticDevice> makeDevice(const DeviceBackend& backend, const DeviceContext& context);
+}  // namespace god_finger

@@ -1,0 +1,35 @@
+// Parameters shared by the nodes, read in one place each:
+//  - the world (the physics node's and the servo node's private parameters);
+//  - an interface's (a device's) parameters, all in the interface's namespace NAME/, where
+//    interface.launch puts them once: the device profile (config/devices/PROFILE.yaml:
+//    max_force, command_timeout, ramp_time, coupling_stiffness, coupling_damping,
+//    workspace_radius, and the fake handle's), the backend and its parameters (backend, script,
+//    bag, start, index, ...), and the workspace mapping (workspace_scale, force_scale,
+//    workspace_offset [m], workspace_rotation [x, y, z, w]).
+// The driver, the haptic node, the physics node and the servo node all read an interface from
+// there, so the spring the hand feels is the one that pulls its proxy.
+#pragma once
+
+#include "god_finger/core/device_profile.h"
+#include "god_finger/core/workspace_mapping.h"
+#include "god_finger/physics/world_params.h"
+
+#include <ros/node_handle.h>
+
+#include <string>
+
+namespace god_finger
+{
+// rate (Hz), solver_iterations, model, r_max, d0, alpha, n_sgo, tau_a, friction, walk,
+// proxy_radius, proxy_mass. InputError naming the first bad one.
+WorldParams readWorldParams(const ros::NodeHandle& pnh);
+
+struct InterfaceConfig
+{
+  std::string name;
+  DeviceProfile profile;
+  WorkspaceMappingParams mapping;
+};
+// `interface_nh` is the interface's namespace (NAME/).
+InterfaceConfig readInterfaceConfig(const ros::NodeHandle& interface_nh, const std::string& name);
+}  // namespace god_finger

@@ -1,0 +1,26 @@
+// The messages a world snapshot is published as, the same for the physics node and the servo
+// node: contact areas (god_finger/ContactAreaArray), markers, and the TF of every body
+// (world -> link name). All in frame `world`, SI units. Not real-time: they allocate.
+#pragma once
+
+#include "god_finger/ContactAreaArray.h"
+#include "god_finger/physics/god_finger_world.h"
+
+#include <geometry_msgs/TransformStamped.h>
+#include <ros/time.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <string>
+#include <vector>
+
+namespace god_finger
+{
+// `interface_names[i]` names the world's interface i.
+god_finger::ContactAreaArrayPtr contactAreaMessage(const SceneDescription& scene, const WorldSnapshot& world,
+                                                   const std::vector<std::string>& interface_names,
+                                                   const ros::Time& stamp);
+visualization_msgs::MarkerArrayPtr markerMessage(const SceneDescription& scene, const WorldSnapshot& world,
+                                                 double proxy_radius, const ros::Time& stamp);
+std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescription& scene, const WorldSnapshot& world,
+                                                            const ros::Time& stamp);
+}  // namespace god_finger

@@ -1,0 +1,43 @@
+// Statistics of the servo loop's samples over a window (the publisher side: not real-time,
+// it keeps every sample of the window): rate, and percentiles of the period, the
+// device-to-force latency and the world step. Units: Hz and microseconds.
+#pragma once
+
+#include "god_finger/runtime/servo_loop.h"
+
+#include <vector>
+
+namespace god_finger
+{
+struct Percentiles
+{
+  double p50 = 0.0;
+  double p99 = 0.0;
+  double max = 0.0;
+};
+
+struct LoopSummary
+{
+  long ticks = 0;
+  double rate_hz = 0.0;  // ticks per wall-clock second of the window
+  Percentiles period_us;
+  Percentiles latency_us;
+  Percentiles step_us;
+};
+
+class LoopStatistics
+{
+ public:
+  // Counts interface 0's samples as ticks; every interface's latency.
+  void add(const ServoSample& sample);
+  LoopSummary summarize() const;
+  // Starts a new window.
+  void clear();
+
+ private:
+  std::vector<double> period_us_;
+  std::vector<double> latency_us_;
+  std::vector<double> step_us_;
+  double window_start_ = -1.0;  // steady seconds
+};
+}  // namespace god_finger

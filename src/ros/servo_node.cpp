@@ -1,0 +1,396 @@
+#include "god_finger/ros/servo_node.h"
+
+#include "god_finger/DeviceState.h"
+#include "god_finger/SetContactModel.h"
+#include "god_finger/core/input_error.h"
+#include "god_finger/core/text_numbers.h"
+#include "god_finger/devices/device_registry.h"
+#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/ros/bag_track.h"
+#include "god_finger/ros/conversions.h"
+#include "god_finger/ros/hand_marker.h"
+#include "god_finger/ros/interface_parameters.h"
+#include "god_finger/ros/parameters.h"
+#include "god_finger/ros/queues.h"
+#include "god_finger/ros/reconfigure.h"
+#include "god_finger/ros/world_messages.h"
+#include "god_finger/runtime/loop_statistics.h"
+#include "god_finger/runtime/servo_clock.h"
+#include "god_finger/runtime/servo_loop.h"
+
+#include <diagnostic_msgs/DiagnosticArray.h>
+#include <dynamic_reconfigure/server.h>
+#include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/Vector3Stamped.h>
+#include <geometry_msgs/WrenchStamped.h>
+#include <ros/ros.h>
+#include <rosgraph_msgs/Clock.h>
+#include <std_srvs/Trigger.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <atomic>
+#include <thread>
+
+namespace god_finger
+{
+struct ServoNode::Impl
+{
+  struct Interface
+  {
+    std::string name;
+    std::string interface_frame;  // world -> NAME_interface
+    std::string device_frame;     // NAME_device
+    ros::Publisher state;
+    ros::Publisher force;
+    ros::Publisher pose;
+    ros::Publisher feedback;
+    ros::Publisher proxy;
+    std::unique_ptr<interactive_markers::InteractiveMarkerServer> hand_marker;
+    std::uint32_t published = 0;
+  };
+
+  std::unique_ptr<ServoLoop> loop;
+  std::vector<Interface> interfaces;
+  std::vector<std::string> names;
+  bool sim_time = false;
+  ros::Publisher clock_publisher;
+  ros::Publisher contact_publisher;
+  ros::Publisher marker_publisher;
+  ros::Publisher diagnostics_publisher;
+  ros::ServiceServer reset_service;
+  ros::ServiceServer model_service;
+  tf2_ros::TransformBroadcaster broadcaster;
+  boost::recursive_mutex reconfigure_mutex;
+  std::unique_ptr<dynamic_reconfigure::Server<god_finger::GodFingerConfig>> reconfigure;
+  god_finger::GodFingerConfig last_good_config;
+  ContactParams contact;  // the last contact parameters sent to the loop
+  std::thread publisher_thread;
+  std::atomic<bool> publishing{true};
+  LoopStatistics statistics;
+  long last_dropped = 0;
+
+  // Simulated time: the loop's time after the step (never 0); wall time otherwise.
+  ros::Time stampOf(double loop_time) const
+  {
+    return sim_time ? ros::Time(loop_time + loop->period()) : ros::Time::now();
+  }
+
+  void post(const ServoCommand& command, const char* what)
+  {
+    std::string error;
+    if (!loop->post(command, &error))
+    {
+      ROS_WARN("servo: %s refused (%s)", what, error.c_str());
+    }
+  }
+
+  bool onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
+  {
+    ServoCommand command;
+    command.kind = ServoCommand::Kind::kReset;
+    std::string error;
+    response.success = loop->post(command, &error);
+    response.message = response.success ? "scene reset" : error;
+    return true;
+  }
+
+  bool onSetModel(god_finger::SetContactModel::Request& request, god_finger::SetContactModel::Response& response)
+  {
+    ServoCommand command;
+    command.kind = ServoCommand::Kind::kSetContactModel;
+    if (!parseContactModel(request.model, &command.model))
+    {
+      response.success = false;
+      response.message = "unknown contact model '" + request.model + "' (" + contactModelNames() + ")";
+      return true;
+    }
+    std::string error;
+    response.success = loop->post(command, &error);
+    response.message = response.success ? std::string("contact model: ") + contactModelName(command.model) : error;
+    return true;
+  }
+
+  void onReconfigure(god_finger::GodFingerConfig& config, std::uint32_t)
+  {
+    ServoCommand params;
+    params.kind = ServoCommand::Kind::kSetContactParams;
+    ServoCommand model;
+    model.kind = ServoCommand::Kind::kSetContactModel;
+    std::string error;
+    if (!contactFromConfig(config, contact, &params.contact, &model.model, &error) || !loop->post(params, &error))
+    {
+      ROS_WARN("servo: reconfiguration refused (%s); the previous parameters stay", error.c_str());
+      config = last_good_config;
+      return;
+    }
+    post(model, "contact model");
+    contact = params.contact;
+    last_good_config = config;
+  }
+
+  void publishSample(const ServoSample& sample)
+  {
+    Interface& interface = interfaces[sample.interface];
+    const ros::Time stamp = stampOf(sample.time);
+    god_finger::DeviceStatePtr state(new god_finger::DeviceState);
+    state->header.stamp = stamp;
+    state->header.seq = ++interface.published;  // gap-free: a recording can be checked
+    state->header.frame_id = interface.device_frame;
+    state->position = toVector(sample.reading.position);
+    state->velocity = toVector(sample.reading.velocity);
+    state->buttons = sample.reading.buttons;
+    state->applied_force = toVector(sample.applied_force);
+    interface.state.publish(state);
+
+    geometry_msgs::Vector3StampedPtr force(new geometry_msgs::Vector3Stamped);
+    force->header.stamp = stamp;
+    force->header.frame_id = interface.device_frame;
+    force->vector = toVector(sample.commanded_force);
+    interface.force.publish(force);
+
+    geometry_msgs::PoseStampedPtr pose(new geometry_msgs::PoseStamped);
+    pose->header.stamp = stamp;
+    pose->header.frame_id = "world";
+    pose->pose.position = toPoint(sample.interface_position);
+    pose->pose.orientation.w = 1.0;
+    interface.pose.publish(pose);
+
+    geometry_msgs::WrenchStampedPtr feedback(new geometry_msgs::WrenchStamped);
+    feedback->header.stamp = stamp;
+    feedback->header.frame_id = "world";
+    feedback->wrench.force = toVector(sample.user_force);
+    interface.feedback.publish(feedback);
+
+    geometry_msgs::PointStampedPtr proxy(new geometry_msgs::PointStamped);
+    proxy->header.stamp = stamp;
+    proxy->header.frame_id = "world";
+    proxy->point = toPoint(sample.proxy_position);
+    interface.proxy.publish(proxy);
+
+    geometry_msgs::TransformStamped transform;
+    transform.header = pose->header;
+    transform.child_frame_id = interface.interface_frame;
+    transform.transform.translation = toVector(sample.interface_position);
+    transform.transform.rotation.w = 1.0;
+    broadcaster.sendTransform(transform);
+  }
+
+  void publishDiagnostics()
+  {
+    const ServoCounters& counters = loop->counters();
+    const LoopSummary summary = statistics.summarize();
+    diagnostic_msgs::DiagnosticArray array;
+    array.header.stamp = ros::Time::now();
+    diagnostic_msgs::DiagnosticStatus status;
+    status.name = ros::this_node::getName() + ": servo loop";
+    status.hardware_id = "god_finger";
+    const bool slow = !sim_time && summary.rate_hz < 0.95 * loop->params().rate;
+    status.level = counters.failed ? diagnostic_msgs::DiagnosticStatus::ERROR
+                   : slow          ? diagnostic_msgs::DiagnosticStatus::WARN
+                                   : diagnostic_msgs::DiagnosticStatus::OK;
+    status.message = counters.failed ? "stopped: a device failed" : slow ? "below its rate" : "running";
+    auto add = [&status](const std::string& key, const std::string& value)
+    {
+      diagnostic_msgs::KeyValue pair;
+      pair.key = key;
+      pair.value = value;
+      status.values.push_back(pair);
+    };
+    add("clock", sim_time ? "simulated" : "real time");
+    add("realtime_priority", counters.realtime ? "SCHED_FIFO" : "none");
+    add("rate_hz", jsonNumber(summary.rate_hz));
+    add("period_us_p50", jsonNumber(summary.period_us.p50));
+    add("period_us_p99", jsonNumber(summary.period_us.p99));
+    add("period_us_max", jsonNumber(summary.period_us.max));
+    add("latency_us_p50", jsonNumber(summary.latency_us.p50));
+    add("latency_us_p99", jsonNumber(summary.latency_us.p99));
+    add("latency_us_max", jsonNumber(summary.latency_us.max));
+    add("step_us_p50", jsonNumber(summary.step_us.p50));
+    add("step_us_p99", jsonNumber(summary.step_us.p99));
+    add("ticks", std::to_string(counters.ticks.load()));
+    add("overruns", std::to_string(counters.overruns.load()));
+    add("dropped_samples", std::to_string(counters.dropped_samples.load()));
+    add("rejected_readings", std::to_string(counters.rejected_readings.load()));
+    add("rejected_forces", std::to_string(counters.rejected_forces.load()));
+    add("contact_model", contactModelName(static_cast<ContactModel>(counters.model.load())));
+    array.status.push_back(status);
+    diagnostics_publisher.publish(array);
+    statistics.clear();
+  }
+
+  // The normal-priority side: everything the loop leaves behind goes out as messages.
+  void publish()
+  {
+    ServoSample sample;
+    WorldSnapshot snapshot;
+    const double diagnostics_period = 1.0;
+    double next_diagnostics = steadySeconds() + diagnostics_period;
+    while (publishing)
+    {
+      bool any = false;
+      double clock_time = -1.0;
+      while (loop->samples().tryPop(&sample))
+      {
+        any = true;
+        publishSample(sample);
+        statistics.add(sample);
+        clock_time = sample.time;
+      }
+      if (sim_time && clock_time >= 0.0)
+      {
+        rosgraph_msgs::Clock clock;
+        clock.clock = stampOf(clock_time);
+        clock_publisher.publish(clock);
+      }
+      while (loop->snapshots().tryPop(&snapshot))
+      {
+        any = true;
+        const ros::Time stamp = sim_time ? ros::Time(snapshot.time > 0.0 ? snapshot.time : loop->period()) : ros::Time::now();
+        const SceneDescription& scene = loop->world().scene();
+        contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
+        marker_publisher.publish(
+            markerMessage(scene, snapshot, loop->world().params().coupling.proxy_radius, stamp));
+        broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
+      }
+      const double now = steadySeconds();
+      if (now >= next_diagnostics)
+      {
+        publishDiagnostics();
+        next_diagnostics = now + diagnostics_period;
+      }
+      if (loop->counters().failed && !loop->running())
+      {
+        ROS_FATAL("servo: the loop stopped (a device failed); shutting down");
+        ros::requestShutdown();
+        return;
+      }
+      if (!any)
+      {
+        sleepFor(5e-4);
+      }
+    }
+  }
+};
+
+ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
+{
+  Impl& impl = *impl_;
+  const WorldParams world_params = readWorldParams(pnh);
+  ServoLoopParams loop_params;
+  loop_params.rate = 1.0 / world_params.time_step;
+  loop_params.realtime_priority = readInt(pnh, "realtime_priority", loop_params.realtime_priority, 0, 99);
+  bool use_sim_time = false;
+  ros::param::get("/use_sim_time", use_sim_time);
+  impl.sim_time = readBool(pnh, "sim_time", use_sim_time);
+  loop_params.simulated_time = impl.sim_time;
+  loop_params.real_time_factor = readDouble(pnh, "real_time_factor", 1.0, 0.0, 1000.0, "dimensionless");
+  const double publish_rate = readDouble(pnh, "publish_rate", 60.0, 1.0, 1000.0, "Hz");
+  loop_params.snapshot_every = std::max(1, static_cast<int>(std::lround(loop_params.rate / publish_rate)));
+  const std::string scene_path = readString(pnh, "scene", "");
+  if (scene_path.empty())
+  {
+    throw InputError("parameter '" + pnh.resolveName("scene") + "' is required (the scene's URDF file)");
+  }
+  auto world = std::make_unique<GodFingerWorld>(loadUrdfScene(scene_path), world_params);
+  impl.names = readStringList(pnh, "interfaces", {"finger"});
+  // Simulated devices start their scripts together: on simulated time script_delay after 0,
+  // on the wall clock script_delay after the launch's epoch (the loop's clock starts now).
+  const double script_start = impl.sim_time ? readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s")
+                                            : sharedScriptStart(pnh, 0.0);
+  std::vector<ServoInterface> servo_interfaces;
+  std::vector<Eigen::Vector3d> marker_starts(impl.names.size());
+  std::vector<bool> interactive(impl.names.size(), false);
+  for (std::size_t i = 0; i < impl.names.size(); ++i)
+  {
+    const std::string& name = impl.names[i];
+    ros::NodeHandle interface_nh(nh, name);
+    const InterfaceConfig config = readInterfaceConfig(interface_nh, name);
+    const RosParameterSource device_params(interface_nh);
+    const std::string backend_name = readString(device_params, "backend", "fake");
+    const DeviceBackend& backend = findDeviceBackend(backend_name, interface_nh.resolveName("backend"));
+    if (impl.sim_time && !backend.simulated)
+    {
+      throw InputError("parameter '" + pnh.resolveName("sim_time") + "' is true, but interface '" + name +
+                       "' has the hardware backend '" + backend_name +
+                       "': a person's hand does not run on simulated time");
+    }
+    DeviceContext context(device_params);
+    context.max_force = config.profile.guard.max_force;
+    context.script_start = script_start;
+    context.read_track = readBagTrack;
+    context.default_track_topic = interface_nh.resolveName("device/state");
+    ServoInterface servo;
+    servo.name = name;
+    servo.device = makeDevice(backend, context);
+    servo.profile = config.profile;
+    servo.mapping = WorkspaceMapping(config.mapping);
+    servo_interfaces.push_back(std::move(servo));
+    interactive[i] = backend_name == "interactive";
+    marker_starts[i] = readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12));
+  }
+  impl.loop = std::make_unique<ServoLoop>(std::move(world), std::move(servo_interfaces), loop_params,
+                                          [](const std::string& message) { ROS_WARN("%s", message.c_str()); });
+  impl.loop->prepare();
+  impl.contact = world_params.contact;
+
+  impl.interfaces.resize(impl.names.size());
+  for (std::size_t i = 0; i < impl.names.size(); ++i)
+  {
+    Impl::Interface& interface = impl.interfaces[i];
+    ros::NodeHandle interface_nh(nh, impl.names[i]);
+    interface.name = impl.names[i];
+    interface.interface_frame = impl.names[i] + "_interface";
+    interface.device_frame = impl.names[i] + "_device";
+    interface.state = interface_nh.advertise<god_finger::DeviceState>("device/state", kPublisherQueue);
+    interface.force = interface_nh.advertise<geometry_msgs::Vector3Stamped>("device/force", kPublisherQueue);
+    interface.pose = interface_nh.advertise<geometry_msgs::PoseStamped>("pose", kPublisherQueue);
+    interface.feedback = interface_nh.advertise<geometry_msgs::WrenchStamped>("feedback", kPublisherQueue);
+    interface.proxy = interface_nh.advertise<geometry_msgs::PointStamped>("proxy", kPublisherQueue);
+    if (interactive[i])
+    {
+      ServoLoop* loop = impl.loop.get();
+      const int index = static_cast<int>(i);
+      interface.hand_marker = makeHandMarker(interface_nh, interface.device_frame, marker_starts[i],
+                                             [loop, index](const Eigen::Vector3d& target)
+                                             {
+                                               ServoCommand command;
+                                               command.kind = ServoCommand::Kind::kHandTarget;
+                                               command.interface = index;
+                                               command.hand_target = target;
+                                               loop->post(command);
+                                             });
+    }
+  }
+  if (impl.sim_time)
+  {
+    impl.clock_publisher = nh.advertise<rosgraph_msgs::Clock>("/clock", kPublisherQueue);
+  }
+  impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
+  impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
+  impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+  impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);
+  impl.model_service = nh.advertiseService("set_contact_model", &Impl::onSetModel, &impl);
+  impl.reconfigure =
+      std::make_unique<dynamic_reconfigure::Server<god_finger::GodFingerConfig>>(impl.reconfigure_mutex, pnh);
+  impl.last_good_config = configOf(world_params);
+  impl.reconfigure->updateConfig(impl.last_good_config);
+  impl.reconfigure->setCallback([this](god_finger::GodFingerConfig& config, std::uint32_t level)
+                                { impl_->onReconfigure(config, level); });
+  ROS_INFO("servo: scene '%s' (%d bodies), %zu interface(s), %.0f Hz on %s, model %s", scene_path.c_str(),
+           impl.loop->world().bodyCount(), impl.names.size(), loop_params.rate,
+           impl.sim_time ? "simulated time" : "the wall clock", contactModelName(world_params.model));
+  impl.publisher_thread = std::thread([this]() { impl_->publish(); });
+  impl.loop->start();
+}
+
+ServoNode::~ServoNode()
+{
+  impl_->loop->stop();
+  impl_->publishing = false;
+  if (impl_->publisher_thread.joinable())
+  {
+    impl_->publisher_thread.join();
+  }
+}
+}  // namespace god_finger

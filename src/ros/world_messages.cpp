@@ -1,0 +1,70 @@
+#include "god_finger/ros/world_messages.h"
+
+#include "god_finger/ros/conversions.h"
+#include "god_finger/ros/markers.h"
+
+namespace god_finger
+{
+god_finger::ContactAreaArrayPtr contactAreaMessage(const SceneDescription& scene, const WorldSnapshot& world,
+                                                   const std::vector<std::string>& interface_names,
+                                                   const ros::Time& stamp)
+{
+  god_finger::ContactAreaArrayPtr areas(new god_finger::ContactAreaArray);
+  areas->header.stamp = stamp;
+  areas->header.frame_id = "world";
+  for (std::size_t i = 0; i < world.interfaces.size() && i < interface_names.size(); ++i)
+  {
+    const InterfaceState& state = world.interfaces[i];
+    for (int c = 0; c < state.contact_count; ++c)
+    {
+      const WorldContactArea& area = state.contacts[c];
+      god_finger::ContactArea message;
+      message.header = areas->header;
+      message.interface = interface_names[i];
+      message.object = scene.bodies[area.body].name;
+      message.point = toPoint(area.point);
+      message.normal = toVector(area.normal);
+      message.depth = area.depth;
+      message.feature = static_cast<std::uint8_t>(area.feature);
+      message.radius = area.radius;
+      for (int k = 0; k < area.sub_god_object_count; ++k)
+      {
+        message.sub_god_objects.push_back(toPoint(area.positions[k]));
+      }
+      areas->areas.push_back(message);
+    }
+  }
+  return areas;
+}
+
+visualization_msgs::MarkerArrayPtr markerMessage(const SceneDescription& scene, const WorldSnapshot& world,
+                                                 double proxy_radius, const ros::Time& stamp)
+{
+  visualization_msgs::MarkerArrayPtr markers(new visualization_msgs::MarkerArray);
+  appendBodyMarkers(scene, world, stamp, markers.get());
+  appendInteractionMarkers(world, proxy_radius, stamp, markers.get());
+  return markers;
+}
+
+std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescription& scene, const WorldSnapshot& world,
+                                                            const ros::Time& stamp)
+{
+  std::vector<geometry_msgs::TransformStamped> transforms;
+  for (std::size_t i = 0; i < world.bodies.size() && i < scene.bodies.size(); ++i)
+  {
+    const BodyState& body = world.bodies[i];
+    geometry_msgs::TransformStamped transform;
+    transform.header.stamp = stamp;
+    transform.header.frame_id = "world";
+    transform.child_frame_id = scene.bodies[i].name;
+    transform.transform.translation = toVector(body.pose.translation());
+    const Eigen::Quaterniond q(body.pose.linear());
+    transform.transform.rotation.x = q.x();
+    transform.transform.rotation.y = q.y();
+    transform.transform.rotation.z = q.z();
+    transform.transform.rotation.w = q.w();
+    transforms.push_back(transform);
+  }
+  return transforms;
+}
+}  // namespace god_finger

@@ -1,0 +1,59 @@
+#include "god_finger/runtime/loop_statistics.h"
+
+#include "god_finger/core/text_numbers.h"
+#include "god_finger/runtime/servo_clock.h"
+
+#include <algorithm>
+
+namespace god_finger
+{
+namespace
+{
+Percentiles percentilesOf(const std::vector<double>& values)
+{
+  Percentiles result;
+  if (values.empty())
+  {
+    return result;
+  }
+  result.p50 = percentile(values, 0.5);
+  result.p99 = percentile(values, 0.99);
+  result.max = *std::max_element(values.begin(), values.end());
+  return result;
+}
+}  // namespace
+
+void LoopStatistics::add(const ServoSample& sample)
+{
+  if (window_start_ < 0.0)
+  {
+    window_start_ = steadySeconds();
+  }
+  if (sample.interface == 0)
+  {
+    period_us_.push_back(sample.period_us);
+    step_us_.push_back(sample.step_us);
+  }
+  latency_us_.push_back(sample.latency_us);
+}
+
+LoopSummary LoopStatistics::summarize() const
+{
+  LoopSummary summary;
+  summary.ticks = static_cast<long>(period_us_.size());
+  const double seconds = window_start_ < 0.0 ? 0.0 : steadySeconds() - window_start_;
+  summary.rate_hz = seconds > 0.0 ? summary.ticks / seconds : 0.0;
+  summary.period_us = percentilesOf(period_us_);
+  summary.latency_us = percentilesOf(latency_us_);
+  summary.step_us = percentilesOf(step_us_);
+  return summary;
+}
+
+void LoopStatistics::clear()
+{
+  period_us_.clear();
+  latency_us_.clear();
+  step_us_.clear();
+  window_start_ = steadySeconds();
+}
+}  // namespace god_finger
