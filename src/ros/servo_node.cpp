@@ -13,6 +13,7 @@
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 #include "god_finger/ros/reconfigure.h"
+#include "god_finger/ros/servo_setup.h"
 #include "god_finger/ros/world_messages.h"
 #include "god_finger/runtime/loop_statistics.h"
 #include "god_finger/runtime/servo_clock.h"
@@ -29,6 +30,7 @@
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include <algorithm>
 #include <atomic>
 #include <thread>
 
@@ -276,63 +278,14 @@ struct ServoNode::Impl
 ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
 {
   Impl& impl = *impl_;
-  const WorldParams world_params = readWorldParams(pnh);
-  ServoLoopParams loop_params;
-  loop_params.rate = 1.0 / world_params.time_step;
-  loop_params.realtime_priority = readInt(pnh, "realtime_priority", loop_params.realtime_priority, 0, 99);
-  bool use_sim_time = false;
-  ros::param::get("/use_sim_time", use_sim_time);
-  impl.sim_time = readBool(pnh, "sim_time", use_sim_time);
-  loop_params.simulated_time = impl.sim_time;
-  loop_params.real_time_factor = readDouble(pnh, "real_time_factor", 1.0, 0.0, 1000.0, "dimensionless");
-  const double publish_rate = readDouble(pnh, "publish_rate", 60.0, 1.0, 1000.0, "Hz");
-  loop_params.snapshot_every = std::max(1, static_cast<int>(std::lround(loop_params.rate / publish_rate)));
-  const std::string scene_path = readString(pnh, "scene", "");
-  if (scene_path.empty())
-  {
-    throw InputError("parameter '" + pnh.resolveName("scene") + "' is required (the scene's URDF file)");
-  }
-  auto world = std::make_unique<GodFingerWorld>(loadUrdfScene(scene_path), world_params);
-  impl.names = readStringList(pnh, "interfaces", {"finger"});
-  // Simulated devices start their scripts together: on simulated time script_delay after 0,
-  // on the wall clock script_delay after the launch's epoch (the loop's clock starts now).
-  const double script_start = impl.sim_time ? readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s")
-                                            : sharedScriptStart(pnh, 0.0);
-  std::vector<ServoInterface> servo_interfaces;
-  std::vector<Eigen::Vector3d> marker_starts(impl.names.size());
-  std::vector<bool> interactive(impl.names.size(), false);
-  for (std::size_t i = 0; i < impl.names.size(); ++i)
-  {
-    const std::string& name = impl.names[i];
-    ros::NodeHandle interface_nh(nh, name);
-    const InterfaceConfig config = readInterfaceConfig(interface_nh, name);
-    const RosParameterSource device_params(interface_nh);
-    const std::string backend_name = readString(device_params, "backend", "fake");
-    const DeviceBackend& backend = findDeviceBackend(backend_name, interface_nh.resolveName("backend"));
-    if (impl.sim_time && !backend.simulated)
-    {
-      throw InputError("parameter '" + pnh.resolveName("sim_time") + "' is true, but interface '" + name +
-                       "' has the hardware backend '" + backend_name +
-                       "': a person's hand does not run on simulated time");
-    }
-    DeviceContext context(device_params);
-    context.max_force = config.profile.guard.max_force;
-    context.script_start = script_start;
-    context.read_track = readBagTrack;
-    context.default_track_topic = interface_nh.resolveName("device/state");
-    ServoInterface servo;
-    servo.name = name;
-    servo.device = makeDevice(backend, context);
-    servo.profile = config.profile;
-    servo.mapping = WorkspaceMapping(config.mapping);
-    servo_interfaces.push_back(std::move(servo));
-    interactive[i] = backend_name == "interactive";
-    marker_starts[i] = readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12));
-  }
-  impl.loop = std::make_unique<ServoLoop>(std::move(world), std::move(servo_interfaces), loop_params,
-                                          [](const std::string& message) { ROS_WARN("%s", message.c_str()); });
-  impl.loop->prepare();
-  impl.contact = world_params.contact;
+  ServoSetup setup = makeServoSetup(nh, pnh, [](const std::string& message) { ROS_WARN("%s", message.c_str()); });
+  impl.loop = std::move(setup.loop);
+  impl.names = setup.names;
+  impl.sim_time = impl.loop->params().simulated_time;
+  impl.contact = setup.world_params.contact;
+  const WorldParams& world_params = setup.world_params;
+  const std::string& scene_path = setup.scene_path;
+  const ServoLoopParams& loop_params = impl.loop->params();
 
   impl.interfaces.resize(impl.names.size());
   for (std::size_t i = 0; i < impl.names.size(); ++i)
@@ -347,11 +300,11 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
     interface.pose = interface_nh.advertise<geometry_msgs::PoseStamped>("pose", kPublisherQueue);
     interface.feedback = interface_nh.advertise<geometry_msgs::WrenchStamped>("feedback", kPublisherQueue);
     interface.proxy = interface_nh.advertise<geometry_msgs::PointStamped>("proxy", kPublisherQueue);
-    if (interactive[i])
+    if (setup.backends[i] == "interactive")
     {
       ServoLoop* loop = impl.loop.get();
       const int index = static_cast<int>(i);
-      interface.hand_marker = makeHandMarker(interface_nh, interface.device_frame, marker_starts[i],
+      interface.hand_marker = makeHandMarker(interface_nh, interface.device_frame, setup.hand_starts[i],
                                              [loop, index](const Eigen::Vector3d& target)
                                              {
                                                ServoCommand command;
@@ -380,6 +333,18 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   ROS_INFO("servo: scene '%s' (%d bodies), %zu interface(s), %.0f Hz on %s, model %s", scene_path.c_str(),
            impl.loop->world().bodyCount(), impl.names.size(), loop_params.rate,
            impl.sim_time ? "simulated time" : "the wall clock", contactModelName(world_params.model));
+  // On simulated time a recorder (record:=true) gets the session from its first tick: the loop
+  // waits (up to 10 s of wall clock) until every interface's device/state has this many
+  // subscribers.
+  const int wait_for = readInt(pnh, "wait_for_subscribers", 0, 0, 100);
+  const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(10.0);
+  while (impl.sim_time && wait_for > 0 && ros::ok() && ros::WallTime::now() < give_up &&
+         std::any_of(impl.interfaces.begin(), impl.interfaces.end(),
+                     [wait_for](const Impl::Interface& interface)
+                     { return static_cast<int>(interface.state.getNumSubscribers()) < wait_for; }))
+  {
+    ros::WallDuration(0.01).sleep();
+  }
   impl.publisher_thread = std::thread([this]() { impl_->publish(); });
   impl.loop->start();
 }

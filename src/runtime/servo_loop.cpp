@@ -275,14 +275,17 @@ void ServoLoop::tick(double time)
 
 void ServoLoop::run()
 {
-  const bool realtime = setRealTimePriority(params_.realtime_priority);
+  // On simulated time nothing is gained by real-time priority, and a loop that runs as fast
+  // as it goes must not starve the publishers it waits for.
+  const int priority = params_.simulated_time ? 0 : params_.realtime_priority;
+  const bool realtime = setRealTimePriority(priority);
   counters_.realtime = realtime;
-  if (!realtime && params_.realtime_priority > 0 && log_)
+  if (!realtime && priority > 0 && log_)
   {
     log_("servo loop: runs without real-time priority (SCHED_FIFO " + std::to_string(params_.realtime_priority) +
          " not permitted): grant CAP_SYS_NICE or an rtprio limit for steadier 1 kHz timing");
   }
-  if (params_.lock_memory && !lockMemory() && log_)
+  if (params_.lock_memory && !params_.simulated_time && !lockMemory() && log_)
   {
     log_("servo loop: memory not locked (mlockall not permitted): a page fault can stall a tick");
   }

@@ -1,0 +1,76 @@
+#include "god_finger/ros/servo_setup.h"
+
+#include "god_finger/core/input_error.h"
+#include "god_finger/devices/device_registry.h"
+#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/ros/bag_track.h"
+#include "god_finger/ros/hand_marker.h"
+#include "god_finger/ros/interface_parameters.h"
+#include "god_finger/ros/parameters.h"
+
+#include <cmath>
+
+namespace god_finger
+{
+ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh, ServoLoop::Log log)
+{
+  ServoSetup setup;
+  const WorldParams world_params = readWorldParams(pnh);
+  ServoLoopParams loop_params;
+  loop_params.rate = 1.0 / world_params.time_step;
+  loop_params.realtime_priority = readInt(pnh, "realtime_priority", loop_params.realtime_priority, 0, 99);
+  bool use_sim_time = false;
+  ros::param::get("/use_sim_time", use_sim_time);
+  const bool sim_time = readBool(pnh, "sim_time", use_sim_time);
+  loop_params.simulated_time = sim_time;
+  loop_params.real_time_factor = readDouble(pnh, "real_time_factor", 1.0, 0.0, 1000.0, "dimensionless");
+  const double publish_rate = readDouble(pnh, "publish_rate", 60.0, 1.0, 1000.0, "Hz");
+  loop_params.snapshot_every = std::max(1, static_cast<int>(std::lround(loop_params.rate / publish_rate)));
+  const std::string scene_path = readString(pnh, "scene", "");
+  if (scene_path.empty())
+  {
+    throw InputError("parameter '" + pnh.resolveName("scene") + "' is required (the scene's URDF file)");
+  }
+  auto world = std::make_unique<GodFingerWorld>(loadUrdfScene(scene_path), world_params);
+  setup.names = readStringList(pnh, "interfaces", {"finger"});
+  // Simulated devices start their scripts together: on simulated time script_delay after 0,
+  // on the wall clock script_delay after the launch's epoch (the loop's clock starts now).
+  const double script_start = sim_time ? readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s")
+                                            : sharedScriptStart(pnh, 0.0);
+  std::vector<ServoInterface> servo_interfaces;
+  for (std::size_t i = 0; i < setup.names.size(); ++i)
+  {
+    const std::string& name = setup.names[i];
+    ros::NodeHandle interface_nh(nh, name);
+    const InterfaceConfig config = readInterfaceConfig(interface_nh, name);
+    const RosParameterSource device_params(interface_nh);
+    const std::string backend_name = readString(device_params, "backend", "fake");
+    const DeviceBackend& backend = findDeviceBackend(backend_name, interface_nh.resolveName("backend"));
+    if (sim_time && !backend.simulated)
+    {
+      throw InputError("parameter '" + pnh.resolveName("sim_time") + "' is true, but interface '" + name +
+                       "' has the hardware backend '" + backend_name +
+                       "': a person's hand does not run on simulated time");
+    }
+    DeviceContext context(device_params);
+    context.max_force = config.profile.guard.max_force;
+    context.script_start = script_start;
+    context.read_track = readBagTrack;
+    context.default_track_topic = interface_nh.resolveName("device/state");
+    ServoInterface servo;
+    servo.name = name;
+    servo.device = makeDevice(backend, context);
+    servo.profile = config.profile;
+    servo.mapping = WorkspaceMapping(config.mapping);
+    servo_interfaces.push_back(std::move(servo));
+    setup.backends.push_back(backend_name);
+    setup.hand_starts.push_back(readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)));
+  }
+  setup.loop = std::make_unique<ServoLoop>(std::move(world), std::move(servo_interfaces), loop_params, log);
+  setup.loop->prepare();
+  setup.world_params = world_params;
+  setup.scene_path = scene_path;
+  return setup;
+}
+}  // namespace god_finger
+
