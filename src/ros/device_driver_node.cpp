@@ -181,11 +181,13 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   // never holds a core.
   impl.realtime_priority = readInt(pnh, "realtime_priority", 80, 0, 99);
   // The interface's namespace holds its device, profile and mapping (interface_parameters.h).
-  const InterfaceConfig config = readInterfaceConfig(nh, nh.getNamespace());
+  const RosParameterSource private_params(pnh);
+  const RosParameterSource interface_params(nh);
+  const LayeredParameterSource device_params(private_params, interface_params);
+  const InterfaceConfig config = readInterfaceConfig(device_params, nh.getNamespace());
   impl.guard = std::make_unique<ForceGuard>(config.profile.guard);
-  const RosParameterSource device_params(nh);
   const std::string backend_name = readString(device_params, "backend", "fake");
-  const DeviceBackend& backend = findDeviceBackend(backend_name, nh.resolveName("backend"));
+  const DeviceBackend& backend = findDeviceBackend(backend_name, device_params.fullName("backend"));
   impl.frame = readString(pnh, "frame", "device");
   DeviceContext context(device_params);
   context.max_force = config.profile.guard.max_force;

@@ -255,7 +255,10 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   Impl& impl = *impl_;
   impl.nh = nh;
   // The interface's namespace holds its profile and mapping (interface_parameters.h).
-  const InterfaceConfig config = readInterfaceConfig(nh, nh.getNamespace());
+  const RosParameterSource private_params(pnh);
+  const RosParameterSource interface_params(nh);
+  const InterfaceConfig config =
+      readInterfaceConfig(LayeredParameterSource(private_params, interface_params), nh.getNamespace());
   impl.mapping = WorkspaceMapping(config.mapping);
   impl.coupling = config.profile.coupling;
   // Across processes or machines the hand's spring is rendered here, from the freshest device

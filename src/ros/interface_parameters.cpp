@@ -39,9 +39,8 @@ WorldParams readWorldParams(const ros::NodeHandle& pnh)
   return params;
 }
 
-InterfaceConfig readInterfaceConfig(const ros::NodeHandle& interface_nh, const std::string& name)
+InterfaceConfig readInterfaceConfig(const ParameterSource& source, const std::string& name)
 {
-  const RosParameterSource source(interface_nh);
   InterfaceConfig config;
   config.name = name;
   config.profile = readDeviceProfile(source);

@@ -324,7 +324,8 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   {
     Impl::Interface& interface = impl.interfaces[i];
     interface.name = names[i];
-    interface.coupling = readInterfaceConfig(ros::NodeHandle(nh, names[i]), names[i]).profile.coupling;
+    interface.coupling =
+        readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, names[i])), names[i]).profile.coupling;
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
         names[i] + "/pose", kSubscriberQueue,
         [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),

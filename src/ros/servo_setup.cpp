@@ -42,10 +42,10 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
   {
     const std::string& name = setup.names[i];
     ros::NodeHandle interface_nh(nh, name);
-    const InterfaceConfig config = readInterfaceConfig(interface_nh, name);
     const RosParameterSource device_params(interface_nh);
+    const InterfaceConfig config = readInterfaceConfig(device_params, name);
     const std::string backend_name = readString(device_params, "backend", "fake");
-    const DeviceBackend& backend = findDeviceBackend(backend_name, interface_nh.resolveName("backend"));
+    const DeviceBackend& backend = findDeviceBackend(backend_name, device_params.fullName("backend"));
     if (sim_time && !backend.simulated)
     {
       throw InputError("parameter '" + pnh.resolveName("sim_time") + "' is true, but interface '" + name +

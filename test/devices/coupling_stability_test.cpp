@@ -5,6 +5,7 @@
 // round trip: 1-2 ticks with nodelets, more over a network). A run is stable when the handle
 // settles (peak-to-peak over the last 0.3 s under 10 um). The test finds the first unstable k
 // for each delay and checks that the profile's k stays a factor of 4 below it.
+#include "god_finger/core/device_profile.h"
 #include "god_finger/devices/fake_device.h"
 
 #include <gtest/gtest.h>
@@ -20,11 +21,11 @@ namespace god_finger
 {
 namespace
 {
-// The numbers of a flat `key: value  # comment` YAML file.
-std::map<std::string, double> readProfile(const std::string& path)
+// The numbers of a flat `key: value  # comment` YAML file, as the parameters a launch loads.
+MapParameterSource readProfile(const std::string& path)
 {
   std::ifstream file(path);
-  std::map<std::string, double> values;
+  MapParameterSource values(path + ": ");
   std::string line;
   while (std::getline(file, line))
   {
@@ -33,11 +34,13 @@ std::map<std::string, double> readProfile(const std::string& path)
     {
       continue;
     }
-    values[line.substr(0, colon)] = std::stod(line.substr(colon + 1));
+    values.set(line.substr(0, colon), ParameterValue::of(std::stod(line.substr(colon + 1))));
   }
   return values;
 }
 
+// The wall is a proxy held at z = 0 by the one coupling function (core/virtual_coupling.h),
+// unsaturated so that only the loop's dynamics limit the stiffness.
 bool settles(const FakeDeviceParams& params, double stiffness, double damping, int delay)
 {
   // The hand moves from 1 cm outside the wall (z > 0) to 1 cm inside in 0.2 s, then holds.
@@ -61,9 +64,15 @@ bool settles(const FakeDeviceParams& params, double stiffness, double damping, i
     readings.push_back(reading);
     const DeviceReading& seen = readings.front();  // what the loop knows `delay` ticks later
     readings.pop_front();
-    const double depth = -seen.position.z();
-    force =
-        depth > 0.0 ? Eigen::Vector3d(0, 0, stiffness * depth - damping * seen.velocity.z()) : Eigen::Vector3d::Zero();
+    CouplingProfile wall;
+    wall.stiffness = stiffness;
+    wall.damping = damping;
+    wall.max_force = INFINITY;
+    const Eigen::Vector3d on_wall = Eigen::Vector3d(seen.position.x(), seen.position.y(), 0.0);
+    force = seen.position.z() < 0.0
+                ? Eigen::Vector3d(-couplingForce(wall, seen.position, seen.velocity, on_wall, Eigen::Vector3d::Zero())
+                                       .on_proxy)
+                : Eigen::Vector3d::Zero();
     if (time >= 1.7)
     {
       low = std::min(low, reading.position.z());
@@ -75,15 +84,11 @@ bool settles(const FakeDeviceParams& params, double stiffness, double damping, i
 
 TEST(CouplingStability, ProfileStiffnessStaysAFactorOfFourBelowTheLimit)
 {
-  const std::map<std::string, double> profile =
-      readProfile(std::string(GOD_FINGER_SOURCE_DIR) + "/config/devices/fake.yaml");
-  FakeDeviceParams params;
-  params.handle_mass = profile.at("handle_mass");
-  params.handle_damping = profile.at("handle_damping");
-  params.grip_stiffness = profile.at("grip_stiffness");
-  params.grip_damping = profile.at("grip_damping");
-  const double profile_k = profile.at("coupling_stiffness");
-  const double profile_c = profile.at("coupling_damping");
+  const MapParameterSource profile = readProfile(std::string(GOD_FINGER_SOURCE_DIR) + "/config/devices/fake.yaml");
+  const FakeDeviceParams params = readFakeDeviceParams(profile);
+  const DeviceProfile device = readDeviceProfile(profile);
+  const double profile_k = device.coupling.stiffness;
+  const double profile_c = device.coupling.damping;
   ASSERT_TRUE(settles(params, profile_k, profile_c, 2));
   double previous_limit = INFINITY;
   for (int delay : {1, 2, 5})

@@ -38,9 +38,25 @@ TEST(NodeErrors, PhysicsNode)
               "parameter '/p6/rate' = 5 is out of range [10, 10000] (Hz)");
   expectFails(node, "__name:=p7 _scene:=" + kScene + " _model:=point",
               "parameter '/p7/model' = 'point' is not one of god_object, god_finger, soft_finger");
-  expectFails(node, "__name:=p8 _scene:=" + kScene + " _coupling_stiffness:=abc",
-              "parameter '/p8/coupling_stiffness' must be a number (N/m)");
+  expectFails(node, "__name:=p8 _scene:=" + kScene + " _proxy_mass:=abc",
+              "parameter '/p8/proxy_mass' must be a number (kg)");
+  // An interface's profile is checked where the physics reads it (node_errors.test sets it).
+  expectFails(node, "__name:=p10 _scene:=" + kScene,
+              "parameter '/p10_finger/coupling_stiffness' must be a number (N/m)");
   expectFails(node, "__name:=p9 _scene:=" + kScene, "parameter '/p9/interfaces' must be a non-empty list of names");
+}
+
+TEST(NodeErrors, ServoNode)
+{
+  const std::string node = GOD_FINGER_SERVO_NODE;
+  expectFails(node, "__name:=s1", "/s1: parameter '/s1/scene' is required (the scene's URDF file)");
+  expectFails(node, "__name:=s2 _scene:=" + kScene + " _real_time_factor:=-1",
+              "parameter '/s2/real_time_factor' = -1 is out of range [0, 1000] (dimensionless)");
+  expectFails(node, "__name:=s3 _scene:=" + kScene + " _sim_time:=true",
+              "interface 's3_finger' has the hardware backend 'falcon': a person's hand does not run on simulated time");
+  expectFails(node, "__name:=s4 _scene:=" + kScene, "coupling unstable at this time step");
+  expectFails(node, "__name:=s5 _scene:=" + kScene + " _sim_time:=true _model:=point",
+              "parameter '/s5/model' = 'point' is not one of god_object, god_finger, soft_finger");
 }
 
 TEST(NodeErrors, HapticNode)

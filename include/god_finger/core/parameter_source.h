@@ -67,6 +67,30 @@ class MapParameterSource : public ParameterSource
   std::map<std::string, ParameterValue> values_;
 };
 
+// `first`'s parameters, and `second`'s where `first` has none (a node's private parameters
+// over its interface's). Both must outlive it.
+class LayeredParameterSource : public ParameterSource
+{
+ public:
+  LayeredParameterSource(const ParameterSource& first, const ParameterSource& second) : first_(first), second_(second)
+  {
+  }
+  bool get(const std::string& name, ParameterValue* value) const override
+  {
+    return first_.get(name, value) || second_.get(name, value);
+  }
+  // The name where the value was found, else the second's.
+  std::string fullName(const std::string& name) const override
+  {
+    ParameterValue unused;
+    return first_.get(name, &unused) ? first_.fullName(name) : second_.fullName(name);
+  }
+
+ private:
+  const ParameterSource& first_;
+  const ParameterSource& second_;
+};
+
 // A number in [low, high] (or (low, high] when low_open); `fallback` when not set.
 double readDouble(const ParameterSource& source, const std::string& name, double fallback, double low, double high,
                   const std::string& unit, bool low_open = false);

@@ -30,6 +30,7 @@ struct InterfaceConfig
   DeviceProfile profile;
   WorkspaceMappingParams mapping;
 };
-// `interface_nh` is the interface's namespace (NAME/).
-InterfaceConfig readInterfaceConfig(const ros::NodeHandle& interface_nh, const std::string& name);
+// `source`: the interface's namespace (NAME/), or, for the driver and the haptic node, their
+// private parameters over it (so that `rosrun ... _backend:=falcon` works as for any node).
+InterfaceConfig readInterfaceConfig(const ParameterSource& source, const std::string& name);
 }  // namespace god_finger

@@ -1,0 +1,85 @@
+// The one list of device backends: names, simulated or not, each backend reading its own
+// parameters, unknown names refused with the list, missing vendor libraries named.
+#include "god_finger/core/input_error.h"
+#include "god_finger/devices/device_registry.h"
+
+#include <gtest/gtest.h>
+
+namespace god_finger
+{
+namespace
+{
+TEST(DeviceRegistry, ListsEveryBackendOnce)
+{
+  EXPECT_EQ(deviceBackendNames(), "fake, interactive, replay, falcon, omni");
+  EXPECT_TRUE(findDeviceBackend("fake", "backend").simulated);
+  EXPECT_FALSE(findDeviceBackend("falcon", "backend").simulated);
+  EXPECT_STREQ(findDeviceBackend("replay", "backend").profile, "fake");
+  try
+  {
+    findDeviceBackend("mouse", "/finger/backend");
+    FAIL();
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(), "parameter '/finger/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni");
+  }
+}
+
+TEST(DeviceRegistry, FakeDeviceFollowsItsScriptFromTheSharedStart)
+{
+  MapParameterSource params("/finger/");
+  ParameterValue script;
+  script.kind = ParameterValue::Kind::kList;
+  script.items.push_back(ParameterValue::of(std::vector<double>{0.0, 0.0, 0.0, 0.1}));
+  script.items.push_back(ParameterValue::of(std::vector<double>{1.0, 0.0, 0.0, 0.05}));
+  params.set("script", script);
+  DeviceContext context(params);
+  context.script_start = 2.0;
+  auto device = makeDevice(findDeviceBackend("fake", "backend"), context);
+  device->start();
+  EXPECT_NEAR(device->update(0.0, Eigen::Vector3d::Zero()).position.z(), 0.1, 1e-12);
+  EXPECT_NEAR(device->update(1.9, Eigen::Vector3d::Zero()).position.z(), 0.1, 1e-9);  // waits for its start
+  double z = 0.0;
+  for (int k = 1901; k <= 4000; ++k)
+  {
+    z = device->update(k * 1e-3, Eigen::Vector3d::Zero()).position.z();
+  }
+  EXPECT_NEAR(z, 0.05, 1e-4);
+  EXPECT_TRUE(device->setHandTarget(Eigen::Vector3d(0, 0, 0.2)));
+}
+
+TEST(DeviceRegistry, EachBackendChecksItsOwnParameters)
+{
+  MapParameterSource params("/finger/");
+  params.set("handle_mass", ParameterValue::of(0.0));
+  DeviceContext context(params);
+  EXPECT_THROW(makeDevice(findDeviceBackend("fake", "backend"), context), InputError);
+  MapParameterSource falcon("/left/");
+  falcon.set("index", ParameterValue::ofInteger(20));
+  try
+  {
+    makeDevice(findDeviceBackend("falcon", "backend"), DeviceContext(falcon));
+    FAIL();
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(), "parameter '/left/index' = 20 is out of range [0, 15] (count)");
+  }
+  MapParameterSource replay;
+  try
+  {
+    makeDevice(findDeviceBackend("replay", "backend"), DeviceContext(replay));
+    FAIL();
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(), "parameter 'bag' is required by backend 'replay' (a recorded bag)");
+  }
+#ifndef GOD_FINGER_HAVE_NIFALCON
+  MapParameterSource plain;
+  EXPECT_THROW(makeDevice(findDeviceBackend("falcon", "backend"), DeviceContext(plain)), DeviceError);
+#endif
+}
+}  // namespace
+}  // namespace god_finger

@@ -1,0 +1,328 @@
+// The servo loop without ROS: deterministic on simulated time, the hand feels the reaction of
+// the force that pulls the proxy (one coupling, the device's profile), commands and buttons
+// are applied between two steps, bad readings and failing devices are contained, and a tick
+// allocates nothing.
+#include "god_finger/core/input_error.h"
+#include "god_finger/devices/fake_device.h"
+#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/runtime/servo_clock.h"
+#include "god_finger/runtime/servo_loop.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+
+// Counts heap allocations in this test binary, to prove that a tick allocates nothing.
+static std::atomic<long> g_allocations{0};
+void* operator new(std::size_t size)
+{
+  ++g_allocations;
+  void* p = std::malloc(size == 0 ? 1 : size);
+  if (p == nullptr)
+  {
+    throw std::bad_alloc();
+  }
+  return p;
+}
+void operator delete(void* p) noexcept
+{
+  std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept
+{
+  std::free(p);
+}
+
+namespace god_finger
+{
+namespace
+{
+const std::string kScene = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/table_sphere.urdf";
+
+// A scripted device for the edge cases: positions from a function of time, buttons, faults.
+class ScriptedDevice : public HapticDevice
+{
+ public:
+  std::function<Eigen::Vector3d(double)> position = [](double) { return Eigen::Vector3d(0, 0, 0.1); };
+  std::function<std::uint32_t(double)> buttons = [](double) { return 0u; };
+  double fail_at = INFINITY;
+  Eigen::Vector3d last_force = Eigen::Vector3d::Zero();
+  std::string name() const override
+  {
+    return "scripted";
+  }
+  void start() override {}
+  DeviceReading update(double time, const Eigen::Vector3d& force) override
+  {
+    if (time >= fail_at)
+    {
+      throw DeviceError("scripted: unplugged");
+    }
+    last_force = force;
+    DeviceReading reading;
+    reading.position = position(time);
+    reading.buttons = buttons(time);
+    return reading;
+  }
+};
+
+// The press_sphere script: the hand comes down on the ball's top and stays.
+std::unique_ptr<HapticDevice> pressingHand()
+{
+  auto device = std::make_unique<FakeDevice>(
+      FakeDeviceParams(), WaypointPath({{0.0, Eigen::Vector3d(0, 0, 0.1)}, {0.5, Eigen::Vector3d(0.002, 0, 0.075)}}));
+  device->setScriptStart(0.0);
+  return device;
+}
+
+std::unique_ptr<ServoLoop> makeLoop(std::unique_ptr<HapticDevice> device, const DeviceProfile& profile = {},
+                                    ContactModel model = ContactModel::kGodFinger)
+{
+  WorldParams world;
+  world.model = model;
+  world.contact.distance_constant = 0.001;
+  std::vector<ServoInterface> interfaces(1);
+  interfaces[0].name = "finger";
+  interfaces[0].device = std::move(device);
+  interfaces[0].profile = profile;
+  ServoLoopParams params;
+  params.simulated_time = true;
+  params.real_time_factor = 0.0;
+  auto loop = std::make_unique<ServoLoop>(std::make_unique<GodFingerWorld>(loadUrdfScene(kScene), world),
+                                          std::move(interfaces), params);
+  loop->prepare();
+  return loop;
+}
+
+void runTicks(ServoLoop& loop, int ticks, int first = 0)
+{
+  for (int k = first; k < first + ticks; ++k)
+  {
+    loop.tick(k * loop.period());
+  }
+}
+
+void drain(ServoLoop& loop)
+{
+  ServoSample sample;
+  while (loop.samples().tryPop(&sample))
+  {
+  }
+  WorldSnapshot snapshot;
+  while (loop.snapshots().tryPop(&snapshot))
+  {
+  }
+}
+
+TEST(ServoLoop, SimulatedTimeGivesTheSameTrajectoryBitForBit)
+{
+  auto a = makeLoop(pressingHand());
+  auto b = makeLoop(pressingHand());
+  for (int k = 0; k < 1500; ++k)
+  {
+    a->tick(k * a->period());
+    b->tick(k * b->period());
+    drain(*a);
+    drain(*b);
+    const BodyState ball_a = a->world().bodyState(1);
+    const BodyState ball_b = b->world().bodyState(1);
+    ASSERT_EQ(ball_a.pose.matrix(), ball_b.pose.matrix()) << "tick " << k;
+    ASSERT_EQ(a->world().interfaceState(0).user_force, b->world().interfaceState(0).user_force) << "tick " << k;
+  }
+  // The hand did press the ball: the trajectory compared is not a resting one.
+  EXPECT_GT(a->world().interfaceState(0).user_force.z(), 1.0);
+  EXPECT_EQ(a->world().interfaceState(0).contact_count, 1);
+}
+
+TEST(ServoLoop, TheHandFeelsTheReactionOfTheForceThatPullsTheProxy)
+{
+  DeviceProfile falcon;  // config/devices/falcon.yaml's coupling, not the world's default
+  falcon.coupling.stiffness = 800.0;
+  falcon.coupling.damping = 2.0;
+  falcon.coupling.max_force = 8.9;
+  falcon.guard.max_force = 8.9;
+  auto loop = makeLoop(pressingHand(), falcon);
+  EXPECT_EQ(loop->world().coupling(0).stiffness, 800.0);
+  EXPECT_EQ(loop->world().coupling(0).damping, 2.0);
+  EXPECT_EQ(loop->world().coupling(0).max_force, 8.9);
+  runTicks(*loop, 1200);
+  ServoSample sample;
+  int checked = 0;
+  while (loop->samples().tryPop(&sample))
+  {
+    // Device frame = world here (identity mapping): the command is the user force, guarded.
+    const Eigen::Vector3d expected = sample.user_force.norm() > 8.9 ? Eigen::Vector3d(sample.user_force.normalized() * 8.9)
+                                                                     : sample.user_force;
+    ASSERT_LT((sample.commanded_force - expected).norm(), 1e-12) << "tick " << sample.tick;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 1200);
+  // Resting on the ball, the spring the hand feels is 800 N/m: force = k (p_GO - p_I).
+  const InterfaceState& state = loop->world().interfaceState(0);
+  const Eigen::Vector3d spring = 800.0 * (state.proxy_position - state.interface_position);
+  EXPECT_NEAR(state.user_force.z(), spring.z(), 0.01 * std::abs(spring.z()));
+  EXPECT_GT(state.user_force.z(), 1.0);
+}
+
+TEST(ServoLoop, CommandsAreAppliedBetweenTwoSteps)
+{
+  auto loop = makeLoop(pressingHand());
+  runTicks(*loop, 10);
+  ServoCommand command;
+  command.kind = ServoCommand::Kind::kSetContactModel;
+  command.model = ContactModel::kSoftFinger;
+  ASSERT_TRUE(loop->post(command));
+  EXPECT_EQ(loop->world().contactModel(), ContactModel::kGodFinger);  // not before the next tick
+  runTicks(*loop, 1, 10);
+  EXPECT_EQ(loop->world().contactModel(), ContactModel::kSoftFinger);
+  EXPECT_EQ(static_cast<ContactModel>(loop->counters().model.load()), ContactModel::kSoftFinger);
+
+  ServoCommand bad;
+  bad.kind = ServoCommand::Kind::kSetContactParams;
+  bad.contact.alpha = 0.5;
+  std::string error;
+  EXPECT_FALSE(loop->post(bad, &error));
+  EXPECT_EQ(error, "parameter 'alpha' = 0.5 is out of range [1, 100] (dimensionless)");
+
+  ServoCommand params;
+  params.kind = ServoCommand::Kind::kSetContactParams;
+  params.contact.max_radius = 0.004;
+  ASSERT_TRUE(loop->post(params));
+  runTicks(*loop, 1, 11);
+  EXPECT_EQ(loop->world().params().contact.max_radius, 0.004);
+
+  runTicks(*loop, 800, 12);
+  ServoCommand reset;
+  reset.kind = ServoCommand::Kind::kReset;
+  ASSERT_TRUE(loop->post(reset));
+  runTicks(*loop, 1, 812);
+  EXPECT_EQ(loop->world().steps(), 1);  // the world restarted, then took this tick's step
+}
+
+TEST(ServoLoop, ButtonZeroCyclesTheModelAndButtonOneResets)
+{
+  auto device = std::make_unique<ScriptedDevice>();
+  device->buttons = [](double t) { return (t >= 0.0095 && t < 0.0205) ? 1u : (t >= 0.0495 && t < 0.06) ? 2u : 0u; };
+  auto loop = makeLoop(std::move(device), DeviceProfile(), ContactModel::kGodObject);
+  runTicks(*loop, 30);
+  EXPECT_EQ(loop->world().contactModel(), ContactModel::kGodFinger);  // one press: one step along the list
+  runTicks(*loop, 30, 30);
+  EXPECT_EQ(loop->world().steps(), 10);  // reset at tick 50 (whose step is the first), ticks 51-59
+}
+
+TEST(ServoLoop, NonFiniteReadingsAreRejectedAndTheLastTargetStays)
+{
+  auto device = std::make_unique<ScriptedDevice>();
+  device->position = [](double t) { return t >= 0.05 ? Eigen::Vector3d(NAN, 0, 0.1) : Eigen::Vector3d(0, 0, 0.1); };
+  auto loop = makeLoop(std::move(device));
+  runTicks(*loop, 100);
+  EXPECT_EQ(loop->counters().rejected_readings.load(), 50);
+  EXPECT_EQ(loop->world().rejectedTargets(), 50);
+  EXPECT_TRUE(loop->world().interfaceState(0).interface_position.isApprox(Eigen::Vector3d(0, 0, 0.1)));
+  EXPECT_TRUE(loop->world().interfaceState(0).user_force.allFinite());
+}
+
+TEST(ServoLoop, AFailingDeviceStopsTheLoopAndSaysWhy)
+{
+  auto device = std::make_unique<ScriptedDevice>();
+  device->fail_at = 0.05;
+  WorldParams world;
+  std::vector<ServoInterface> interfaces(1);
+  interfaces[0].name = "finger";
+  interfaces[0].device = std::move(device);
+  ServoLoopParams params;
+  params.simulated_time = true;
+  params.real_time_factor = 0.0;
+  std::string logged;
+  ServoLoop loop(std::make_unique<GodFingerWorld>(loadUrdfScene(kScene), world), std::move(interfaces), params,
+                 [&logged](const std::string& message) { logged = message; });
+  loop.start();
+  for (int i = 0; i < 2000 && loop.running(); ++i)
+  {
+    drain(loop);
+    sleepFor(1e-3);
+  }
+  EXPECT_FALSE(loop.running());
+  EXPECT_TRUE(loop.counters().failed.load());
+  EXPECT_EQ(loop.counters().ticks.load(), 50);
+  EXPECT_EQ(logged, "servo loop stopped: scripted: unplugged");
+}
+
+TEST(ServoLoop, BadParametersAndMismatchedTimeStepsAreRefused)
+{
+  std::vector<ServoInterface> interfaces(1);
+  interfaces[0].device = std::make_unique<ScriptedDevice>();
+  ServoLoopParams params;
+  params.rate = 500.0;  // the world steps at 1 kHz
+  try
+  {
+    ServoLoop loop(std::make_unique<GodFingerWorld>(loadUrdfScene(kScene), WorldParams()), std::move(interfaces),
+                   params);
+    FAIL() << "a 500 Hz loop over a 1 ms world was accepted";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_EQ(std::string(error.what()), "the world's time step 0.001 s is not one servo period (1 / 500 Hz)");
+  }
+  params.rate = 5.0;
+  EXPECT_EQ(validate(params), "parameter 'rate' = 5 is out of range [10, 10000] (Hz)");
+  DeviceProfile unstable;
+  unstable.coupling.stiffness = 90000.0;  // (k dt + 2 b) dt / m = 4.9 with the 20 g proxy
+  std::vector<ServoInterface> stiff(1);
+  stiff[0].device = std::make_unique<ScriptedDevice>();
+  stiff[0].profile = unstable;
+  ServoLoopParams ok;
+  ServoLoop loop(std::make_unique<GodFingerWorld>(loadUrdfScene(kScene), WorldParams()), std::move(stiff), ok);
+  EXPECT_THROW(loop.prepare(), InputError);
+}
+
+TEST(ServoLoop, ATickAllocatesNothing)
+{
+  auto loop = makeLoop(pressingHand());
+  runTicks(*loop, 800);  // in contact: contact areas, injected sub-god-objects, warm starts
+  drain(*loop);
+  const long before = g_allocations.load();
+  runTicks(*loop, 100, 800);
+  const long during = g_allocations.load() - before;
+  drain(*loop);
+  EXPECT_EQ(during, 0);
+  EXPECT_EQ(loop->world().interfaceState(0).contact_count, 1);
+}
+
+TEST(ServoLoop, RealTimeThreadKeepsItsRate)
+{
+  // Sanity floor only (rates and latencies are measured in scripts/bench): the loop runs on
+  // the wall clock within 10 % of its rate.
+  std::vector<ServoInterface> interfaces(1);
+  interfaces[0].device = pressingHand();
+  ServoLoop loop(std::make_unique<GodFingerWorld>(loadUrdfScene(kScene), WorldParams()), std::move(interfaces),
+                 ServoLoopParams());
+  loop.start();
+  const double start = steadySeconds();
+  long samples = 0;
+  ServoSample sample;
+  while (steadySeconds() - start < 1.0)
+  {
+    while (loop.samples().tryPop(&sample))
+    {
+      ++samples;
+    }
+    sleepFor(2e-3);
+  }
+  loop.stop();
+  while (loop.samples().tryPop(&sample))
+  {
+    ++samples;
+  }
+  const long ticks = loop.counters().ticks.load();
+  std::printf("[ measured ] real-time servo loop: %ld ticks in 1 s, %ld overruns, %s\n", ticks,
+              loop.counters().overruns.load(), loop.counters().realtime ? "SCHED_FIFO" : "normal scheduling");
+  EXPECT_GT(ticks, 900);
+  EXPECT_LT(ticks, 1100);
+  EXPECT_EQ(samples + loop.counters().dropped_samples.load(), ticks);
+}
+}  // namespace
+}  // namespace god_finger
