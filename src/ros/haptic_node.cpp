@@ -53,6 +53,8 @@ struct HapticNode::Impl
   Eigen::Vector3d proxy = Eigen::Vector3d::Zero();
   Eigen::Vector3d proxy_velocity = Eigen::Vector3d::Zero();
   ros::Time proxy_stamp;
+  ros::SteadyTime proxy_received;  // when the last proxy position came
+  double proxy_timeout = 0.05;     // s: older than this, the proxy is stale (the physics is gone)
   bool have_proxy = false;
   std::uint32_t buttons = 0;
   int pending_model_switch = 0;
@@ -121,7 +123,9 @@ struct HapticNode::Impl
     {
       pending_reset = true;
     }
-    if (local_coupling && have_proxy)
+    // A stale proxy (the physics died or stalled) renders nothing: the driver's watchdog then
+    // ramps the force to zero instead of the hand pressing on a frozen proxy.
+    if (local_coupling && have_proxy && (ros::SteadyTime::now() - proxy_received).toSec() < proxy_timeout)
     {
       // The hand feels the reaction of the force that pulls the proxy.
       const CouplingForce coupled =
@@ -185,6 +189,7 @@ struct HapticNode::Impl
     }
     proxy = p;
     proxy_stamp = message->header.stamp;
+    proxy_received = ros::SteadyTime::now();
     have_proxy = true;
   }
 
@@ -264,6 +269,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   // Across processes or machines the hand's spring is rendered here, from the freshest device
   // position, so that no topic latency sits between the hand and its spring.
   impl.local_coupling = readBool(pnh, "local_coupling", true);
+  impl.proxy_timeout = readDouble(pnh, "proxy_timeout", impl.proxy_timeout, 0.0, 10.0, "s", true);
   const std::string model_name = readString(pnh, "model", contactModelName(impl.model));
   if (!parseContactModel(model_name, &impl.model))
   {

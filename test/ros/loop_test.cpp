@@ -1,7 +1,10 @@
-// rostest: the whole haptic loop (fake device -> haptic -> physics -> haptic -> device) runs at
-// 1 kHz. Counts device states and feedback for ~duration seconds, reads the driver's measured
-// round trip (device state to force command) from /diagnostics, prints them.
-// Parameters: ~interface ("finger"), ~duration (10 s), ~min_rate (990 Hz), ~label (printed).
+// rostest: the whole haptic loop (fake device -> coupling -> physics -> force) runs, in any
+// topology: the servo loop, or driver -> haptic -> physics -> haptic -> driver through topics.
+// Counts device states and feedback for ~duration seconds, reads the measured device-to-force
+// time (the servo's latency_us_*, or the driver's round_trip_us_*) from /diagnostics, prints
+// them. Only a sanity floor on the rates (timing targets live in scripts/bench).
+// Parameters: ~interface ("finger"), ~duration (5 s), ~min_rate (900 Hz: within 10 % of the
+// 1 kHz loop), ~label (printed).
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <gtest/gtest.h>
@@ -29,11 +32,11 @@ void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& array)
     double p99 = -1.0;
     for (const auto& pair : status.values)
     {
-      if (pair.key == "round_trip_us_p50" && pair.value != "null")
+      if ((pair.key == "round_trip_us_p50" || pair.key == "latency_us_p50") && pair.value != "null")
       {
         p50 = std::stod(pair.value);
       }
-      if (pair.key == "round_trip_us_p99" && pair.value != "null")
+      if ((pair.key == "round_trip_us_p99" || pair.key == "latency_us_p99") && pair.value != "null")
       {
         p99 = std::stod(pair.value);
       }
@@ -52,8 +55,8 @@ TEST(HapticLoop, RunsAtOneKilohertz)
   ros::NodeHandle nh;
   ros::NodeHandle pnh("~");
   const std::string interface = pnh.param<std::string>("interface", "finger");
-  const double duration = pnh.param("duration", 10.0);
-  const double min_rate = pnh.param("min_rate", 990.0);
+  const double duration = pnh.param("duration", 5.0);
+  const double min_rate = pnh.param("min_rate", 900.0);
   const std::string label = pnh.param<std::string>("label", "loop");
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   ros::Subscriber states = nh.subscribe<god_finger::DeviceState>(
@@ -99,17 +102,17 @@ TEST(HapticLoop, RunsAtOneKilohertz)
     }
   }
   std::printf(
-      "%s: device state %.1f Hz, feedback %.1f Hz, round trip p50 %.0f us, p99 %.0f us (medians of %zu 1-s "
+      "%s: device state %.1f Hz, feedback %.1f Hz, device to force p50 %.0f us, p99 %.0f us (medians of %zu 1-s "
       "windows)\n",
       label.c_str(), state_rate, feedback_rate, p50, p99, g_p50.size());
   std::fflush(stdout);
   // In the test's XML result, so that scripts/test can print them.
   RecordProperty("measured", label + ": device state " + std::to_string(state_rate) + " Hz, feedback " +
-                                 std::to_string(feedback_rate) + " Hz, round trip p50 " + std::to_string(p50) +
+                                 std::to_string(feedback_rate) + " Hz, device to force p50 " + std::to_string(p50) +
                                  " us, p99 " + std::to_string(p99) + " us");
   EXPECT_GE(state_rate, min_rate);
   EXPECT_GE(feedback_rate, min_rate);
-  EXPECT_GT(p50, 0.0) << "the driver reported no round trip";
+  EXPECT_GT(p50, 0.0) << "no device-to-force time on /diagnostics";
 }
 }  // namespace
 
