@@ -409,7 +409,9 @@ ScenarioSetup loadScenario(const ExperimentOptions& options)
   return setup;
 }
 
-ExperimentResult runExperiment(const ExperimentOptions& options)
+namespace
+{
+void checkOptions(const ExperimentOptions& options)
 {
   if (!(options.time_step >= 1e-5 && options.time_step <= 0.01))
   {
@@ -425,14 +427,19 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
     throw InputError("option 'push-height' = " + std::to_string(options.push_height) +
                      " is out of range [0, 0.04] (m)");
   }
+}
+}  // namespace
+
+ExperimentResult measureScenario(const ExperimentOptions& options, const GodFingerWorld& world,
+                                 const std::function<void(long step)>& step)
+{
+  checkOptions(options);
   const Script script = scriptFor(options);
-  const ScenarioSetup setup = loadScenario(options);
-  const SceneDescription& scene = setup.scene;
-  const int object = setup.object;
-  GodFingerWorld world(scene, scenarioParams(options));
-  for (const WaypointPath& finger : script.fingers)
+  const SceneDescription& scene = world.scene();
+  const int object = scene.find(script.object);
+  if (object < 0)
   {
-    world.addInterface(finger.at(0.0));
+    throw InputError("scene '" + script.scene_file + "' has no link '" + script.object + "'");
   }
   const double duration = options.duration > 0.0 ? options.duration : script.duration;
   const long steps = std::lround(duration / options.time_step);
@@ -446,13 +453,8 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
       options.sample_period > 0.0 ? std::max(1L, std::lround(options.sample_period / options.time_step)) : 0;
   for (long i = 0; i < steps; ++i)
   {
-    const double next_time = (i + 1) * options.time_step;
-    for (int f = 0; f < world.interfaceCount(); ++f)
-    {
-      world.setInterfaceTarget(f, script.fingers[f].at(next_time));
-    }
     const auto start = std::chrono::steady_clock::now();
-    world.step();
+    step(i);
     const auto stop = std::chrono::steady_clock::now();
     step_us.push_back(std::chrono::duration<double, std::micro>(stop - start).count());
     result.max_penetration_m = std::max(result.max_penetration_m, world.deepestPenetration());
@@ -482,6 +484,28 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
   }
   result.metrics = metrics.metrics();
   return result;
+}
+
+ExperimentResult runExperiment(const ExperimentOptions& options)
+{
+  checkOptions(options);
+  const ScenarioSetup setup = loadScenario(options);
+  GodFingerWorld world(setup.scene, scenarioParams(options));
+  for (const WaypointPath& finger : setup.fingers)
+  {
+    world.addInterface(finger.at(0.0));
+  }
+  // The ideal hand: each interface is exactly where the script puts it at the step's end.
+  return measureScenario(options, world,
+                         [&world, &setup, &options](long i)
+                         {
+                           const double next_time = (i + 1) * options.time_step;
+                           for (int f = 0; f < world.interfaceCount(); ++f)
+                           {
+                             world.setInterfaceTarget(f, setup.fingers[f].at(next_time));
+                           }
+                           world.step();
+                         });
 }
 
 std::string toJson(const ExperimentResult& result)

@@ -1,6 +1,7 @@
 #include "experiment_tool.h"
 
 #include "god_finger/core/text_numbers.h"
+#include "god_finger/runtime/servo_experiment.h"
 
 #include <cmath>
 #include <exception>
@@ -12,12 +13,14 @@ const char* experimentToolUsage()
   return "usage: god_finger_experiment --scenario slide|lift_one|lift_two|pinch_cylinder\n"
          "                             --model god_object|god_finger|soft_finger\n"
          "                             [--duration S] [--dt S] [--csv FILE] [--seed N] [--fast]\n"
-         "                             [--push-height M] [--scenes DIR]\n"
+         "                             [--push-height M] [--scenes DIR] [--hand ideal|fake]\n"
          "Runs the scenario's scripted hand motion in the physics world and prints one JSON object:\n"
          "scenario, model, duration_s, steps, step_us_median, step_us_p99, max_penetration_m, nan,\n"
          "metrics. --duration 0 (default) runs the scenario's own length; --fast lifts ten times\n"
          "faster (lift scenarios); --push-height is the hand's height above the ball's centre (slide,\n"
-         "default 0.0125 m); --csv writes the time series.\n";
+         "default 0.0125 m); --csv writes the time series. --hand ideal (default) puts each interface\n"
+         "where the script says; --hand fake runs the servo loop on simulated time with the fake\n"
+         "device's handle held by the scripted hand, as a ROS session on the servo loop does.\n";
 }
 
 std::string parseExperimentToolOptions(int argc, const char* const* argv, const std::string& default_scenes_dir,
@@ -103,6 +106,14 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
     {
       experiment.csv = value;
     }
+    else if (option == "--hand")
+    {
+      if (value != "ideal" && value != "fake")
+      {
+        return "option '--hand' = '" + value + "' is not one of ideal, fake";
+      }
+      options->fake_hand = value == "fake";
+    }
     else if (option == "--scenes")
     {
       experiment.scenes_dir = value;
@@ -123,7 +134,8 @@ int runExperimentTool(const ExperimentToolOptions& options, std::ostream& out, s
 {
   try
   {
-    out << toJson(runExperiment(options.experiment)) << std::endl;
+    out << toJson(options.fake_hand ? runServoExperiment(options.experiment) : runExperiment(options.experiment))
+        << std::endl;
     return 0;
   }
   catch (const std::exception& exception)

@@ -12,6 +12,7 @@ namespace god_finger
 struct ExperimentToolOptions
 {
   ExperimentOptions experiment;
+  bool fake_hand = false;  // --hand fake: the servo loop with the fake device's handle
   bool help = false;
 };
 

@@ -24,11 +24,13 @@
 #pragma once
 
 #include "god_finger/core/waypoint_path.h"
+#include "god_finger/physics/god_finger_world.h"
 #include "god_finger/physics/scene_description.h"
 #include "god_finger/physics/world_params.h"
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -100,7 +102,14 @@ struct ScenarioSetup
   double duration = 0.0;
 };
 ScenarioSetup loadScenario(const ExperimentOptions& options);
-// Throws InputError on a bad scene or option.
+// Throws InputError on a bad scene or option. The ideal hand: every interface is where the
+// script puts it (runtime/servo_experiment.h runs the same scenario through the servo loop and
+// the fake device's handle instead).
 ExperimentResult runExperiment(const ExperimentOptions& options);
+// Measures a scenario's world (the scenario's object, metrics, CSV, trajectory samples) over
+// the scenario's steps, each taken by `step(i)`, which advances `world` by one step by whatever
+// drives its interfaces. Throws InputError on a bad option.
+ExperimentResult measureScenario(const ExperimentOptions& options, const GodFingerWorld& world,
+                                 const std::function<void(long step)>& step);
 std::string toJson(const ExperimentResult& result);
 }  // namespace god_finger

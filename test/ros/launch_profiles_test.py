@@ -1,0 +1,68 @@
+#!/usr/bin/python3
+"""rostest: in every shipped launch file, for every device, the spring the hand feels is the
+one that pulls its proxy. Each launch is loaded as roslaunch would (its parameters, not its
+nodes), for every device it can take; for every interface the device's profile
+(config/devices/PROFILE.yaml) must sit once in the interface's namespace, which the driver,
+the haptic node, the physics node and the servo node all read it from
+(ros/interface_parameters.h), and no node may carry a private coupling or force limit of its
+own that would override it."""
+import os
+import sys
+import unittest
+
+import roslaunch.config
+import rospkg
+import rostest
+import yaml
+
+PACKAGE = rospkg.RosPack().get_path("god_finger")
+PROFILE_KEYS = ("coupling_stiffness", "coupling_damping", "max_force")
+SIMULATED = {"fake": "fake", "interactive": "fake", "replay": "fake", "falcon": "falcon", "omni": "omni"}
+
+
+def launches():
+    """(launch file, roslaunch args) for every shipped launch and device it takes."""
+    cases = []
+    for topology in ("servo", "nodelets", "processes"):
+        for device in SIMULATED:
+            cases.append(("demo.launch", ["device:=" + device, "topology:=" + topology, "bag:=/tmp/none.bag"]))
+        for scenario in ("slide", "lift_one", "lift_two", "pinch_cylinder"):
+            cases.append((scenario + ".launch", ["topology:=" + topology]))
+        for device in ("falcon", "omni"):
+            cases.append((device + ".launch", ["topology:=" + topology]))
+            cases.append((device + ".launch", ["topology:=" + topology, "bimanual:=true"]))
+            cases.append(("hardware.launch", ["device:=" + device, "topology:=" + topology]))
+    return cases
+
+
+def profile(name):
+    with open(os.path.join(PACKAGE, "config", "devices", name + ".yaml")) as f:
+        return yaml.safe_load(f)
+
+
+class LaunchProfiles(unittest.TestCase):
+    def test_every_interface_renders_the_coupling_that_pulls_its_proxy(self):
+        checked = 0
+        for launch, args in launches():
+            path = os.path.join(PACKAGE, "launch", launch)
+            config = roslaunch.config.load_config_default([(path, args)], None, verbose=False)
+            params = {name: p.value for name, p in config.params.items()}
+            interfaces = [name.rsplit("/", 1)[0] for name in params if name.endswith("/backend")]
+            self.assertTrue(interfaces, "%s %s: no interface" % (launch, args))
+            for interface in interfaces:
+                backend = params[interface + "/backend"]
+                expected = profile(SIMULATED[backend])
+                for key in PROFILE_KEYS:
+                    self.assertEqual(params.get(interface + "/" + key), expected[key],
+                                     "%s %s: %s/%s" % (launch, args, interface, key))
+                checked += 1
+            # No node's private parameter shadows the interface's profile.
+            for name in params:
+                parts = name.strip("/").split("/")
+                if parts[-1] in PROFILE_KEYS and "/" + "/".join(parts[:-1]) not in interfaces:
+                    self.fail("%s %s: %s overrides the interface's profile" % (launch, args, name))
+        print("launch profiles: %d interfaces in %d launch configurations checked" % (checked, len(launches())))
+
+
+if __name__ == "__main__":
+    rostest.rosrun("god_finger", "launch_profiles", LaunchProfiles, sys.argv)
