@@ -22,7 +22,7 @@ WaypointPath readBagTrack(const std::string& bag_path, const std::string& topic)
     throw InputError("bag '" + bag_path + "': cannot be read (" + error.what() + ")");
   }
   std::vector<Waypoint> waypoints;
-  double first = 0.0;
+  ros::Time first;
   long skipped = 0;
   for (const rosbag::MessageInstance& message : rosbag::View(bag, rosbag::TopicQuery(topic)))
   {
@@ -32,12 +32,13 @@ WaypointPath readBagTrack(const std::string& bag_path, const std::string& topic)
       throw InputError("bag '" + bag_path + "': topic '" + topic + "' does not hold god_finger/DeviceState");
     }
     const Eigen::Vector3d position(state->position.x, state->position.y, state->position.z);
-    const double stamp = state->header.stamp.toSec();
     if (waypoints.empty())
     {
-      first = stamp;
+      first = state->header.stamp;
     }
-    const double t = stamp - first;
+    // In whole nanoseconds first: a simulated-time session's stamps are exact ticks, and so
+    // are these times.
+    const double t = (state->header.stamp - first).toSec();
     if (!position.allFinite() || (!waypoints.empty() && !(t > waypoints.back().time)))
     {
       ++skipped;

@@ -336,6 +336,8 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   // On simulated time a recorder (record:=true) gets the session from its first tick: the loop
   // waits (up to 10 s of wall clock) until every interface's device/state has this many
   // subscribers.
+  // Meanwhile /clock says 1 ns: valid for those (rosbag record) that wait for a clock before
+  // they subscribe.
   const int wait_for = readInt(pnh, "wait_for_subscribers", 0, 0, 100);
   const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(10.0);
   while (impl.sim_time && wait_for > 0 && ros::ok() && ros::WallTime::now() < give_up &&
@@ -343,6 +345,9 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
                      [wait_for](const Impl::Interface& interface)
                      { return static_cast<int>(interface.state.getNumSubscribers()) < wait_for; }))
   {
+    rosgraph_msgs::Clock clock;
+    clock.clock = ros::Time(0, 1);
+    impl.clock_publisher.publish(clock);
     ros::WallDuration(0.01).sleep();
   }
   impl.publisher_thread = std::thread([this]() { impl_->publish(); });

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""rostest: dynamic_reconfigure of the physics node while it runs. The finger presses on the
+"""rostest: dynamic_reconfigure of the simulation (~node: the servo node by default, the
+physics node in the topic topologies) while it runs. The finger presses on the
 ball; a smaller r_max shrinks the published contact area at once; the model switches; a bad
 walk variant is refused and the previous one stays."""
 import sys
@@ -38,7 +39,7 @@ class Reconfigure(unittest.TestCase):
         self.assertTrue(condition(), "waited %.0f s for %s" % (seconds, what))
 
     def test_parameters_change_while_running(self):
-        client = dynamic_reconfigure.client.Client("/physics", timeout=30)
+        client = dynamic_reconfigure.client.Client(rospy.get_param("~node", "/servo"), timeout=30)
         self.wait_for(lambda: self.radius is not None and self.radius > 0.009, 30.0, "a pressing contact area")
         before = self.radius
         config = client.update_configuration({"r_max": 0.004})

@@ -79,11 +79,12 @@ class LayeredParameterSource : public ParameterSource
   {
     return first_.get(name, value) || second_.get(name, value);
   }
-  // The name where the value was found, else the second's.
+  // The name where the value was found; the first's when it is set nowhere (where a value
+  // given now would be read, whatever the second holds).
   std::string fullName(const std::string& name) const override
   {
     ParameterValue unused;
-    return first_.get(name, &unused) ? first_.fullName(name) : second_.fullName(name);
+    return !first_.get(name, &unused) && second_.get(name, &unused) ? second_.fullName(name) : first_.fullName(name);
   }
 
  private:
