@@ -1,11 +1,20 @@
 #!/usr/bin/python3
-"""Haptic loop, speed against error: nodelets or separate processes x forwarded or local coupling.
+"""Haptic loop, timing and speed against error, in every topology, idle and loaded.
 
 usage: bench/haptic_loop.py OUT.jsonl [--seconds S]   (needs a sourced god_finger workspace)
 
-For each of the four set-ups it runs demo.launch headless with the fake device on the script
-press_oscillate (press the ball's top, oscillate the press at 2 Hz, then hold still), records
-a bag, and measures:
+Set-ups: the servo loop (topology servo); driver, haptic and physics as nodelets or as
+processes, each with the physics' feedback forwarded or the coupling rendered locally. Each
+runs twice: idle (only the analysed topics recorded), and under the standard background load:
+one busy process per core at normal priority, the full recording (record:=true) and rviz under
+Xvfb (software GL). Each run is demo.launch with the fake device on the script press_oscillate
+(press the ball's top, oscillate the press at 2 Hz, then hold still) for S seconds (60), and
+measures:
+- the loop's rate over the run (device states over the span of their stamps), its period
+  (successive device-state stamps: the servo stamps a state when its device was read, the
+  driver when it publishes it from its loop) and device-to-force latency (the servo's read to
+  force command per tick, ~timing_csv; the driver's round trip state -> force command per
+  command), as p50 / p99 / max, with histograms kept for the plots;
 - rendered stiffness error: the force the device applied (DeviceState.applied_force) against the
   handle's depth into the ball (from the interface pose of the same device state, ball radius
   + proxy radius - distance to the ball's centre), fitted |F| = k_rendered * depth + b over
@@ -16,7 +25,6 @@ a bag, and measures:
   and worst window, N);
 - CPU: user + system time of the launched god_finger processes (not the recorder, not the
   master) over the run, as a share of one core;
-- the loop's round trip p50 / p99 from the driver's diagnostics;
 - resident memory (VmRSS, MB): the physics node (processes) or the nodelet manager holding
   all three nodes (nodelets), on the demo scene.
 Prints one JSON line per set-up to OUT.jsonl.
@@ -96,21 +104,14 @@ def median(values):
 
 def analyse(bag_path):
     states, poses = {}, {}
-    trips50, trips99 = [], []
     with rosbag.Bag(bag_path) as bag:
-        for topic, message, _ in bag.read_messages(topics=["/finger/device/state", "/finger/pose", "/diagnostics"]):
+        for topic, message, _ in bag.read_messages(topics=["/finger/device/state", "/finger/pose"]):
             if topic == "/finger/device/state":
                 f = message.applied_force
                 states[message.header.stamp.to_nsec()] = math.sqrt(f.x * f.x + f.y * f.y + f.z * f.z)
             elif topic == "/finger/pose":
                 p = message.pose.position
                 poses[message.header.stamp.to_nsec()] = math.sqrt(p.x * p.x + p.y * p.y + (p.z - BALL_CENTRE_Z) ** 2)
-            else:
-                for status in message.status:
-                    values = {pair.key: pair.value for pair in status.values}
-                    if values.get("round_trip_us_p50", "null") != "null":
-                        trips50.append(float(values["round_trip_us_p50"]))
-                        trips99.append(float(values["round_trip_us_p99"]))
     stamps = sorted(s for s in states if s in poses)
     if len(stamps) < 1000:
         raise RuntimeError(f"{bag_path}: only {len(stamps)} device states with a pose")
@@ -147,8 +148,6 @@ def analyse(bag_path):
     if not slopes or not jitters:
         raise RuntimeError(f"{bag_path}: too few samples in the oscillation or the hold")
     errors = [abs(k - STIFFNESS) / STIFFNESS for k in slopes]
-    trips50.sort()
-    trips99.sort()
     return {
         "windows": len(slopes),
         "k_rendered": median(slopes),
@@ -158,38 +157,109 @@ def analyse(bag_path):
         "hold_force_N": sum(hold) / max(len(hold), 1),
         "jitter_N": median(jitters),
         "jitter_worst_N": max(jitters),
-        "round_trip_p50_us": trips50[len(trips50) // 2] if trips50 else None,
-        "round_trip_p99_us": trips99[len(trips99) // 2] if trips99 else None,
         "first_touch_s": (touch - t0) / 1e9,
     }
 
 
-def run(standalone, local, seconds, directory):
-    name = ("processes" if standalone else "nodelets") + "/" + ("local" if local else "forwarded")
-    bag = os.path.join(directory, name.replace("/", "_") + ".bag")
-    command = ["roslaunch", "god_finger", "demo.launch", "script:=press_oscillate",
-               f"standalone:={'true' if standalone else 'false'}", f"local_coupling:={'true' if local else 'false'}"]
-    launch = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
-    # Only what is analysed is recorded (a full recording loads the 2 cores and the round trip).
-    recorder = subprocess.Popen(["rosbag", "record", "-O", bag, "/finger/device/state", "/finger/pose", "/diagnostics",
-                                 "__name:=bench_recorder"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                                start_new_session=True)
-    time.sleep(3.0)  # nodes up, script not yet started (script_delay 2 s after the launch's epoch)
+SETUPS = [
+    ("servo", ["topology:=servo"]),
+    ("nodelets/forwarded", ["topology:=nodelets", "local_coupling:=false"]),
+    ("nodelets/local", ["topology:=nodelets", "local_coupling:=true"]),
+    ("processes/forwarded", ["topology:=processes", "local_coupling:=false"]),
+    ("processes/local", ["topology:=processes", "local_coupling:=true"]),
+]
+
+
+def percentiles(values):
+    ordered = sorted(values)
+    if not ordered:
+        return {"p50": None, "p99": None, "max": None}
+    return {"p50": ordered[len(ordered) // 2], "p99": ordered[min(len(ordered) - 1, int(0.99 * len(ordered)))],
+            "max": ordered[-1]}
+
+
+def timing(bag_path, latency_csv, start_ns, end_ns):
+    stamps = []
+    with rosbag.Bag(bag_path) as bag:
+        for _, message, _ in bag.read_messages(topics=["/finger/device/state"]):
+            stamp = message.header.stamp.to_nsec()
+            if start_ns <= stamp <= end_ns:
+                stamps.append(stamp)
+    stamps.sort()
+    periods = [(b - a) / 1e3 for a, b in zip(stamps, stamps[1:])]
+    rate = (len(stamps) - 1) / ((stamps[-1] - stamps[0]) / 1e9) if len(stamps) > 1 else 0.0
+    latencies = []
+    with open(latency_csv) as handle:
+        next(handle)
+        column = 1 if latency_csv.endswith("servo.csv") else 0
+        for line in handle:
+            latencies.append(float(line.split(",")[column]))
+    return {"rate_hz": rate, "ticks": len(stamps), "period_us": percentiles(periods),
+            "latency_us": percentiles(latencies), "period_hist": histogram(periods), "latency_hist": histogram(latencies)}
+
+
+def histogram(values, bins=200, top=4000.0):
+    """Counts of values (us) in 20 us bins up to 4 ms, plus one overflow bin."""
+    counts = [0] * (bins + 1)
+    for value in values:
+        counts[min(bins, int(value / (top / bins)))] += 1
+    return counts
+
+
+def busy_loops():
+    return [subprocess.Popen(["sh", "-c", "while :; do :; done"], start_new_session=True)
+            for _ in range(os.cpu_count() or 2)]
+
+
+def run(name, arguments, loaded, seconds, directory):
+    label = name + (" loaded" if loaded else " idle")
+    stem = os.path.join(directory, label.replace("/", "_").replace(" ", "_"))
+    bag = stem + ".bag"
+    servo = name == "servo"
+    latency_csv = stem + ("_servo.csv" if servo else "_driver.csv")
+    subprocess.run(["rosparam", "set", "/servo/timing_csv" if servo else "/finger/device_driver/timing_csv",
+                    latency_csv], check=True)
+    command = ["roslaunch", "god_finger", "demo.launch", "script:=press_oscillate"] + arguments
+    env = dict(os.environ)
+    extra = []
+    if loaded:
+        # The full recording and rviz under Xvfb, as a user who watches and records.
+        command += ["record:=true", "bag:=" + bag, "rviz:=true"]
+        display = ":97"
+        extra.append(subprocess.Popen(["Xvfb", display, "-screen", "0", "1024x768x24", "-nolisten", "tcp"],
+                                      stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True))
+        env.update(DISPLAY=display, LIBGL_ALWAYS_SOFTWARE="1")
+        time.sleep(1.0)
+        extra += busy_loops()
+    launch = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env,
+                              start_new_session=True)
+    if not loaded:
+        # Only what is analysed is recorded.
+        extra.append(subprocess.Popen(["rosbag", "record", "-O", bag, "/finger/device/state", "/finger/pose",
+                                       "/diagnostics", "__name:=bench_recorder"], stdout=subprocess.DEVNULL,
+                                      stderr=subprocess.DEVNULL, start_new_session=True))
+    time.sleep(4.0)  # nodes up, script not yet started long (script_delay 2 s after the launch's epoch)
     cpu_start, wall_start = cpu_seconds(descendants(launch.pid)), time.monotonic()
+    start_ns = int(time.time() * 1e9)
     time.sleep(seconds)
+    end_ns = int(time.time() * 1e9)
     pids = descendants(launch.pid)
     cpu_end, wall_end = cpu_seconds(pids), time.monotonic()
-    # Resident size: the physics node (standalone) or the manager holding all three nodelets.
-    resident = resident_mb(pids, "physics_node") if standalone else resident_mb(pids, "manager")
-    for process in (recorder, launch):
+    resident = resident_mb(pids, "physics_node") if name.startswith("processes") else resident_mb(pids, "manager")
+    for process in [launch] + extra:
         os.killpg(process.pid, signal.SIGINT)
+    for process in [launch] + extra:
         try:
             process.wait(timeout=30)
         except subprocess.TimeoutExpired:
             os.killpg(process.pid, signal.SIGKILL)
             process.wait()
-    result = {"setup": name, "cpu_cores": (cpu_end - cpu_start) / (wall_end - wall_start), "resident_mb": resident}
+    subprocess.run(["rosparam", "delete", "/servo/timing_csv" if servo else "/finger/device_driver/timing_csv"],
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    result = {"setup": name, "loaded": loaded, "seconds": seconds,
+              "cpu_cores": (cpu_end - cpu_start) / (wall_end - wall_start), "resident_mb": resident}
     result.update(analyse(bag))
+    result.update(timing(bag, latency_csv, start_ns, end_ns))
     return result
 
 
@@ -197,17 +267,18 @@ def main():
     if len(sys.argv) < 2:
         print(__doc__, file=sys.stderr)
         return 2
-    seconds = float(sys.argv[3]) if len(sys.argv) > 3 and sys.argv[2] == "--seconds" else 11.0
+    seconds = float(sys.argv[3]) if len(sys.argv) > 3 and sys.argv[2] == "--seconds" else 60.0
     master = subprocess.Popen(["roscore", "-p", "11411"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                               start_new_session=True)
     os.environ["ROS_MASTER_URI"] = "http://localhost:11411"
     time.sleep(3.0)
     try:
         with tempfile.TemporaryDirectory() as directory, open(sys.argv[1], "w") as out:
-            for standalone in (False, True):
-                for local in (False, True):
-                    result = run(standalone, local, seconds, directory)
-                    print(json.dumps(result), flush=True)
+            for loaded in (False, True):
+                for name, arguments in SETUPS:
+                    result = run(name, arguments, loaded, seconds, directory)
+                    brief = {k: v for k, v in result.items() if not k.endswith("_hist")}
+                    print(json.dumps(brief), flush=True)
                     out.write(json.dumps(result) + "\n")
     finally:
         os.killpg(master.pid, signal.SIGINT)

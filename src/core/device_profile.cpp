@@ -15,8 +15,7 @@ DeviceProfile readDeviceProfile(const ParameterSource& source)
   guard.max_force = coupling.max_force;
   guard.command_timeout = readDouble(source, "command_timeout", guard.command_timeout, 0.0, 10.0, "s", true);
   guard.ramp_time = readDouble(source, "ramp_time", guard.ramp_time, 0.0, 1.0, "s", true);
-  profile.workspace_radius =
-      readDouble(source, "workspace_radius", profile.workspace_radius, 0.0, 10.0, "m", true);
+  profile.workspace_radius = readDouble(source, "workspace_radius", profile.workspace_radius, 0.0, 10.0, "m", true);
   return profile;
 }
 }  // namespace god_finger

@@ -123,8 +123,8 @@ int readInt(const ParameterSource& source, const std::string& name, int fallback
   if (number < low || number > high)
   {
     std::ostringstream message;
-    message << "parameter '" << source.fullName(name) << "' = " << number << " is out of range [" << low << ", "
-            << high << "] (count)";
+    message << "parameter '" << source.fullName(name) << "' = " << number << " is out of range [" << low << ", " << high
+            << "] (count)";
     throw InputError(message.str());
   }
   return number;

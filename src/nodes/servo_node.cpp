@@ -1,6 +1,6 @@
 // The servo node as its own process (see god_finger/ros/servo_node.h).
-#include "god_finger/ros/run_node.h"
 #include "god_finger/ros/servo_node.h"
+#include "god_finger/ros/run_node.h"
 
 int main(int argc, char** argv)
 {

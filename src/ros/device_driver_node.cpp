@@ -21,6 +21,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 #include <thread>
 
@@ -44,6 +45,7 @@ struct DeviceDriverNode::Impl
   long overruns = 0;
   std::vector<double> round_trips_us;  // since the last diagnostics
   long published = 0;
+  std::FILE* timing = nullptr;  // ~timing_csv: every round trip (us), for the bench
 
   double now() const
   {
@@ -102,6 +104,14 @@ struct DeviceDriverNode::Impl
     add("commands", std::to_string(trips.size()));
     add("round_trip_us_p50", jsonNumber(percentile(trips, 0.5)));
     add("round_trip_us_p99", jsonNumber(percentile(trips, 0.99)));
+    add("round_trip_us_max", jsonNumber(trips.empty() ? NAN : *std::max_element(trips.begin(), trips.end())));
+    for (double trip : trips)
+    {
+      if (timing)
+      {
+        std::fprintf(timing, "%.3f\n", trip);
+      }
+    }
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
   }
@@ -206,6 +216,16 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.force_subscriber =
       nh.subscribe("device/force", kSubscriberQueue, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
+  const std::string timing_csv = readString(pnh, "timing_csv", "");
+  if (!timing_csv.empty())
+  {
+    impl.timing = std::fopen(timing_csv.c_str(), "w");
+    if (!impl.timing)
+    {
+      throw InputError("parameter '" + pnh.resolveName("timing_csv") + "' = '" + timing_csv + "': cannot be written");
+    }
+    std::fprintf(impl.timing, "latency_us\n");
+  }
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend_name.c_str(), 1.0 / impl.period,
            config.profile.guard.max_force);
   impl.thread = std::thread([this]() { impl_->loop(); });
@@ -217,6 +237,10 @@ DeviceDriverNode::~DeviceDriverNode()
   if (impl_->thread.joinable())
   {
     impl_->thread.join();
+  }
+  if (impl_->timing)
+  {
+    std::fclose(impl_->timing);
   }
 }
 }  // namespace god_finger

@@ -48,15 +48,15 @@ std::unique_ptr<interactive_markers::InteractiveMarkerServer> makeHandMarker(
     axis.interaction_mode = visualization_msgs::InteractiveMarkerControl::MOVE_AXIS;
     marker.controls.push_back(axis);
   }
-  server->insert(marker,
-                 [on_move](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback)
-                 {
-                   if (feedback->event_type == visualization_msgs::InteractiveMarkerFeedback::POSE_UPDATE)
-                   {
-                     on_move(Eigen::Vector3d(feedback->pose.position.x, feedback->pose.position.y,
-                                             feedback->pose.position.z));
-                   }
-                 });
+  server->insert(
+      marker,
+      [on_move](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback)
+      {
+        if (feedback->event_type == visualization_msgs::InteractiveMarkerFeedback::POSE_UPDATE)
+        {
+          on_move(Eigen::Vector3d(feedback->pose.position.x, feedback->pose.position.y, feedback->pose.position.z));
+        }
+      });
   server->applyChanges();
   return server;
 }

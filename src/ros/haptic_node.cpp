@@ -6,8 +6,8 @@
 #include "god_finger/core/virtual_coupling.h"
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/physics/contact_model.h"
-#include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/conversions.h"
+#include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 

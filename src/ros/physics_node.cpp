@@ -9,10 +9,10 @@
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/ros/interface_parameters.h"
-#include "god_finger/ros/world_messages.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 #include "god_finger/ros/reconfigure.h"
+#include "god_finger/ros/world_messages.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/server.h>
@@ -39,7 +39,7 @@ struct PhysicsNode::Impl
   struct Interface
   {
     std::string name;
-    int index = -1;  // in the world, once the first pose came
+    int index = -1;            // in the world, once the first pose came
     CouplingProfile coupling;  // the device's (NAME/coupling_*), as its haptic node renders it
     ros::Subscriber pose_subscriber;
     ros::Publisher feedback_publisher;

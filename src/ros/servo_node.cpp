@@ -32,6 +32,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <thread>
 
 namespace god_finger
@@ -72,10 +73,18 @@ struct ServoNode::Impl
   LoopStatistics statistics;
   long last_dropped = 0;
 
-  // Simulated time: the loop's time after the step (never 0); wall time otherwise.
+  double steady_to_ros = 0.0;   // s: ROS wall time minus steadySeconds()
+  std::FILE* timing = nullptr;  // ~timing_csv: one line per tick
+
+  // Simulated time: the loop's time after the step (never 0). Wall clock: when the device
+  // was read (as a driver stamps its states), so that stamps show the loop's own period.
   ros::Time stampOf(double loop_time) const
   {
     return sim_time ? ros::Time(loop_time + loop->period()) : ros::Time::now();
+  }
+  ros::Time stampOf(const ServoSample& sample) const
+  {
+    return sim_time ? stampOf(sample.time) : ros::Time(sample.read_at + steady_to_ros);
   }
 
   void post(const ServoCommand& command, const char* what)
@@ -134,7 +143,11 @@ struct ServoNode::Impl
   void publishSample(const ServoSample& sample)
   {
     Interface& interface = interfaces[sample.interface];
-    const ros::Time stamp = stampOf(sample.time);
+    const ros::Time stamp = stampOf(sample);
+    if (timing && sample.interface == 0)
+    {
+      std::fprintf(timing, "%.3f,%.3f,%.3f\n", sample.period_us, sample.latency_us, sample.step_us);
+    }
     god_finger::DeviceStatePtr state(new god_finger::DeviceState);
     state->header.stamp = stamp;
     state->header.seq = ++interface.published;  // gap-free: a recording can be checked
@@ -248,11 +261,11 @@ struct ServoNode::Impl
       while (loop->snapshots().tryPop(&snapshot))
       {
         any = true;
-        const ros::Time stamp = sim_time ? ros::Time(snapshot.time > 0.0 ? snapshot.time : loop->period()) : ros::Time::now();
+        const ros::Time stamp =
+            sim_time ? ros::Time(snapshot.time > 0.0 ? snapshot.time : loop->period()) : ros::Time::now();
         const SceneDescription& scene = loop->world().scene();
         contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
-        marker_publisher.publish(
-            markerMessage(scene, snapshot, loop->world().params().coupling.proxy_radius, stamp));
+        marker_publisher.publish(markerMessage(scene, snapshot, loop->world().params().coupling.proxy_radius, stamp));
         broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
       }
       const double now = steadySeconds();
@@ -350,6 +363,18 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
     impl.clock_publisher.publish(clock);
     ros::WallDuration(0.01).sleep();
   }
+  impl.steady_to_ros = ros::WallTime::now().toSec() - steadySeconds();
+  // ~timing_csv: period, device-to-force latency and step (us) of every tick, for the bench.
+  const std::string timing_csv = readString(pnh, "timing_csv", "");
+  if (!timing_csv.empty())
+  {
+    impl.timing = std::fopen(timing_csv.c_str(), "w");
+    if (!impl.timing)
+    {
+      throw InputError("parameter '" + pnh.resolveName("timing_csv") + "' = '" + timing_csv + "': cannot be written");
+    }
+    std::fprintf(impl.timing, "period_us,latency_us,step_us\n");
+  }
   impl.publisher_thread = std::thread([this]() { impl_->publish(); });
   impl.loop->start();
 }
@@ -361,6 +386,10 @@ ServoNode::~ServoNode()
   if (impl_->publisher_thread.joinable())
   {
     impl_->publisher_thread.join();
+  }
+  if (impl_->timing)
+  {
+    std::fclose(impl_->timing);
   }
 }
 }  // namespace god_finger

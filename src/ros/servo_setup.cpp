@@ -35,8 +35,8 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
   setup.names = readStringList(pnh, "interfaces", {"finger"});
   // Simulated devices start their scripts together: on simulated time script_delay after 0,
   // on the wall clock script_delay after the launch's epoch (the loop's clock starts now).
-  const double script_start = sim_time ? readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s")
-                                            : sharedScriptStart(pnh, 0.0);
+  const double script_start =
+      sim_time ? readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s") : sharedScriptStart(pnh, 0.0);
   std::vector<ServoInterface> servo_interfaces;
   for (std::size_t i = 0; i < setup.names.size(); ++i)
   {
@@ -73,4 +73,3 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
   return setup;
 }
 }  // namespace god_finger
-

@@ -251,6 +251,7 @@ void ServoLoop::tick(double time)
     sample->interface_position = state.interface_position;
     sample->proxy_position = state.proxy_position;
     sample->user_force = state.user_force;
+    sample->read_at = read_at_[i];
     sample->period_us = period_us;
     sample->latency_us = 1e6 * (commanded_at - read_at_[i]);
     sample->step_us = 1e6 * (step_end - step_start);

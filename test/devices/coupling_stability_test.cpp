@@ -70,8 +70,8 @@ bool settles(const FakeDeviceParams& params, double stiffness, double damping, i
     wall.max_force = INFINITY;
     const Eigen::Vector3d on_wall = Eigen::Vector3d(seen.position.x(), seen.position.y(), 0.0);
     force = seen.position.z() < 0.0
-                ? Eigen::Vector3d(-couplingForce(wall, seen.position, seen.velocity, on_wall, Eigen::Vector3d::Zero())
-                                       .on_proxy)
+                ? Eigen::Vector3d(
+                      -couplingForce(wall, seen.position, seen.velocity, on_wall, Eigen::Vector3d::Zero()).on_proxy)
                 : Eigen::Vector3d::Zero();
     if (time >= 1.7)
     {

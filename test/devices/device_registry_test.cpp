@@ -1,7 +1,7 @@
 // The one list of device backends: names, simulated or not, each backend reading its own
 // parameters, unknown names refused with the list, missing vendor libraries named.
-#include "god_finger/core/input_error.h"
 #include "god_finger/devices/device_registry.h"
+#include "god_finger/core/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,8 @@ TEST(DeviceRegistry, ListsEveryBackendOnce)
   }
   catch (const InputError& error)
   {
-    EXPECT_STREQ(error.what(), "parameter '/finger/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni");
+    EXPECT_STREQ(error.what(),
+                 "parameter '/finger/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni");
   }
 }
 

@@ -52,8 +52,9 @@ TEST(NodeErrors, ServoNode)
   expectFails(node, "__name:=s1", "/s1: parameter '/s1/scene' is required (the scene's URDF file)");
   expectFails(node, "__name:=s2 _scene:=" + kScene + " _real_time_factor:=-1",
               "parameter '/s2/real_time_factor' = -1 is out of range [0, 1000] (dimensionless)");
-  expectFails(node, "__name:=s3 _scene:=" + kScene + " _sim_time:=true",
-              "interface 's3_finger' has the hardware backend 'falcon': a person's hand does not run on simulated time");
+  expectFails(
+      node, "__name:=s3 _scene:=" + kScene + " _sim_time:=true",
+      "interface 's3_finger' has the hardware backend 'falcon': a person's hand does not run on simulated time");
   expectFails(node, "__name:=s4 _scene:=" + kScene, "coupling unstable at this time step");
   expectFails(node, "__name:=s5 _scene:=" + kScene + " _sim_time:=true _model:=point",
               "parameter '/s5/model' = 'point' is not one of god_object, god_finger, soft_finger");

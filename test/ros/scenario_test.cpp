@@ -10,8 +10,8 @@
 // waits for a subscriber there (wait_for_subscribers), starts once the test listens.
 #include "god_finger/ros/servo_setup.h"
 
-#include <gtest/gtest.h>
 #include <god_finger/DeviceState.h>
+#include <gtest/gtest.h>
 #include <ros/ros.h>
 #include <tf2_msgs/TFMessage.h>
 
@@ -71,8 +71,7 @@ TEST(Scenario, ReachesTheOfflineOutcomeAndIsTheOfflineRun)
   {
     {
       std::lock_guard<std::mutex> lock(g_mutex);
-      if (!g_poses.empty() &&
-          (g_poses.rbegin()->first - g_poses.begin()->first) * 1e-9 >= duration)
+      if (!g_poses.empty() && (g_poses.rbegin()->first - g_poses.begin()->first) * 1e-9 >= duration)
       {
         poses = g_poses;
         break;

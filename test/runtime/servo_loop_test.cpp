@@ -2,11 +2,11 @@
 // the force that pulls the proxy (one coupling, the device's profile), commands and buttons
 // are applied between two steps, bad readings and failing devices are contained, and a tick
 // allocates nothing.
+#include "god_finger/runtime/servo_loop.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/runtime/servo_clock.h"
-#include "god_finger/runtime/servo_loop.h"
 
 #include <gtest/gtest.h>
 
@@ -154,8 +154,8 @@ TEST(ServoLoop, TheHandFeelsTheReactionOfTheForceThatPullsTheProxy)
   while (loop->samples().tryPop(&sample))
   {
     // Device frame = world here (identity mapping): the command is the user force, guarded.
-    const Eigen::Vector3d expected = sample.user_force.norm() > 8.9 ? Eigen::Vector3d(sample.user_force.normalized() * 8.9)
-                                                                     : sample.user_force;
+    const Eigen::Vector3d expected =
+        sample.user_force.norm() > 8.9 ? Eigen::Vector3d(sample.user_force.normalized() * 8.9) : sample.user_force;
     ASSERT_LT((sample.commanded_force - expected).norm(), 1e-12) << "tick " << sample.tick;
     ++checked;
   }

@@ -1,8 +1,8 @@
 // The typed parameter readers every node, the servo loop and the tools share: defaults, types,
 // ranges, lists and tables, each bad value named with its full name; layered sources.
+#include "god_finger/core/parameter_source.h"
 #include "god_finger/core/device_profile.h"
 #include "god_finger/core/input_error.h"
-#include "god_finger/core/parameter_source.h"
 
 #include <gtest/gtest.h>
 

@@ -28,7 +28,7 @@ std::string validate(const CouplingProfile& profile);
 struct CouplingForce
 {
   Eigen::Vector3d on_proxy = Eigen::Vector3d::Zero();  // N; the hand feels -on_proxy
-  bool saturated = false;                               // the spring-damper exceeded max_force
+  bool saturated = false;                              // the spring-damper exceeded max_force
 };
 
 // k (p_I - p_GO) + b (v_I - v_GO), scaled down to max_force if longer (direction kept).

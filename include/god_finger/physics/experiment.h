@@ -58,8 +58,8 @@ struct ExperimentOptions
   // touches the ball 17 degrees above its equator.
   double push_height = 0.0125;
   std::uint64_t seed = 1;
-  std::string csv;         // time series path, empty for none
-  std::string scenes_dir;  // folder of the scene URDFs (urdf/scenes of the package)
+  std::string csv;             // time series path, empty for none
+  std::string scenes_dir;      // folder of the scene URDFs (urdf/scenes of the package)
   int solver_iterations = 60;  // range [1, 1000]: Bullet's sequential-impulse iterations
   // > 0: the watched object's pose is sampled every sample_period (s; rounded to whole steps)
   // into ExperimentResult::trajectory, for comparing runs of different settings.
@@ -68,7 +68,7 @@ struct ExperimentOptions
 
 struct PoseSample
 {
-  double time = 0.0;                                    // s
+  double time = 0.0;                                   // s
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, centre of mass, world
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };

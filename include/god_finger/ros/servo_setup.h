@@ -21,13 +21,12 @@ struct ServoSetup
   std::unique_ptr<ServoLoop> loop;  // prepared (devices started, proxies placed)
   WorldParams world_params;
   std::string scene_path;
-  std::vector<std::string> names;         // interfaces, in the loop's order
-  std::vector<std::string> backends;      // their backend names
+  std::vector<std::string> names;            // interfaces, in the loop's order
+  std::vector<std::string> backends;         // their backend names
   std::vector<Eigen::Vector3d> hand_starts;  // interactive backends: the marker's start (m, device frame)
 };
 
 // `nh`: the namespace the interfaces live under; `pnh`: the servo's private parameters.
 // Throws InputError / DeviceError.
-ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
-                          ServoLoop::Log log = ServoLoop::Log());
+ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh, ServoLoop::Log log = ServoLoop::Log());
 }  // namespace god_finger

@@ -52,13 +52,13 @@ struct ServoInterface
 
 struct ServoLoopParams
 {
-  double rate = 1000.0;          // Hz, range [10, 10000]: the device rate; the world's step is 1 / rate
-  int realtime_priority = 80;    // range [0, 99]: SCHED_FIFO priority of the loop thread, 0 for none
-  bool lock_memory = true;       // mlockall when permitted
-  bool simulated_time = false;   // see above
+  double rate = 1000.0;           // Hz, range [10, 10000]: the device rate; the world's step is 1 / rate
+  int realtime_priority = 80;     // range [0, 99]: SCHED_FIFO priority of the loop thread, 0 for none
+  bool lock_memory = true;        // mlockall when permitted
+  bool simulated_time = false;    // see above
   double real_time_factor = 1.0;  // range [0, 1000]; simulated time only; 0: as fast as it goes
-  int snapshot_every = 16;       // range [1, 1e6]: ticks between world snapshots (16: ~60 Hz)
-  int queue_ticks = 2000;        // range [16, 1e6]: samples the publishers may lag behind, in ticks
+  int snapshot_every = 16;        // range [1, 1e6]: ticks between world snapshots (16: ~60 Hz)
+  int queue_ticks = 2000;         // range [16, 1e6]: samples the publishers may lag behind, in ticks
 };
 std::string validate(const ServoLoopParams& params);
 
@@ -68,13 +68,14 @@ struct ServoSample
   long tick = 0;
   double time = 0.0;  // s, the loop clock's (simulated time, or seconds since the loop began)
   int interface = 0;
-  DeviceReading reading;                                          // device frame
-  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();        // N, device frame, applied at this tick
-  Eigen::Vector3d commanded_force = Eigen::Vector3d::Zero();      // N, device frame, for the next tick
+  DeviceReading reading;                                         // device frame
+  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();       // N, device frame, applied at this tick
+  Eigen::Vector3d commanded_force = Eigen::Vector3d::Zero();     // N, device frame, for the next tick
   Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();  // m, world (the device mapped)
   Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();      // m, world
   Eigen::Vector3d user_force = Eigen::Vector3d::Zero();          // N, world: the coupling's reaction
-  double period_us = 0.0;   // since the previous tick began (wall clock)
+  double read_at = 0.0;                                          // s, steadySeconds() when the device was read
+  double period_us = 0.0;                                        // since the previous tick began (wall clock)
   double latency_us = 0.0;  // from this device's reading to its force command (wall clock)
   double step_us = 0.0;     // the world step (wall clock)
 };
@@ -100,7 +101,7 @@ struct ServoCounters
 {
   std::atomic<long> ticks{0};
   std::atomic<long> overruns{0};
-  std::atomic<long> dropped_samples{0};    // real time: the publishers were behind
+  std::atomic<long> dropped_samples{0};  // real time: the publishers were behind
   std::atomic<long> dropped_snapshots{0};
   std::atomic<long> rejected_readings{0};  // non-finite device positions
   std::atomic<long> rejected_forces{0};    // non-finite forces refused by a guard

@@ -88,8 +88,8 @@ const std::vector<DeviceBackend>& deviceBackends()
 {
   // replay and interactive are simulated handles: the fake device's profile.
   static const std::vector<DeviceBackend> backends = {
-      {"fake", "fake", true, makeFake},       {"interactive", "fake", true, makeInteractive},
-      {"replay", "fake", true, makeReplay},   {"falcon", "falcon", false, makeFalcon},
+      {"fake", "fake", true, makeFake},     {"interactive", "fake", true, makeInteractive},
+      {"replay", "fake", true, makeReplay}, {"falcon", "falcon", false, makeFalcon},
       {"omni", "omni", false, makeOmni},
   };
   return backends;
