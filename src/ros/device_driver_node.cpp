@@ -206,7 +206,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   context.default_track_topic = nh.resolveName("device/state");
   impl.device = makeDevice(backend, context);
   impl.device->start();
-  if (backend_name == "interactive")
+  if (backend.hand_target)
   {
     HapticDevice* hand = impl.device.get();
     impl.marker_server = makeHandMarker(nh, impl.frame, readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)),

@@ -54,7 +54,9 @@ struct HapticNode::Impl
   Eigen::Vector3d proxy_velocity = Eigen::Vector3d::Zero();
   ros::Time proxy_stamp;
   ros::SteadyTime proxy_received;  // when the last proxy position came
-  double proxy_timeout = 0.05;     // s: older than this, the proxy is stale (the physics is gone)
+  // s: older than this, the proxy is stale (the physics is gone); long enough that a loaded
+  // machine delaying the proxy topic (tens of ms) does not cut the spring.
+  double proxy_timeout = 0.25;
   bool have_proxy = false;
   std::uint32_t buttons = 0;
   int pending_model_switch = 0;

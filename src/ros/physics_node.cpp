@@ -41,6 +41,9 @@ struct PhysicsNode::Impl
     std::string name;
     int index = -1;            // in the world, once the first pose came
     CouplingProfile coupling;  // the device's (NAME/coupling_*), as its haptic node renders it
+    // Read again at the interface's first pose: on several machines the device's launch may
+    // load its profile after the physics started (callback thread only).
+    bool profile_current = false;
     ros::Subscriber pose_subscriber;
     ros::Publisher feedback_publisher;
     ros::Publisher proxy_publisher;
@@ -78,6 +81,23 @@ struct PhysicsNode::Impl
   void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
   {
     const Eigen::Vector3d p(message->pose.position.x, message->pose.position.y, message->pose.position.z);
+    if (!interfaces[i].profile_current)
+    {
+      try
+      {
+        const CouplingProfile coupling =
+            readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, interfaces[i].name)), interfaces[i].name)
+                .profile.coupling;
+        std::lock_guard<std::mutex> lock(mutex);
+        interfaces[i].coupling = coupling;
+        interfaces[i].profile_current = true;
+      }
+      catch (const std::exception& error)
+      {
+        ROS_ERROR_THROTTLE(1.0, "physics: interface '%s' refused: %s", interfaces[i].name.c_str(), error.what());
+        return;
+      }
+    }
     std::lock_guard<std::mutex> lock(mutex);
     if (!p.allFinite() || (!message->header.frame_id.empty() && message->header.frame_id != "world"))
     {

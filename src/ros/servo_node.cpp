@@ -313,7 +313,7 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
     interface.pose = interface_nh.advertise<geometry_msgs::PoseStamped>("pose", kPublisherQueue);
     interface.feedback = interface_nh.advertise<geometry_msgs::WrenchStamped>("feedback", kPublisherQueue);
     interface.proxy = interface_nh.advertise<geometry_msgs::PointStamped>("proxy", kPublisherQueue);
-    if (setup.backends[i] == "interactive")
+    if (setup.hand_targets[i])
     {
       ServoLoop* loop = impl.loop.get();
       const int index = static_cast<int>(i);

@@ -64,6 +64,7 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
     servo.mapping = WorkspaceMapping(config.mapping);
     servo_interfaces.push_back(std::move(servo));
     setup.backends.push_back(backend_name);
+    setup.hand_targets.push_back(backend.hand_target);
     setup.hand_starts.push_back(readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)));
   }
   setup.loop = std::make_unique<ServoLoop>(std::move(world), std::move(servo_interfaces), loop_params, log);

@@ -14,6 +14,8 @@ TEST(DeviceRegistry, ListsEveryBackendOnce)
   EXPECT_EQ(deviceBackendNames(), "fake, interactive, replay, falcon, omni");
   EXPECT_TRUE(findDeviceBackend("fake", "backend").simulated);
   EXPECT_FALSE(findDeviceBackend("falcon", "backend").simulated);
+  EXPECT_TRUE(findDeviceBackend("interactive", "backend").hand_target);
+  EXPECT_FALSE(findDeviceBackend("fake", "backend").hand_target);
   EXPECT_STREQ(findDeviceBackend("replay", "backend").profile, "fake");
   try
   {

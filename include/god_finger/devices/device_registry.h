@@ -37,6 +37,7 @@ struct DeviceBackend
   const char* name;
   const char* profile;  // config/devices/PROFILE.yaml: force limit, coupling, workspace
   bool simulated;       // needs no hardware (can run on simulated time, in lockstep)
+  bool hand_target;     // moved by a hand the user drags (setHandTarget): the nodes add an rviz marker
   std::unique_ptr<HapticDevice> (*make)(const DeviceContext& context);
 };
 

@@ -8,7 +8,7 @@
 // device's profile (the one the physics pulls the proxy with, read from the interface's
 // namespace), from the freshest device position and the last god-object position (proxy,
 // geometry_msgs/PointStamped), on every device state (multi-rate rendering: topic latency then
-// delays the proxy, not the spring; a proxy older than ~proxy_timeout, 0.05 s, renders
+// delays the proxy, not the spring; a proxy older than ~proxy_timeout, 0.25 s, renders
 // nothing, so that the driver's watchdog ramps the force down when the physics dies);
 // otherwise it forwards the physics' feedback. Workspace
 // mapping: the interface's workspace_scale, force_scale, workspace_offset, workspace_rotation.

@@ -23,7 +23,8 @@ struct ServoSetup
   std::string scene_path;
   std::vector<std::string> names;            // interfaces, in the loop's order
   std::vector<std::string> backends;         // their backend names
-  std::vector<Eigen::Vector3d> hand_starts;  // interactive backends: the marker's start (m, device frame)
+  std::vector<bool> hand_targets;            // backends moved by a dragged hand (an rviz marker)
+  std::vector<Eigen::Vector3d> hand_starts;  // their marker's start (m, device frame)
 };
 
 // `nh`: the namespace the interfaces live under; `pnh`: the servo's private parameters.

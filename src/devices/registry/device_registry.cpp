@@ -88,9 +88,10 @@ const std::vector<DeviceBackend>& deviceBackends()
 {
   // replay and interactive are simulated handles: the fake device's profile.
   static const std::vector<DeviceBackend> backends = {
-      {"fake", "fake", true, makeFake},     {"interactive", "fake", true, makeInteractive},
-      {"replay", "fake", true, makeReplay}, {"falcon", "falcon", false, makeFalcon},
-      {"omni", "omni", false, makeOmni},
+      // name, profile, simulated, hand_target, factory
+      {"fake", "fake", true, false, makeFake},     {"interactive", "fake", true, true, makeInteractive},
+      {"replay", "fake", true, false, makeReplay}, {"falcon", "falcon", false, false, makeFalcon},
+      {"omni", "omni", false, false, makeOmni},
   };
   return backends;
 }
