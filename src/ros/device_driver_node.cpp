@@ -6,6 +6,7 @@
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/ros/bag_track.h"
+#include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/hand_marker.h"
 #include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/parameters.h"
@@ -89,13 +90,7 @@ struct DeviceDriverNode::Impl
       trips.swap(round_trips_us);
     }
     status.message = timed_out ? "no force commands: output ramped to zero" : "running";
-    auto add = [&status](const std::string& key, const std::string& value)
-    {
-      diagnostic_msgs::KeyValue pair;
-      pair.key = key;
-      pair.value = value;
-      status.values.push_back(pair);
-    };
+    auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", std::to_string(rate));
     add("overruns", std::to_string(overruns));
     add("rejected_commands", std::to_string(rejected));
@@ -216,16 +211,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.force_subscriber =
       nh.subscribe("device/force", kSubscriberQueue, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
-  const std::string timing_csv = readString(pnh, "timing_csv", "");
-  if (!timing_csv.empty())
-  {
-    impl.timing = std::fopen(timing_csv.c_str(), "w");
-    if (!impl.timing)
-    {
-      throw InputError("parameter '" + pnh.resolveName("timing_csv") + "' = '" + timing_csv + "': cannot be written");
-    }
-    std::fprintf(impl.timing, "latency_us\n");
-  }
+  impl.timing = openTimingCsv(pnh, "latency_us");
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend_name.c_str(), 1.0 / impl.period,
            config.profile.guard.max_force);
   impl.thread = std::thread([this]() { impl_->loop(); });

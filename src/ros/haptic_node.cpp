@@ -7,6 +7,7 @@
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/ros/conversions.h"
+#include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
@@ -204,17 +205,10 @@ struct HapticNode::Impl
     status.hardware_id = frame;
     status.level = diagnostic_msgs::DiagnosticStatus::OK;
     status.message = local_coupling ? "local coupling" : "forwarding feedback";
-    diagnostic_msgs::KeyValue pair;
     std::lock_guard<std::mutex> lock(mutex);
-    pair.key = "device_states";
-    pair.value = std::to_string(states);
-    status.values.push_back(pair);
-    pair.key = "rejected_states";
-    pair.value = std::to_string(rejected_states);
-    status.values.push_back(pair);
-    pair.key = "rejected_feedback";
-    pair.value = std::to_string(rejected_feedback);
-    status.values.push_back(pair);
+    addValue(&status, "device_states", std::to_string(states));
+    addValue(&status, "rejected_states", std::to_string(rejected_states));
+    addValue(&status, "rejected_feedback", std::to_string(rejected_feedback));
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
   }

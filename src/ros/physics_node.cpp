@@ -8,6 +8,7 @@
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/ros/conversions.h"
+#include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
@@ -257,13 +258,7 @@ struct PhysicsNode::Impl
     status.level =
         rate < 0.95 * wanted ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
     status.message = status.level == diagnostic_msgs::DiagnosticStatus::OK ? "running" : "below its rate";
-    auto add = [&status](const std::string& key, const std::string& value)
-    {
-      diagnostic_msgs::KeyValue pair;
-      pair.key = key;
-      pair.value = value;
-      status.values.push_back(pair);
-    };
+    auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", jsonNumber(rate));
     add("overruns", std::to_string(overruns));
     add("rejected_poses", std::to_string(rejected_poses));

@@ -8,6 +8,7 @@
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/ros/bag_track.h"
 #include "god_finger/ros/conversions.h"
+#include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/hand_marker.h"
 #include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/parameters.h"
@@ -205,13 +206,7 @@ struct ServoNode::Impl
                    : slow          ? diagnostic_msgs::DiagnosticStatus::WARN
                                    : diagnostic_msgs::DiagnosticStatus::OK;
     status.message = counters.failed ? "stopped: a device failed" : slow ? "below its rate" : "running";
-    auto add = [&status](const std::string& key, const std::string& value)
-    {
-      diagnostic_msgs::KeyValue pair;
-      pair.key = key;
-      pair.value = value;
-      status.values.push_back(pair);
-    };
+    auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("clock", sim_time ? "simulated" : "real time");
     add("realtime_priority", counters.realtime ? "SCHED_FIFO" : "none");
     add("rate_hz", jsonNumber(summary.rate_hz));
@@ -365,16 +360,7 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   }
   impl.steady_to_ros = ros::WallTime::now().toSec() - steadySeconds();
   // ~timing_csv: period, device-to-force latency and step (us) of every tick, for the bench.
-  const std::string timing_csv = readString(pnh, "timing_csv", "");
-  if (!timing_csv.empty())
-  {
-    impl.timing = std::fopen(timing_csv.c_str(), "w");
-    if (!impl.timing)
-    {
-      throw InputError("parameter '" + pnh.resolveName("timing_csv") + "' = '" + timing_csv + "': cannot be written");
-    }
-    std::fprintf(impl.timing, "period_us,latency_us,step_us\n");
-  }
+  impl.timing = openTimingCsv(pnh, "period_us,latency_us,step_us");
   impl.publisher_thread = std::thread([this]() { impl_->publish(); });
   impl.loop->start();
 }

@@ -3,6 +3,7 @@
 // are applied between two steps, bad readings and failing devices are contained, and a tick
 // allocates nothing.
 #include "god_finger/runtime/servo_loop.h"
+#include "allocation_counter.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/physics/urdf_scene.h"
@@ -14,27 +15,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <new>
-
-// Counts heap allocations in this test binary, to prove that a tick allocates nothing.
-static std::atomic<long> g_allocations{0};
-void* operator new(std::size_t size)
-{
-  ++g_allocations;
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr)
-  {
-    throw std::bad_alloc();
-  }
-  return p;
-}
-void operator delete(void* p) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept
-{
-  std::free(p);
-}
 
 namespace god_finger
 {
@@ -284,9 +264,9 @@ TEST(ServoLoop, ATickAllocatesNothing)
   auto loop = makeLoop(pressingHand());
   runTicks(*loop, 800);  // in contact: contact areas, injected sub-god-objects, warm starts
   drain(*loop);
-  const long before = g_allocations.load();
+  const long before = test::allocationCount();
   runTicks(*loop, 100, 800);
-  const long during = g_allocations.load() - before;
+  const long during = test::allocationCount() - before;
   drain(*loop);
   EXPECT_EQ(during, 0);
   EXPECT_EQ(loop->world().interfaceState(0).contact_count, 1);

@@ -1,6 +1,7 @@
 // The god-finger contact area end to end: Eq. 1 and 2, the flat-face circle, edge and vertex
 // contacts on a cube, invariance to scale and offset, bad input, no heap allocation.
 #include "god_finger/core/contact_area.h"
+#include "allocation_counter.h"
 #include "god_finger/core/mesh_primitives.h"
 #include "god_finger/core/radial_frame.h"
 #include "god_finger/core/surface_locator.h"
@@ -14,27 +15,6 @@
 #include <cstdlib>
 #include <limits>
 #include <new>
-
-// Counts heap allocations in this test binary, to prove the steady state allocates nothing.
-static std::atomic<long> g_allocations{0};
-void* operator new(std::size_t size)
-{
-  ++g_allocations;
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr)
-  {
-    throw std::bad_alloc();
-  }
-  return p;
-}
-void operator delete(void* p) noexcept
-{
-  std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept
-{
-  std::free(p);
-}
 
 namespace god_finger
 {
@@ -374,7 +354,7 @@ TEST(ContactAreaResult, SteadyStateDoesNotAllocate)
   params.sub_god_objects = 64;
   ContactAreaResult area;
   ContactQuery query;
-  const long before = g_allocations.load();
+  const long before = test::allocationCount();
   for (int i = 0; i < 200; ++i)
   {
     const double angle = 0.05 * i;
@@ -385,7 +365,7 @@ TEST(ContactAreaResult, SteadyStateDoesNotAllocate)
     query.reference_tangent = area.first_tangent;
     computeContactArea(mesh, query, params, &area);
   }
-  const long after = g_allocations.load();
+  const long after = test::allocationCount();
   EXPECT_TRUE(area.valid);
   EXPECT_EQ(after - before, 0);
 }
