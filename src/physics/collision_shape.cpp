@@ -1,4 +1,4 @@
-#include "god_finger/physics/collision_shape.h"
+#include "collision_shape.h"
 
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
 #include <HACD/hacdHACD.h>

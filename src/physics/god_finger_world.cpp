@@ -2,7 +2,7 @@
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/surface_locator.h"
-#include "god_finger/physics/collision_shape.h"
+#include "collision_shape.h"
 #include "god_finger/physics/walk_surface.h"
 
 #include <btBulletDynamicsCommon.h>
