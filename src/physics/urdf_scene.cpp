@@ -38,28 +38,9 @@ bool fileExists(const std::string& path)
   return stream.good();
 }
 
-// Folder of ROS package `name`: ROS_PACKAGE_PATH first, then the folders above `start`
-// whose package.xml names it.
-std::string findPackage(const std::string& name, const std::string& start)
+// Without a resolver (no ROS): the folders above `start` whose package.xml names `name`.
+std::string findPackageAbove(const std::string& name, const std::string& start)
 {
-  if (const char* env = std::getenv("ROS_PACKAGE_PATH"))
-  {
-    std::stringstream paths(env);
-    std::string entry;
-    while (std::getline(paths, entry, ':'))
-    {
-      for (const std::string& candidate : {entry + "/" + name, entry})
-      {
-        std::ifstream manifest(candidate + "/package.xml");
-        std::stringstream content;
-        content << manifest.rdbuf();
-        if (content.str().find("<name>" + name + "</name>") != std::string::npos)
-        {
-          return candidate;
-        }
-      }
-    }
-  }
   std::string folder = start;
   for (int level = 0; level < 16 && !folder.empty(); ++level)
   {
@@ -83,8 +64,8 @@ std::string findPackage(const std::string& name, const std::string& start)
 class SceneParser
 {
  public:
-  SceneParser(const std::string& source, const std::string& base_directory)
-      : source_(source), base_directory_(base_directory)
+  SceneParser(const std::string& source, const std::string& base_directory, const PackageResolver& packages)
+      : source_(source), base_directory_(base_directory), packages_(packages)
   {
   }
 
@@ -103,7 +84,7 @@ class SceneParser
       const std::string rest = filename.substr(package_prefix.size());
       const std::size_t slash = rest.find('/');
       const std::string package = rest.substr(0, slash);
-      const std::string root = findPackage(package, base_directory_);
+      const std::string root = packages_ ? packages_(package) : findPackageAbove(package, base_directory_);
       if (root.empty())
       {
         fail(link, "mesh '" + filename + "': ROS package '" + package + "' not found");
@@ -336,16 +317,17 @@ class SceneParser
  private:
   std::string source_;
   std::string base_directory_;
+  PackageResolver packages_;
 };
 }  // namespace
 
 SceneDescription parseUrdfScene(const std::string& urdf_xml, const std::string& base_directory,
-                                const std::string& source_name)
+                                const std::string& source_name, const PackageResolver& packages)
 {
-  return SceneParser(source_name, base_directory).parse(urdf_xml);
+  return SceneParser(source_name, base_directory, packages).parse(urdf_xml);
 }
 
-SceneDescription loadUrdfScene(const std::string& urdf_path)
+SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolver& packages)
 {
   std::ifstream stream(urdf_path);
   if (!stream.good())
@@ -354,6 +336,6 @@ SceneDescription loadUrdfScene(const std::string& urdf_path)
   }
   std::stringstream content;
   content << stream.rdbuf();
-  return parseUrdfScene(content.str(), directoryOf(urdf_path), urdf_path);
+  return parseUrdfScene(content.str(), directoryOf(urdf_path), urdf_path, packages);
 }
 }  // namespace god_finger

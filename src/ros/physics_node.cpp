@@ -13,6 +13,7 @@
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 #include "god_finger/ros/reconfigure.h"
+#include "god_finger/ros/scene_parameter.h"
 #include "god_finger/ros/world_messages.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
@@ -327,12 +328,8 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   impl.pnh = pnh;
   const WorldParams params = readWorldParams(pnh);
   impl.publish_period = 1.0 / readDouble(pnh, "publish_rate", 60.0, 1.0, 1000.0, "Hz");
-  const std::string scene_path = readString(pnh, "scene", "");
-  if (scene_path.empty())
-  {
-    throw InputError("parameter '" + pnh.resolveName("scene") + "' is required (the scene's URDF file)");
-  }
-  impl.world = std::make_unique<GodFingerWorld>(loadUrdfScene(scene_path), params);
+  std::string scene_path;
+  impl.world = std::make_unique<GodFingerWorld>(loadSceneParameter(pnh, &scene_path), params);
   const std::vector<std::string> names = readStringList(pnh, "interfaces", {"finger"});
   impl.interfaces.resize(names.size());
   for (std::size_t i = 0; i < names.size(); ++i)

@@ -7,6 +7,7 @@
 #include "god_finger/ros/hand_marker.h"
 #include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/parameters.h"
+#include "god_finger/ros/scene_parameter.h"
 
 #include <cmath>
 
@@ -26,12 +27,8 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
   loop_params.real_time_factor = readDouble(pnh, "real_time_factor", 1.0, 0.0, 1000.0, "dimensionless");
   const double publish_rate = readDouble(pnh, "publish_rate", 60.0, 1.0, 1000.0, "Hz");
   loop_params.snapshot_every = std::max(1, static_cast<int>(std::lround(loop_params.rate / publish_rate)));
-  const std::string scene_path = readString(pnh, "scene", "");
-  if (scene_path.empty())
-  {
-    throw InputError("parameter '" + pnh.resolveName("scene") + "' is required (the scene's URDF file)");
-  }
-  auto world = std::make_unique<GodFingerWorld>(loadUrdfScene(scene_path), world_params);
+  std::string scene_path;
+  auto world = std::make_unique<GodFingerWorld>(loadSceneParameter(pnh, &scene_path), world_params);
   setup.names = readStringList(pnh, "interfaces", {"finger"});
   // Simulated devices start their scripts together: on simulated time script_delay after 0,
   // on the wall clock script_delay after the launch's epoch (the loop's clock starts now).

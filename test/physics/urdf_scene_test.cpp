@@ -176,3 +176,48 @@ TEST(UrdfScene, LinkWithoutCollisionIsRejected)
 }
 }  // namespace
 }  // namespace god_finger
+
+namespace god_finger
+{
+namespace
+{
+TEST(UrdfScene, PackageMeshesGoThroughTheResolverGiven)
+{
+  const std::string xml = sceneWith(
+      "<collision><geometry><mesh filename='package://some_pkg/urdf/meshes/torus.dae'/></geometry></collision>" +
+          kGoodInertial,
+      "fixed");
+  std::vector<std::string> asked;
+  const SceneDescription scene = parseUrdfScene(xml, kScenes, "test.urdf",
+                                                [&asked](const std::string& name)
+                                                {
+                                                  asked.push_back(name);
+                                                  return std::string(GOD_FINGER_SOURCE_DIR);
+                                                });
+  ASSERT_EQ(asked, std::vector<std::string>{"some_pkg"});
+  const int thing = scene.find("thing");
+  ASSERT_GE(thing, 0);
+  EXPECT_EQ(scene.bodies[thing].geometry.mesh_path, std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/meshes/torus.dae");
+  try
+  {
+    parseUrdfScene(xml, kScenes, "test.urdf", [](const std::string&) { return std::string(); });
+    FAIL() << "an unknown package was accepted";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(),
+                 "URDF 'test.urdf': link 'thing': mesh 'package://some_pkg/urdf/meshes/torus.dae': ROS package "
+                 "'some_pkg' not found");
+  }
+}
+
+TEST(UrdfScene, WithoutAResolverPackagesAreTheFoldersAboveTheUrdfThatNameThem)
+{
+  // No ROS: the shipped torus scene's package://god_finger/... is the repository above it.
+  const SceneDescription scene = loadUrdfScene(kScenes + "/table_torus.urdf");
+  const int torus = scene.find("torus");
+  ASSERT_GE(torus, 0);
+  EXPECT_NE(scene.bodies[torus].geometry.mesh_path.find("/urdf/meshes/torus.dae"), std::string::npos);
+}
+}  // namespace
+}  // namespace god_finger

@@ -12,17 +12,25 @@
 //    <rolling_friction value=".."/><spinning_friction value=".."/>
 //    <restitution value=".."/></contact></link>. Missing values keep ContactMaterial's defaults.
 //  - Mesh file names: absolute, relative to the URDF file, file://..., or package://NAME/...
-//    (NAME looked up in ROS_PACKAGE_PATH, then in the folders above the URDF file).
+//    (NAME found by the PackageResolver given: the ROS layer passes ros::package::getPath;
+//    without one, the folders above the URDF file whose package.xml names NAME).
 //
 // Errors: InputError with one line naming the file, the link and the problem.
 #pragma once
 
 #include "god_finger/physics/scene_description.h"
 
+#include <functional>
+#include <string>
+
 namespace god_finger
 {
-SceneDescription loadUrdfScene(const std::string& urdf_path);
+// The folder of package `name`, or "" when it is not known.
+using PackageResolver = std::function<std::string(const std::string& name)>;
+
+SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolver& packages = PackageResolver());
 // Same, from a string; relative mesh paths are resolved against `base_directory`.
 SceneDescription parseUrdfScene(const std::string& urdf_xml, const std::string& base_directory,
-                                const std::string& source_name = "<string>");
+                                const std::string& source_name = "<string>",
+                                const PackageResolver& packages = PackageResolver());
 }  // namespace god_finger

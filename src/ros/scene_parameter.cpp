@@ -1,0 +1,20 @@
+#include "god_finger/ros/scene_parameter.h"
+
+#include "god_finger/core/input_error.h"
+#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/ros/parameters.h"
+
+#include <ros/package.h>
+
+namespace god_finger
+{
+SceneDescription loadSceneParameter(const ros::NodeHandle& pnh, std::string* path)
+{
+  *path = readString(pnh, "scene", "");
+  if (path->empty())
+  {
+    throw InputError("parameter '" + pnh.resolveName("scene") + "' is required (the scene's URDF file)");
+  }
+  return loadUrdfScene(*path, [](const std::string& name) { return ros::package::getPath(name); });
+}
+}  // namespace god_finger
