@@ -1,8 +1,8 @@
 #include "god_finger/physics/god_finger_world.h"
 
+#include "collision_shape.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/surface_locator.h"
-#include "collision_shape.h"
 #include "god_finger/physics/walk_surface.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -616,6 +616,15 @@ void GodFingerWorld::reset()
   impl_->time = 0.0;
   impl_->steps = 0;
   impl_->buildWorld();
+}
+
+void GodFingerWorld::resetAtInterfaces()
+{
+  for (Impl::Proxy& proxy : impl_->proxies)
+  {
+    proxy.initial = proxy.target;
+  }
+  reset();
 }
 
 void GodFingerWorld::setContactModel(ContactModel model)

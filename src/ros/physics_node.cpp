@@ -194,7 +194,17 @@ struct PhysicsNode::Impl
       }
       if (interface.index < 0)
       {
-        interface.index = world->addInterface(interface.target, interface.coupling);
+        try
+        {
+          interface.index = world->addInterface(interface.target, interface.coupling);
+        }
+        catch (const std::exception& error)
+        {
+          // A profile unstable at this rate and proxy mass (read after start-up): refused.
+          ROS_ERROR_THROTTLE(1.0, "physics: interface '%s' refused: %s", interface.name.c_str(), error.what());
+          interface.have_target = false;
+          continue;
+        }
       }
       world->setInterfaceTarget(interface.index, interface.target);
     }
@@ -338,6 +348,12 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     interface.name = names[i];
     interface.coupling =
         readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, names[i])), names[i]).profile.coupling;
+    const std::string unstable =
+        couplingStabilityError(interface.coupling, params.coupling.proxy_mass, params.time_step);
+    if (!unstable.empty())
+    {
+      throw InputError("interface '" + names[i] + "': " + unstable);
+    }
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
         names[i] + "/pose", kSubscriberQueue,
         [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),

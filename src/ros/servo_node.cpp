@@ -72,6 +72,8 @@ struct ServoNode::Impl
   std::thread publisher_thread;
   std::atomic<bool> publishing{true};
   LoopStatistics statistics;
+  long last_ticks = 0;
+  double last_ticks_at = -1.0;
   long last_dropped = 0;
 
   double steady_to_ros = 0.0;   // s: ROS wall time minus steadySeconds()
@@ -195,7 +197,16 @@ struct ServoNode::Impl
   void publishDiagnostics()
   {
     const ServoCounters& counters = loop->counters();
-    const LoopSummary summary = statistics.summarize();
+    LoopSummary summary = statistics.summarize();
+    // The loop's own rate (its tick counter), not the publisher's, which may drop samples.
+    const long ticks = counters.ticks.load();
+    const double now = steadySeconds();
+    if (last_ticks_at > 0.0 && now > last_ticks_at)
+    {
+      summary.rate_hz = (ticks - last_ticks) / (now - last_ticks_at);
+    }
+    last_ticks = ticks;
+    last_ticks_at = now;
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus status;
@@ -221,6 +232,7 @@ struct ServoNode::Impl
     add("ticks", std::to_string(counters.ticks.load()));
     add("overruns", std::to_string(counters.overruns.load()));
     add("dropped_samples", std::to_string(counters.dropped_samples.load()));
+    add("dropped_snapshots", std::to_string(counters.dropped_snapshots.load()));
     add("rejected_readings", std::to_string(counters.rejected_readings.load()));
     add("rejected_forces", std::to_string(counters.rejected_forces.load()));
     add("contact_model", contactModelName(static_cast<ContactModel>(counters.model.load())));
@@ -229,8 +241,23 @@ struct ServoNode::Impl
     statistics.clear();
   }
 
-  // The normal-priority side: everything the loop leaves behind goes out as messages.
+  // The normal-priority side: everything the loop leaves behind goes out as messages. An
+  // exception here stops the node with its message instead of terminating the process.
   void publish()
+  {
+    try
+    {
+      publishUntilStopped();
+    }
+    catch (const std::exception& error)
+    {
+      ROS_FATAL("servo: publishing failed (%s); shutting down", error.what());
+      loop->stop();
+      ros::requestShutdown();
+    }
+  }
+
+  void publishUntilStopped()
   {
     ServoSample sample;
     WorldSnapshot snapshot;

@@ -106,19 +106,16 @@ void ServoLoop::prepare()
     }
     world_->addInterface(start, interface.profile.coupling);
   }
-  // Every snapshot slot sized once, so that tick() never allocates for them.
-  WorldSnapshot* slot = nullptr;
+  // Every snapshot slot sized once (the ring has capacity + 1 slots: one push and pop each
+  // moves on by one), so that tick() never allocates for them.
   WorldSnapshot sized;
   world_->snapshot(&sized);
-  for (std::size_t i = 0; i < snapshots_.capacity(); ++i)
-  {
-    slot = snapshots_.reserve();
-    *slot = sized;
-    snapshots_.commit();
-  }
   WorldSnapshot drained;
-  while (snapshots_.tryPop(&drained))
+  for (std::size_t i = 0; i <= snapshots_.capacity(); ++i)
   {
+    *snapshots_.reserve() = sized;
+    snapshots_.commit();
+    snapshots_.tryPop(&drained);
   }
   counters_.model = static_cast<int>(world_->contactModel());
   prepared_ = true;
@@ -167,7 +164,7 @@ void ServoLoop::applyCommands()
         world_->setContactParams(command.contact);  // validated by post()
         break;
       case ServoCommand::Kind::kReset:
-        world_->reset();
+        world_->resetAtInterfaces();
         break;
       case ServoCommand::Kind::kHandTarget:
         interfaces_[command.interface].device->setHandTarget(command.hand_target);
@@ -222,7 +219,7 @@ void ServoLoop::tick(double time)
   }
   if (reset)
   {
-    world_->reset();
+    world_->resetAtInterfaces();
   }
   const double step_start = steadySeconds();
   world_->step();
@@ -312,6 +309,16 @@ void ServoLoop::run()
       }
       return;
     }
+    catch (...)
+    {
+      counters_.failed = true;
+      running_ = false;
+      if (log_)
+      {
+        log_("servo loop stopped: unknown exception");
+      }
+      return;
+    }
     ++scheduled;
     if (pace <= 0.0)
     {
@@ -338,6 +345,10 @@ void ServoLoop::start()
   if (running_)
   {
     return;
+  }
+  if (thread_.joinable())
+  {
+    thread_.join();  // a loop that stopped by itself (a device failed)
   }
   prepare();
   running_ = true;

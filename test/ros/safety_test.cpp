@@ -1,9 +1,9 @@
 // rostest: safety of the loop with every node in its own process (safety.test).
 //  - NaN poses, forces and device states are rejected and counted by the node that receives
 //    them, and nothing downstream sees them;
-//  - the physics node killed: the haptic node stops rendering its local coupling once the
-//    proxy is stale, the driver ramps its force to zero (command_timeout 20 ms after the last
-//    command, then within ramp_time 10 ms), and the loop resumes when the physics respawns.
+//  - the physics node killed (feedback forwarded): the driver ramps its force to zero
+//    (command_timeout 20 ms after the last command, then within ramp_time 10 ms), and the loop
+//    resumes when the physics respawns.
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -94,8 +94,10 @@ class Safety : public testing::Test
           }
         },
         ros::VoidConstPtr(), hints));
+    // 10 s of device states: a test thread stalled by a loaded machine must not lose the
+    // states that show the hold and the ramp (a 100-message queue once dropped the hold).
     subscribers_.push_back(nh_.subscribe<god_finger::DeviceState>(
-        "finger/device/state", 100,
+        "finger/device/state", 10000,
         [](const god_finger::DeviceState::ConstPtr& m)
         {
           if (m->header.stamp == kInjectedState)

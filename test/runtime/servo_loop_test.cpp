@@ -180,6 +180,12 @@ TEST(ServoLoop, CommandsAreAppliedBetweenTwoSteps)
   ASSERT_TRUE(loop->post(reset));
   runTicks(*loop, 1, 812);
   EXPECT_EQ(loop->world().steps(), 1);  // the world restarted, then took this tick's step
+  // The proxy restarted where the hand is (pressed 2 mm into the ball, out of which the contact
+  // pushes it), not at the start position 2.5 cm away, which gave the hand max_force for a tick.
+  EXPECT_LT(loop->world().interfaceState(0).user_force.norm(), 1.0);
+  EXPECT_LT(
+      (loop->world().interfaceState(0).proxy_position - loop->world().interfaceState(0).interface_position).norm(),
+      0.005);
 }
 
 TEST(ServoLoop, ButtonZeroCyclesTheModelAndButtonOneResets)

@@ -92,8 +92,12 @@ class GodFingerWorld
   // (and counted), the previous target stays.
   void setInterfaceTarget(int interface, const Eigen::Vector3d& position);
   void step();
-  // Back to the scene's initial state, proxies at their interfaces, time 0.
+  // Back to the scene's initial state, proxies where they started, time 0 (a reset run repeats
+  // the first one bit for bit).
   void reset();
+  // The same, but each proxy restarts at its interface's current target, which becomes its
+  // start: a hand holding a device feels no jump (the servo loop's reset).
+  void resetAtInterfaces();
 
   void setContactModel(ContactModel model);
   ContactModel contactModel() const;

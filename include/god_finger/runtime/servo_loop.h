@@ -17,7 +17,9 @@
 // trajectory bit for bit, whatever the machine's load, and it waits for the publishers instead
 // of dropping their samples.
 //
-// Real-time safety: tick() neither allocates (after prepare()), logs, nor takes a lock; the
+// Real-time safety: tick() neither allocates (after prepare()) nor logs, and takes no lock
+// another thread holds (the fake device's hand-target lock is taken only by the loop thread
+// here), except when it applies a reset, which rebuilds the Bullet world (an overrun); the
 // loop thread runs at SCHED_FIFO `realtime_priority` and locks its memory when permitted (a
 // warning through the log callback otherwise). Outputs: samples() and snapshots() (the
 // publisher thread is their one consumer). Inputs: post() (any thread; producers serialise
@@ -149,7 +151,10 @@ class ServoLoop
   {
     return counters_;
   }
-  // Immutable after construction (safe from any thread): the scene, parameters, names.
+  // From another thread while the loop runs, only what never changes: world().scene(),
+  // world().params().coupling and time_step, interfaces()' names and profiles, params(). The
+  // rest (model, contact parameters, states) belongs to the loop thread; observers read
+  // snapshots().
   const GodFingerWorld& world() const
   {
     return *world_;
