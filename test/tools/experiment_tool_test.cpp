@@ -2,9 +2,12 @@
 // time series, and one clear line with exit code 2 on bad options.
 #include "tool_run.h"
 
+#include "god_finger/physics/contact_model.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <regex>
 #include <string>
 
 namespace god_finger
@@ -86,6 +89,45 @@ TEST(ExperimentTool, HelpPrintsUsage)
   const test::ToolRun run = runTool("--help");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_EQ(run.out.rfind("usage: god_finger_experiment", 0), 0u);
+}
+
+TEST(ExperimentTool, FakeHandRunsTheScenarioThroughTheServoLoop)
+{
+  // The fake device's handle held by the scripted hand, as a ROS session on the servo loop:
+  // the one-finger lift still holds the plate level.
+  const test::ToolRun run = runTool("--scenario lift_one --model god_finger --hand fake");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(test::jsonValue(run.out, "dropped"), 0.0);
+  EXPECT_NEAR(test::jsonValue(run.out, "lift_height_m"), 0.1, 0.01);
+  EXPECT_LT(test::jsonValue(run.out, "max_tilt_rad"), 0.02);
+  const test::ToolRun bad = runTool("--scenario lift_one --model god_finger --hand mouse");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("option '--hand' = 'mouse' is not one of ideal, fake"), std::string::npos) << bad.err;
+}
+
+TEST(ContactModels, TheCfgAndTheToolsListTheOneListInItsOrder)
+{
+  // dynamic_reconfigure's enum (cfg/GodFinger.cfg) is Python: it is held to the C++ list here.
+  const std::string cfg = test::readFile(std::string(GOD_FINGER_SOURCE_DIR) + "/cfg/GodFinger.cfg");
+  const std::regex entry("gen\\.const\\(\"(\\w+)\", str_t, \"(\\w+)\"");
+  std::string listed;
+  const std::size_t models = cfg.find("models = gen.enum(");
+  const std::size_t walks = cfg.find("walks = gen.enum(");
+  ASSERT_NE(models, std::string::npos);
+  ASSERT_NE(walks, std::string::npos);
+  const std::string block = cfg.substr(models, walks - models);
+  for (std::sregex_iterator it(block.begin(), block.end(), entry), end; it != end; ++it)
+  {
+    EXPECT_EQ((*it)[1], (*it)[2]);
+    listed += (listed.empty() ? "" : ", ") + (*it)[1].str();
+  }
+  EXPECT_EQ(listed, contactModelNames());
+  std::string usage_list;
+  for (ContactModel model : kContactModels)
+  {
+    usage_list += (usage_list.empty() ? "" : "|") + std::string(contactModelName(model));
+  }
+  EXPECT_NE(runTool("--help").out.find("--model " + usage_list), std::string::npos);
 }
 }  // namespace
 }  // namespace god_finger
