@@ -1,6 +1,7 @@
 #include "god_finger/mesh_io/mesh_loader.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/polygon_triangulation.h"
 
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
@@ -13,10 +14,10 @@ namespace god_finger
 namespace
 {
 // Adds the node's meshes (and its children's) to `soup`, in world units times `scale`.
-// Polygons are split into fans around their first corner (exact for convex polygons); points
-// and lines are skipped (so that a file of lines says "no triangles"). Indices are checked:
-// assimp's own triangulation and validation are not used, because Debian's assimp 5.2 aborts
-// the process (ai_assert) on some malformed files (found by test/fuzz/mesh_loading_fuzz).
+// Polygons, convex or not, are ear-clipped on their best-fit plane (core/polygon_triangulation.h;
+// a self-intersecting one is an error naming the face); points and lines are skipped (so that a file of lines says "no
+// triangles"). Indices are checked: assimp's own triangulation and validation are not used, because Debian's assimp 5.2
+// aborts the process (ai_assert) on some malformed files (found by test/fuzz/mesh_loading_fuzz).
 void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, const Eigen::Vector3d& scale,
              const std::string& name, TriangleSoup* soup, int depth = 0)
 {
@@ -33,6 +34,8 @@ void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent
     }
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
     const int base = static_cast<int>(soup->vertices.size());
+    std::vector<Eigen::Vector3d> corners;
+    std::vector<std::array<int, 3>> polygon_triangles;
     for (unsigned int v = 0; v < mesh.mNumVertices; ++v)
     {
       const aiVector3D p = transform * mesh.mVertices[v];
@@ -53,10 +56,27 @@ void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent
                            std::to_string(face.mIndices[k]) + " of " + std::to_string(mesh.mNumVertices));
         }
       }
-      for (unsigned int k = 1; k + 1 < face.mNumIndices; ++k)
+      if (face.mNumIndices == 3)
       {
-        soup->triangles.push_back({base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[k]),
-                                   base + static_cast<int>(face.mIndices[k + 1])});
+        soup->triangles.push_back({base + static_cast<int>(face.mIndices[0]), base + static_cast<int>(face.mIndices[1]),
+                                   base + static_cast<int>(face.mIndices[2])});
+        continue;
+      }
+      corners.clear();
+      for (unsigned int k = 0; k < face.mNumIndices; ++k)
+      {
+        corners.push_back(soup->vertices[base + face.mIndices[k]]);
+      }
+      const std::string problem = triangulatePolygon(corners, &polygon_triangles);
+      if (!problem.empty())
+      {
+        throw InputError(name + "face " + std::to_string(f) + ": " + problem);
+      }
+      for (const std::array<int, 3>& t : polygon_triangles)
+      {
+        soup->triangles.push_back({base + static_cast<int>(face.mIndices[t[0]]),
+                                   base + static_cast<int>(face.mIndices[t[1]]),
+                                   base + static_cast<int>(face.mIndices[t[2]])});
       }
     }
   }
