@@ -219,18 +219,11 @@ struct PhysicsNode::Impl
         continue;
       }
       const InterfaceState& state = world->interfaceState(interface.index);
-      geometry_msgs::WrenchStampedPtr feedback(new geometry_msgs::WrenchStamped);
       // Stamped with the pose it answers (the device state's time, through the haptic node),
       // so that the driver can measure the whole round trip.
-      feedback->header.stamp = interface.target_stamp.isZero() ? stamp : interface.target_stamp;
-      feedback->header.frame_id = "world";
-      feedback->wrench.force = toVector(state.user_force);
-      interface.feedback_publisher.publish(feedback);
-      geometry_msgs::PointStampedPtr proxy(new geometry_msgs::PointStamped);
-      proxy->header.stamp = stamp;
-      proxy->header.frame_id = "world";
-      proxy->point = toPoint(state.proxy_position);
-      interface.proxy_publisher.publish(proxy);
+      interface.feedback_publisher.publish(
+          feedbackMessage(interface.target_stamp.isZero() ? stamp : interface.target_stamp, state.user_force));
+      interface.proxy_publisher.publish(proxyMessage(stamp, state.proxy_position));
     }
   }
 

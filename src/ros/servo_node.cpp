@@ -174,17 +174,8 @@ struct ServoNode::Impl
     pose->pose.orientation.w = 1.0;
     interface.pose.publish(pose);
 
-    geometry_msgs::WrenchStampedPtr feedback(new geometry_msgs::WrenchStamped);
-    feedback->header.stamp = stamp;
-    feedback->header.frame_id = "world";
-    feedback->wrench.force = toVector(sample.user_force);
-    interface.feedback.publish(feedback);
-
-    geometry_msgs::PointStampedPtr proxy(new geometry_msgs::PointStamped);
-    proxy->header.stamp = stamp;
-    proxy->header.frame_id = "world";
-    proxy->point = toPoint(sample.proxy_position);
-    interface.proxy.publish(proxy);
+    interface.feedback.publish(feedbackMessage(stamp, sample.user_force));
+    interface.proxy.publish(proxyMessage(stamp, sample.proxy_position));
 
     geometry_msgs::TransformStamped transform;
     transform.header = pose->header;

@@ -46,6 +46,24 @@ visualization_msgs::MarkerArrayPtr markerMessage(const SceneDescription& scene, 
   return markers;
 }
 
+geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Eigen::Vector3d& user_force)
+{
+  geometry_msgs::WrenchStampedPtr feedback(new geometry_msgs::WrenchStamped);
+  feedback->header.stamp = stamp;
+  feedback->header.frame_id = "world";
+  feedback->wrench.force = toVector(user_force);
+  return feedback;
+}
+
+geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position)
+{
+  geometry_msgs::PointStampedPtr proxy(new geometry_msgs::PointStamped);
+  proxy->header.stamp = stamp;
+  proxy->header.frame_id = "world";
+  proxy->point = toPoint(proxy_position);
+  return proxy;
+}
+
 std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescription& scene, const WorldSnapshot& world,
                                                             const ros::Time& stamp)
 {

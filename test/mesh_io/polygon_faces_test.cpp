@@ -45,10 +45,10 @@ std::string objOf(const Outline& outline)
   return out.str();
 }
 
-std::string offOf(const Outline& outline)
+// The body OFF and ASCII PLY share: a line per corner, then "n 0 1 ... n-1".
+std::string cornersAndFace(const Outline& outline)
 {
   std::ostringstream out;
-  out << "OFF\n" << outline.size() << " 1 0\n";
   for (const auto& p : outline)
   {
     out << p[0] << " " << p[1] << " 0\n";
@@ -62,23 +62,17 @@ std::string offOf(const Outline& outline)
   return out.str();
 }
 
+std::string offOf(const Outline& outline)
+{
+  return "OFF\n" + std::to_string(outline.size()) + " 1 0\n" + cornersAndFace(outline);
+}
+
 std::string plyOf(const Outline& outline)
 {
-  std::ostringstream out;
-  out << "ply\nformat ascii 1.0\nelement vertex " << outline.size()
-      << "\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
-         "property list uchar int vertex_indices\nend_header\n";
-  for (const auto& p : outline)
-  {
-    out << p[0] << " " << p[1] << " 0\n";
-  }
-  out << outline.size();
-  for (std::size_t i = 0; i < outline.size(); ++i)
-  {
-    out << " " << i;
-  }
-  out << "\n";
-  return out.str();
+  return "ply\nformat ascii 1.0\nelement vertex " + std::to_string(outline.size()) +
+         "\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
+         "property list uchar int vertex_indices\nend_header\n" +
+         cornersAndFace(outline);
 }
 
 std::string daeOf(const Outline& outline)

@@ -6,7 +6,9 @@
 #include "god_finger/ContactAreaArray.h"
 #include "god_finger/physics/god_finger_world.h"
 
+#include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/WrenchStamped.h>
 #include <ros/time.h>
 #include <visualization_msgs/MarkerArray.h>
 
@@ -21,6 +23,9 @@ god_finger::ContactAreaArrayPtr contactAreaMessage(const SceneDescription& scene
                                                    const ros::Time& stamp);
 visualization_msgs::MarkerArrayPtr markerMessage(const SceneDescription& scene, const WorldSnapshot& world,
                                                  double proxy_radius, const ros::Time& stamp);
+// An interface's feedback (the force on the hand, N) and proxy (m), in `world`.
+geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Eigen::Vector3d& user_force);
+geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position);
 std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescription& scene, const WorldSnapshot& world,
                                                             const ros::Time& stamp);
 }  // namespace god_finger
