@@ -1,12 +1,11 @@
 // libFuzzer target: mesh files from arbitrary bytes. The first byte picks the extension (stl,
-// obj, ply, off); the rest is the file. With GOD_FINGER_FUZZ_STL_OBJ_ONLY set in the
-// environment (scripts/test does), PLY and OFF inputs are skipped: Debian's assimp 5.2 runs
-// out of memory on some malformed PLY bodies and reads out of bounds on some OFF files
-// (test/fuzz/known_upstream/, not fixed: they need readers of our own). Its endless loop on
-// malformed PLY headers and its assertion abort on OFF are now avoided (mesh_loader.cpp); those
-// inputs are replayed by mesh_loader_test. A bad file must
-// give InputError, never a crash, a hang or a sanitizer report; a file that loads must give a
-// mesh on which contact areas are sound (contactAreaDefect). Run by scripts/fuzz.
+// obj, ply, off); the rest is the file. STL and OBJ go through assimp, PLY and OFF through our
+// own readers (Debian's assimp 5.2 ran out of memory on PLY bodies, looped forever on PLY
+// headers and read out of bounds on OFF files: those inputs are kept in
+// test/fuzz/regressions/mesh_loading_fuzz/ and replayed by mesh_loader_test). A bad file must
+// give InputError, never a crash, a hang, an allocation past the file's size or a sanitizer
+// report; a file that loads must give a mesh on which contact areas are sound
+// (contactAreaDefect). Run by scripts/fuzz (scripts/test: all four formats, fixed seed).
 #include "god_finger/core/contact_sampling.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
@@ -25,8 +24,7 @@ const char* const kExtensions[] = {"stl", "obj", "ply", "off"};
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
-  static const bool stl_obj_only = std::getenv("GOD_FINGER_FUZZ_STL_OBJ_ONLY") != nullptr;
-  if (size < 1 || (stl_obj_only && data[0] % 4 >= 2))
+  if (size < 1)
   {
     return 0;
   }

@@ -99,7 +99,7 @@ TEST(MeshLoader, BadFilesGiveOneClearError)
   EXPECT_EQ(loadError(empty).rfind("mesh file '" + empty + "': unreadable: ", 0), 0u) << loadError(empty);
 
   const std::string garbage = temporaryPath("garbage.ply");
-  writeFile(garbage, "this is not a mesh\n\x01\x02\x03 at all\n");
+  writeFile(garbage, "this is not a mesh\n\x01\x02\x03 at all\n");  // not even a PLY header
   EXPECT_EQ(loadError(garbage).rfind("mesh file '" + garbage + "': unreadable: ", 0), 0u) << loadError(garbage);
 
   const std::string lines = temporaryPath("lines.obj");
@@ -164,6 +164,52 @@ TEST(MeshLoader, FuzzFoundFilesGiveAnErrorNotACrashOrAHang)
     ++files;
   }
   EXPECT_GE(files, 3);
+}
+}  // namespace
+}  // namespace god_finger
+
+namespace god_finger
+{
+namespace
+{
+// One triangle at height z = 1 in a COLLADA file of the given up axis and unit.
+std::string colladaTriangle(const std::string& up_axis, double metres_per_unit)
+{
+  return "<?xml version=\"1.0\"?>\n<COLLADA xmlns=\"http://www.collada.org/2005/11/COLLADASchema\" "
+         "version=\"1.4.1\"><asset><unit meter=\"" +
+         std::to_string(metres_per_unit) + "\"/><up_axis>" + up_axis +
+         "</up_axis></asset><library_geometries><geometry id=\"g\"><mesh><source id=\"p\"><float_array id=\"pa\" "
+         "count=\"9\">0 0 1 1 0 1 0 1 1</float_array><technique_common><accessor source=\"#pa\" count=\"3\" "
+         "stride=\"3\"><param name=\"X\" type=\"float\"/><param name=\"Y\" type=\"float\"/><param name=\"Z\" "
+         "type=\"float\"/></accessor></technique_common></source><vertices id=\"v\"><input semantic=\"POSITION\" "
+         "source=\"#p\"/></vertices><triangles count=\"1\"><input semantic=\"VERTEX\" source=\"#v\" "
+         "offset=\"0\"/><p>0 1 2</p></triangles></mesh></geometry></library_geometries><library_visual_scenes>"
+         "<visual_scene id=\"s\"><node id=\"n\"><instance_geometry url=\"#g\"/></node></visual_scene>"
+         "</library_visual_scenes><scene><instance_visual_scene url=\"#s\"/></scene></COLLADA>\n";
+}
+
+TEST(MeshLoader, ColladaIsReadAsRvizShowsIt)
+{
+  // rviz (and Gazebo, MoveIt) ignore the up-axis conversion assimp puts on the root node and
+  // apply <unit>: the physics must collide with what the user sees.
+  const std::string path = temporaryPath("up_axis.dae");
+  for (const std::string up_axis : {"Z_UP", "Y_UP"})
+  {
+    for (const double unit : {1.0, 0.01})
+    {
+      writeFile(path, colladaTriangle(up_axis, unit));
+      const TriangleSoup soup = loadTriangleSoup(path);
+      ASSERT_EQ(soup.triangles.size(), 1u);
+      const Eigen::Vector3d expected[] = {{0, 0, unit}, {unit, 0, unit}, {0, unit, unit}};
+      for (int k = 0; k < 3; ++k)
+      {
+        EXPECT_LT((soup.vertices[soup.triangles[0][k]] - expected[k]).norm(), 1e-7 * unit)
+            << up_axis << " unit " << unit << " corner " << k << ": "
+            << soup.vertices[soup.triangles[0][k]].transpose();
+      }
+    }
+  }
+  std::remove(path.c_str());
 }
 }  // namespace
 }  // namespace god_finger

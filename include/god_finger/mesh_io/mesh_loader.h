@@ -1,7 +1,8 @@
-// Loads triangle meshes from files through assimp (STL, OBJ, PLY, DAE, OFF and whatever
-// else assimp reads). All meshes of a file are merged into one soup in the file's own
-// coordinates (node transforms applied), triangles in the file's order; `scale` multiplies
-// coordinates (URDF <mesh scale>). Units are the file's, taken as metres.
+// Loads triangle meshes from files: PLY and OFF (by extension, any case) through our own
+// readers (ply_reader.h, off_reader.h), STL, OBJ, DAE and whatever else assimp reads through
+// assimp. Polygon faces are ear-clipped (polygon_soup.h). All meshes of a file are merged into one soup in the file's
+// own coordinates (node transforms applied), triangles in the file's order; `scale` multiplies coordinates (URDF <mesh
+// scale>). Units are the file's, taken as metres.
 //
 // Errors: a missing file, an unreadable or corrupt file, or a file with no triangles throw
 // InputError with one line naming the file and the reason.
