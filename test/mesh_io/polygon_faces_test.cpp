@@ -1,12 +1,14 @@
 // Concave polygon faces as files carry them, in OBJ, OFF, PLY and DAE: an L, a U, a star, a comb
 // and a polygon with collinear runs load as triangles that cover them exactly (area, orientation,
 // every triangle inside), and a self-intersecting face is refused with one line naming it.
+#include "god_finger/core/contact_sampling.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -208,6 +210,78 @@ TEST(PolygonFaces, SelfIntersectingFaceIsRefusedWithItsName)
   {
     EXPECT_NE(std::string(error.what()).find("face 0: polygon of 4 corners crosses itself"), std::string::npos)
         << error.what();
+  }
+}
+// A closed prism of height 1 over `outline`: the bottom and top faces are the polygon itself
+// (one face each, concave), the sides are quads; faces turn outward whichever way `given` turns.
+std::string prismObj(const Outline& given)
+{
+  Outline outline = given;
+  double twice_signed_area = 0.0;
+  for (std::size_t i = 0, j = outline.size() - 1; i < outline.size(); j = i++)
+  {
+    twice_signed_area += outline[j][0] * outline[i][1] - outline[i][0] * outline[j][1];
+  }
+  if (twice_signed_area < 0.0)
+  {
+    std::reverse(outline.begin(), outline.end());
+  }
+  std::ostringstream out;
+  for (double z : {0.0, 1.0})
+  {
+    for (const auto& p : outline)
+    {
+      out << "v " << p[0] << " " << p[1] << " " << z << "\n";
+    }
+  }
+  const std::size_t n = outline.size();
+  out << "f";
+  for (std::size_t i = n; i > 0; --i)
+  {
+    out << " " << i;  // bottom, facing down
+  }
+  out << "\nf";
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    out << " " << n + i + 1;  // top, facing up
+  }
+  out << "\n";
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t j = (i + 1) % n;
+    out << "f " << i + 1 << " " << j + 1 << " " << n + j + 1 << " " << n + i + 1 << "\n";
+  }
+  return out.str();
+}
+
+TEST(PolygonFaces, WalksOnConcavePolygonSolidsStayOnTheSurface)
+{
+  // Before ear clipping, a fan over a concave face put triangles outside the solid: the health
+  // report showed non-manifold edges and sub-god-objects walked off the true surface.
+  for (const auto& [name, outline] : {std::make_pair(std::string("U"), kU), std::make_pair(std::string("comb"), kComb),
+                                      std::make_pair(std::string("star"), kStar)})
+  {
+    SCOPED_TRACE(name);
+    const TriangleMesh mesh = loadTriangleMesh(write(name + "_prism.obj", prismObj(outline)));
+    EXPECT_EQ(mesh.health().boundary_edges, 0);
+    EXPECT_EQ(mesh.health().non_manifold_edges, 0);
+    EXPECT_EQ(mesh.health().flipped_triangles, 0);
+    const SurfaceLocator locator(mesh);
+    ContactParams params;
+    params.max_radius = 0.3;
+    params.distance_constant = 0.3;
+    RandomContacts contacts(mesh, params, 7);
+    ContactAreaResult area;
+    int valid = 0;
+    for (int i = 0; i < 500; ++i)
+    {
+      const ContactQuery query = contacts.next();
+      computeContactArea(mesh, query, params, &area);
+      valid += area.valid ? 1 : 0;
+      const std::string defect = contactAreaDefect(locator, query, area, 1e-9);
+      ASSERT_TRUE(!area.valid || defect.empty()) << "contact " << i << ": " << defect;
+    }
+    EXPECT_GT(valid, 400);
   }
 }
 }  // namespace
