@@ -76,7 +76,6 @@ ContactParams benchParams(int sub_god_objects, WalkVariant walk)
   ContactParams params;
   params.sub_god_objects = sub_god_objects;
   params.walk = walk;
-  params.distance_constant = 0.001;  // as the physics node: D0' = 1 mm
   return params;
 }
 

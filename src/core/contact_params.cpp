@@ -27,42 +27,47 @@ bool parseWalkVariant(const std::string& text, WalkVariant* variant)
   return false;
 }
 
+const ParameterTable<ContactParams>& contactParameterTable()
+{
+  using P = ContactParams;
+  static const ParameterTable<P> table = {
+      realRow<P>("r_max", "m", openClosed(0.0, 1e3),
+                 "r_max (Eq. 1): radius of the contact area under an infinite force",
+                 [](P& p) -> double& { return p.max_radius; }),
+      realRow<P>("d0", "m", openClosed(0.0, 1e3),
+                 "D0' (Eq. 1): coupling stretch at which the radius reaches 63 % of r_max",
+                 [](P& p) -> double& { return p.distance_constant; }),
+      realRow<P>("alpha", "dimensionless", closed(1.0, 100.0),
+                 "alpha (Eq. 2): how far a tangential force pushes the area backwards; 1 keeps it round",
+                 [](P& p) -> double& { return p.alpha; }),
+      integerRow<P>("n_sgo", closed(3, P::kMaxSubGodObjects),
+                    "n_SGO: sub-god-objects (radial vectors) per contact area",
+                    [](P& p) -> int& { return p.sub_god_objects; }),
+      realRow<P>("tau_a", "rad", openClosed(0.0, M_PI),
+                 "tau_a: largest angle between the contact normal and a face the area spreads onto",
+                 [](P& p) -> double& { return p.max_angle; }),
+      realRow<P>(
+          "friction", "dimensionless", closed(0.0, INFINITY),
+          "theta: a walk stops where the face normal leaves the cone atan(theta) about the contact normal; inf: never",
+          [](P& p) -> double& { return p.friction; }),
+      choiceRow<P>(
+          "walk", "project, unfold",
+          "how a walk crosses an edge: unfold (the straight geodesic) or project (onto each face, as in the paper)",
+          [](const P& p) -> std::string { return walkVariantName(p.walk); },
+          [](P* p, const std::string& text) { return parseWalkVariant(text, &p->walk); }),
+      integerRow<P>("max_crossings", closed(1, 1000000), "most edges one walk may cross",
+                    [](P& p) -> int& { return p.max_crossings; }),
+  };
+  return table;
+}
+
 std::string validate(const ContactParams& params)
 {
-  // Written as !(in range) so that NaN is out of range.
-  if (!(params.max_radius > 0.0 && params.max_radius <= 1e3))
-  {
-    return outOfRange("r_max", params.max_radius, "(0, 1000]", "m");
-  }
-  if (!(params.distance_constant > 0.0 && params.distance_constant <= 1e3))
-  {
-    return outOfRange("d0", params.distance_constant, "(0, 1000]", "m");
-  }
-  if (!(params.alpha >= 1.0 && params.alpha <= 100.0))
-  {
-    return outOfRange("alpha", params.alpha, "[1, 100]", "dimensionless");
-  }
-  if (!(params.sub_god_objects >= 3 && params.sub_god_objects <= ContactParams::kMaxSubGodObjects))
-  {
-    return outOfRange("n_sgo", params.sub_god_objects, "[3, 64]", "count");
-  }
-  if (!(params.max_angle > 0.0 && params.max_angle <= M_PI))
-  {
-    return outOfRange("tau_a", params.max_angle, "(0, pi]", "rad");
-  }
-  if (!(params.friction >= 0.0))
-  {
-    return outOfRange("friction", params.friction, "[0, inf]", "dimensionless");
-  }
-  if (!(params.max_crossings >= 1 && params.max_crossings <= 1000000))
-  {
-    return outOfRange("max_crossings", params.max_crossings, "[1, 1000000]", "count");
-  }
   if (params.walk != WalkVariant::kProject && params.walk != WalkVariant::kUnfold)
   {
     return "parameter 'walk' = " + std::to_string(static_cast<int>(params.walk)) + " is not 'project' or 'unfold'";
   }
-  return std::string();
+  return validateRows(contactParameterTable(), params);
 }
 
 void validateOrThrow(const ContactParams& params)

@@ -4,18 +4,29 @@
 
 namespace god_finger
 {
+const ParameterTable<DeviceProfile>& deviceProfileTable()
+{
+  using P = DeviceProfile;
+  static const ParameterTable<P> table = []
+  {
+    ParameterTable<P> rows =
+        liftRows<P, CouplingProfile>(couplingParameterTable(), [](P& p) -> CouplingProfile& { return p.coupling; });
+    const ParameterTable<P> guard =
+        liftRows<P, ForceGuardParams>(forceGuardParameterTable(), [](P& p) -> ForceGuardParams& { return p.guard; });
+    rows.insert(rows.end(), guard.begin(), guard.end());
+    rows.push_back(realRow<P>("workspace_radius", "m", openClosed(0.0, 10.0),
+                              "radius of the device's workspace that scripts and the fake hand stay within",
+                              [](P& p) -> double& { return p.workspace_radius; }));
+    return rows;
+  }();
+  return table;
+}
+
 DeviceProfile readDeviceProfile(const ParameterSource& source)
 {
   DeviceProfile profile;
-  CouplingProfile& coupling = profile.coupling;
-  coupling.max_force = readDouble(source, "max_force", coupling.max_force, 0.0, 1e3, "N", true);
-  coupling.stiffness = readDouble(source, "coupling_stiffness", coupling.stiffness, 0.0, 1e5, "N/m", true);
-  coupling.damping = readDouble(source, "coupling_damping", coupling.damping, 0.0, 1e3, "N s/m");
-  ForceGuardParams& guard = profile.guard;
-  guard.max_force = coupling.max_force;
-  guard.command_timeout = readDouble(source, "command_timeout", guard.command_timeout, 0.0, 10.0, "s", true);
-  guard.ramp_time = readDouble(source, "ramp_time", guard.ramp_time, 0.0, 1.0, "s", true);
-  profile.workspace_radius = readDouble(source, "workspace_radius", profile.workspace_radius, 0.0, 10.0, "m", true);
+  readRows(source, deviceProfileTable(), &profile);
+  profile.guard.max_force = profile.coupling.max_force;
   return profile;
 }
 }  // namespace god_finger

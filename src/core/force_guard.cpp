@@ -1,27 +1,31 @@
 #include "god_finger/core/force_guard.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/virtual_coupling.h"
 
 #include <cmath>
 #include <sstream>
 
 namespace god_finger
 {
+const ParameterTable<ForceGuardParams>& forceGuardParameterTable()
+{
+  using P = ForceGuardParams;
+  static const ParameterTable<P> table = {
+      realRow<P>("command_timeout", "s", openClosed(0.0, 10.0),
+                 "watchdog: no force command for this long ramps the force down",
+                 [](P& p) -> double& { return p.command_timeout; }),
+      realRow<P>("ramp_time", "s", openClosed(0.0, 1.0), "from the last commanded force to zero",
+                 [](P& p) -> double& { return p.ramp_time; }),
+  };
+  return table;
+}
+
 std::string validate(const ForceGuardParams& params)
 {
-  if (!(params.max_force > 0.0 && params.max_force <= 1e3))
-  {
-    return outOfRange("max_force", params.max_force, "(0, 1000]", "N");
-  }
-  if (!(params.command_timeout > 0.0 && params.command_timeout <= 10.0))
-  {
-    return outOfRange("command_timeout", params.command_timeout, "(0, 10]", "s");
-  }
-  if (!(params.ramp_time > 0.0 && params.ramp_time <= 1.0))
-  {
-    return outOfRange("ramp_time", params.ramp_time, "(0, 1]", "s");
-  }
-  return "";
+  const CouplingProfile limit{1.0, 0.0, params.max_force};
+  const std::string error = validateRows(couplingParameterTable(), limit);
+  return error.empty() ? validateRows(forceGuardParameterTable(), params) : error;
 }
 
 ForceGuard::ForceGuard(const ForceGuardParams& params) : params_(params)

@@ -1,25 +1,25 @@
 #include "god_finger/core/virtual_coupling.h"
 
-#include <sstream>
-
 namespace god_finger
 {
+const ParameterTable<CouplingProfile>& couplingParameterTable()
+{
+  using P = CouplingProfile;
+  static const ParameterTable<P> table = {
+      realRow<P>("coupling_stiffness", "N/m", openClosed(0.0, 1e5), "spring between the device and its god-object",
+                 [](P& p) -> double& { return p.stiffness; }),
+      realRow<P>("coupling_damping", "N s/m", closed(0.0, 1e3), "damper between the device and its god-object",
+                 [](P& p) -> double& { return p.damping; }),
+      realRow<P>("max_force", "N", openClosed(0.0, 1e4),
+                 "the coupling force is saturated here; the device's force limit too",
+                 [](P& p) -> double& { return p.max_force; }),
+  };
+  return table;
+}
+
 std::string validate(const CouplingProfile& profile)
 {
-  std::ostringstream message;
-  if (!(profile.stiffness > 0.0 && profile.stiffness <= 1e5))
-  {
-    message << "parameter 'coupling_stiffness' = " << profile.stiffness << " is out of range (0, 1e+05] (N/m)";
-  }
-  else if (!(profile.damping >= 0.0 && profile.damping <= 1e3))
-  {
-    message << "parameter 'coupling_damping' = " << profile.damping << " is out of range [0, 1000] (N s/m)";
-  }
-  else if (!(profile.max_force > 0.0 && profile.max_force <= 1e4))
-  {
-    message << "parameter 'max_force' = " << profile.max_force << " is out of range (0, 1e+04] (N)";
-  }
-  return message.str();
+  return validateRows(couplingParameterTable(), profile);
 }
 
 CouplingForce couplingForce(const CouplingProfile& profile, const Eigen::Vector3d& interface_position,

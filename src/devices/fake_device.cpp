@@ -8,35 +8,31 @@
 
 namespace god_finger
 {
+const ParameterTable<FakeDeviceParams>& fakeDeviceParameterTable()
+{
+  using P = FakeDeviceParams;
+  static const ParameterTable<P> table = {
+      realRow<P>("handle_mass", "kg", openClosed(0.0, 100.0), "mass of the simulated handle",
+                 [](P& p) -> double& { return p.handle_mass; }),
+      realRow<P>("handle_damping", "N s/m", closed(0.0, 1e4), "the simulated mechanism's friction",
+                 [](P& p) -> double& { return p.handle_damping; }),
+      realRow<P>("grip_stiffness", "N/m", openClosed(0.0, 1e6), "how firmly the scripted hand holds the handle",
+                 [](P& p) -> double& { return p.grip_stiffness; }),
+      realRow<P>("grip_damping", "N s/m", closed(0.0, 1e4), "damping of the scripted hand's grip",
+                 [](P& p) -> double& { return p.grip_damping; }),
+  };
+  return table;
+}
+
 std::string validate(const FakeDeviceParams& params)
 {
-  std::ostringstream message;
-  if (!(params.handle_mass > 0.0 && params.handle_mass <= 100.0))
-  {
-    message << "parameter 'handle_mass' = " << params.handle_mass << " is out of range (0, 100] (kg)";
-  }
-  else if (!(params.handle_damping >= 0.0 && params.handle_damping <= 1e4))
-  {
-    message << "parameter 'handle_damping' = " << params.handle_damping << " is out of range [0, 1e+04] (N s/m)";
-  }
-  else if (!(params.grip_stiffness > 0.0 && params.grip_stiffness <= 1e6))
-  {
-    message << "parameter 'grip_stiffness' = " << params.grip_stiffness << " is out of range (0, 1e+06] (N/m)";
-  }
-  else if (!(params.grip_damping >= 0.0 && params.grip_damping <= 1e4))
-  {
-    message << "parameter 'grip_damping' = " << params.grip_damping << " is out of range [0, 1e+04] (N s/m)";
-  }
-  return message.str();
+  return validateRows(fakeDeviceParameterTable(), params);
 }
 
 FakeDeviceParams readFakeDeviceParams(const ParameterSource& source)
 {
   FakeDeviceParams params;
-  params.handle_mass = readDouble(source, "handle_mass", params.handle_mass, 0.0, 100.0, "kg", true);
-  params.handle_damping = readDouble(source, "handle_damping", params.handle_damping, 0.0, 1e4, "N s/m");
-  params.grip_stiffness = readDouble(source, "grip_stiffness", params.grip_stiffness, 0.0, 1e6, "N/m", true);
-  params.grip_damping = readDouble(source, "grip_damping", params.grip_damping, 0.0, 1e4, "N s/m");
+  readRows(source, fakeDeviceParameterTable(), &params);
   return params;
 }
 

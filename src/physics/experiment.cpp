@@ -386,11 +386,6 @@ WorldParams scenarioParams(const ExperimentOptions& options)
   params.time_step = options.time_step;
   params.solver_iterations = options.solver_iterations;
   params.model = options.model;
-  // D0' = 1 mm: with the coupling's 400 N/m the contact radius reaches 63 % of r_max at
-  // 0.4 N and 92 % at 1 N, as a real finger pad's does (its area grows fast, then saturates
-  // near 1 N). The core's default, 4 mm, leaves the light objects here (0.25 N for the plate)
-  // with a 1.4 mm area. The paper leaves D0' to the user.
-  params.contact.distance_constant = 0.001;
   return params;
 }
 

@@ -6,6 +6,47 @@
 
 namespace god_finger
 {
+const ParameterTable<WorldParams>& worldParameterTable()
+{
+  using P = WorldParams;
+  static const ParameterTable<P> table = []
+  {
+    ParameterTable<P> rows = {
+        choiceRow<P>(
+            "model", contactModelNames(), "contact model: how a proxy touches objects",
+            [](const P& p) -> std::string { return contactModelName(p.model); },
+            [](P* p, const std::string& text) { return parseContactModel(text, &p->model); }),
+        integerRow<P>("solver_iterations", closed(1, 1000),
+                      "sequential-impulse iterations per step (a pinch creeps with too few)",
+                      [](P& p) -> int& { return p.solver_iterations; }),
+    };
+    const ParameterTable<P> contact =
+        liftRows<P, ContactParams>(contactParameterTable(), [](P& p) -> ContactParams& { return p.contact; });
+    rows.insert(rows.end(), contact.begin(), contact.end());
+    const ParameterTable<P> more = {
+        realRow<P>("proxy_mass", "kg", openClosed(0.0, 10.0), "mass of each god-object proxy",
+                   [](P& p) -> double& { return p.coupling.proxy_mass; }),
+        realRow<P>("proxy_radius", "m", openClosed(0.0, 0.1), "radius of each god-object proxy's sphere",
+                   [](P& p) -> double& { return p.coupling.proxy_radius; }),
+        realRow<P>("spinning_friction", "m", closed(0.0, 1.0), "soft_finger: Bullet's torsional friction at the point",
+                   [](P& p) -> double& { return p.soft_finger.spinning_friction; }),
+        realRow<P>("rolling_friction", "m", openClosed(0.0, 1.0),
+                   "soft_finger: Bullet's rolling friction (> 0 for spinning to act)",
+                   [](P& p) -> double& { return p.soft_finger.rolling_friction; }),
+        realRow<P>("pad_stiffness", "N/m", openClosed(0.0, 1e7), "the pad's stiffness at each contact point",
+                   [](P& p) -> double& { return p.pad.stiffness; }),
+        realRow<P>("pad_damping", "N s/m", closed(0.0, 1e5), "the pad's damping at each contact point",
+                   [](P& p) -> double& { return p.pad.damping; }),
+        realRow<P>("walk_edge_per_max_radius", "dimensionless", openClosed(0.0, 10.0),
+                   "largest edge of a sphere's or cylinder's walk surface, as a fraction of r_max",
+                   [](P& p) -> double& { return p.walk_edge_per_max_radius; }),
+    };
+    rows.insert(rows.end(), more.begin(), more.end());
+    return rows;
+  }();
+  return table;
+}
+
 std::string validate(const WorldParams& params)
 {
   // Written as !(in range) so that NaN is out of range.
@@ -13,13 +54,29 @@ std::string validate(const WorldParams& params)
   {
     return outOfRange("time_step", params.time_step, "[1e-05, 0.1]", "s");
   }
-  if (!(params.solver_iterations >= 1 && params.solver_iterations <= 1000))
-  {
-    return outOfRange("solver_iterations", params.solver_iterations, "[1, 1000]", "count");
-  }
   if (!params.gravity.allFinite())
   {
     return "parameter 'gravity' must be finite (m/s^2)";
+  }
+  bool known_model = false;
+  for (const ContactModel model : kContactModels)
+  {
+    known_model = known_model || model == params.model;
+  }
+  if (!known_model)
+  {
+    return "parameter 'model' = " + std::to_string(static_cast<int>(params.model)) + " is not one of " +
+           contactModelNames();
+  }
+  const std::string contact_error = validate(params.contact);  // also checks the walk variant
+  if (!contact_error.empty())
+  {
+    return contact_error;
+  }
+  const std::string row_error = validateRows(worldParameterTable(), params);
+  if (!row_error.empty())
+  {
+    return row_error;
   }
   const CouplingParams& c = params.coupling;
   const std::string coupling_error = validate(static_cast<const CouplingProfile&>(c));
@@ -27,40 +84,7 @@ std::string validate(const WorldParams& params)
   {
     return coupling_error;
   }
-  if (!(c.proxy_mass > 0.0 && c.proxy_mass <= 10.0))
-  {
-    return outOfRange("proxy_mass", c.proxy_mass, "(0, 10]", "kg");
-  }
-  if (!(c.proxy_radius > 0.0 && c.proxy_radius <= 0.1))
-  {
-    return outOfRange("proxy_radius", c.proxy_radius, "(0, 0.1]", "m");
-  }
-  const std::string stability_error = couplingStabilityError(c, c.proxy_mass, params.time_step);
-  if (!stability_error.empty())
-  {
-    return stability_error;
-  }
-  if (!(params.soft_finger.spinning_friction >= 0.0 && params.soft_finger.spinning_friction <= 1.0))
-  {
-    return outOfRange("spinning_friction", params.soft_finger.spinning_friction, "[0, 1]", "m");
-  }
-  if (!(params.soft_finger.rolling_friction > 0.0 && params.soft_finger.rolling_friction <= 1.0))
-  {
-    return outOfRange("rolling_friction", params.soft_finger.rolling_friction, "(0, 1]", "m");
-  }
-  if (!(params.pad.stiffness > 0.0 && params.pad.stiffness <= 1e7))
-  {
-    return outOfRange("pad_stiffness", params.pad.stiffness, "(0, 1e+07]", "N/m");
-  }
-  if (!(params.pad.damping >= 0.0 && params.pad.damping <= 1e5))
-  {
-    return outOfRange("pad_damping", params.pad.damping, "[0, 1e+05]", "N s/m");
-  }
-  if (!(params.walk_edge_per_max_radius > 0.0 && params.walk_edge_per_max_radius <= 10.0))
-  {
-    return outOfRange("walk_edge_per_max_radius", params.walk_edge_per_max_radius, "(0, 10]", "dimensionless");
-  }
-  return validate(params.contact);
+  return couplingStabilityError(c, c.proxy_mass, params.time_step);
 }
 
 void validateOrThrow(const WorldParams& params)

@@ -146,11 +146,10 @@ struct PhysicsNode::Impl
   // otherwise the previous ones stay (and the tool shows them again).
   void onReconfigure(god_finger::GodFingerConfig& config, std::uint32_t)
   {
-    ContactModel model;
-    ContactParams contact;
+    WorldParams applied;
     std::string error;
     std::lock_guard<std::mutex> lock(mutex);
-    if (!contactFromConfig(config, world->params().contact, &contact, &model, &error))
+    if (!worldFromConfig(config, world->params(), &applied, &error))
     {
       ROS_WARN("physics: reconfiguration refused (%s); the previous parameters stay", error.c_str());
       if (have_good_config)
@@ -159,8 +158,8 @@ struct PhysicsNode::Impl
       }
       return;
     }
-    world->setContactParams(contact);
-    world->setContactModel(model);
+    world->setContactParams(applied.contact);
+    world->setContactModel(applied.model);
     last_good_config = config;
     have_good_config = true;
   }

@@ -68,7 +68,8 @@ struct ServoNode::Impl
   boost::recursive_mutex reconfigure_mutex;
   std::unique_ptr<dynamic_reconfigure::Server<god_finger::GodFingerConfig>> reconfigure;
   god_finger::GodFingerConfig last_good_config;
-  ContactParams contact;  // the last contact parameters sent to the loop
+  ContactParams contact;     // the last contact parameters sent to the loop
+  WorldParams world_params;  // what the loop was built with (the base of a reconfiguration)
   std::thread publisher_thread;
   std::atomic<bool> publishing{true};
   LoopStatistics statistics;
@@ -132,7 +133,13 @@ struct ServoNode::Impl
     ServoCommand model;
     model.kind = ServoCommand::Kind::kSetContactModel;
     std::string error;
-    if (!contactFromConfig(config, contact, &params.contact, &model.model, &error) || !loop->post(params, &error))
+    WorldParams base = world_params;  // the model is the cfg's: every cfg carries one
+    base.contact = contact;
+    WorldParams applied;
+    const bool valid = worldFromConfig(config, base, &applied, &error);
+    params.contact = applied.contact;
+    model.model = applied.model;
+    if (!valid || !loop->post(params, &error))
     {
       ROS_WARN("servo: reconfiguration refused (%s); the previous parameters stay", error.c_str());
       config = last_good_config;
@@ -309,6 +316,7 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   impl.names = setup.names;
   impl.sim_time = impl.loop->params().simulated_time;
   impl.contact = setup.world_params.contact;
+  impl.world_params = setup.world_params;
   const WorldParams& world_params = setup.world_params;
   const std::string& scene_path = setup.scene_path;
   const ServoLoopParams& loop_params = impl.loop->params();

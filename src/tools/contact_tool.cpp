@@ -22,13 +22,12 @@
 namespace god_finger
 {
 
-const char* contactToolUsage()
+std::string contactToolUsage()
 {
-  return "usage: god_finger_contact --mesh FILE [--samples N] [--seed S] [--r-max M] [--d0 M] [--alpha A]\n"
-         "                          [--n-sgo N] [--tau-a RAD] [--friction MU] [--walk project|unfold]\n"
-         "                          [--dump FILE.csv]\n"
+  return "usage: god_finger_contact --mesh FILE [--samples N] [--seed S] [--dump FILE.csv] [PARAMETER VALUE...]\n"
          "Samples N random contacts on the mesh, computes each god-finger contact area and prints\n"
-         "one JSON object on stdout (the mesh's health report goes to stderr).\n";
+         "one JSON object on stdout (the mesh's health report goes to stderr). Parameters:\n" +
+         usageLines(contactParameterTable());
 }
 
 std::string parseContactToolOptions(int argc, const char* const* argv, ContactToolOptions* options)
@@ -46,7 +45,6 @@ std::string parseContactToolOptions(int argc, const char* const* argv, ContactTo
       return flag.rfind("--", 0) == 0 ? "option " + flag + " needs a value" : "unexpected argument '" + flag + "'";
     }
     const std::string value = argv[++i];
-    double number = 0.0;
     long long integer = 0;
     if (flag == "--mesh")
     {
@@ -56,14 +54,7 @@ std::string parseContactToolOptions(int argc, const char* const* argv, ContactTo
     {
       options->dump = value;
     }
-    else if (flag == "--walk")
-    {
-      if (!parseWalkVariant(value, &options->params.walk))
-      {
-        return "--walk must be 'project' or 'unfold', got '" + value + "'";
-      }
-    }
-    else if (flag == "--samples" || flag == "--seed" || flag == "--n-sgo")
+    else if (flag == "--samples" || flag == "--seed")
     {
       if (!parseInteger(value, &integer))
       {
@@ -77,7 +68,7 @@ std::string parseContactToolOptions(int argc, const char* const* argv, ContactTo
         }
         options->samples = static_cast<int>(integer);
       }
-      else if (flag == "--seed")
+      else
       {
         if (integer < 0)
         {
@@ -85,28 +76,20 @@ std::string parseContactToolOptions(int argc, const char* const* argv, ContactTo
         }
         options->seed = static_cast<std::uint64_t>(integer);
       }
-      else
-      {
-        options->params.sub_god_objects =
-            static_cast<int>(std::max<long long>(std::min<long long>(integer, 1 << 20), -1));
-      }
-    }
-    else if (flag == "--r-max" || flag == "--d0" || flag == "--alpha" || flag == "--tau-a" || flag == "--friction")
-    {
-      if (!parseDouble(value, &number))
-      {
-        return flag + " needs a number, got '" + value + "'";
-      }
-      double* target = flag == "--r-max"   ? &options->params.max_radius
-                       : flag == "--d0"    ? &options->params.distance_constant
-                       : flag == "--alpha" ? &options->params.alpha
-                       : flag == "--tau-a" ? &options->params.max_angle
-                                           : &options->params.friction;
-      *target = number;
     }
     else
     {
-      return "unknown option '" + flag + "' (see --help)";
+      try
+      {
+        if (!parseFlag(contactParameterTable(), flag, value, &options->params))
+        {
+          return "unknown option '" + flag + "' (see --help)";
+        }
+      }
+      catch (const InputError& error)
+      {
+        return error.what();
+      }
     }
   }
   if (options->mesh.empty())
@@ -234,11 +217,7 @@ int runContactTool(const ContactToolOptions& options, std::ostream& out, std::os
        << ", \"flipped_triangles\": " << health.flipped_triangles
        << ", \"inconsistent_winding_edges\": " << health.inconsistent_winding_edges
        << ", \"components\": " << health.components << "}, ";
-  json << "\"params\": {\"r_max\": " << jsonNumber(params.max_radius)
-       << ", \"d0\": " << jsonNumber(params.distance_constant) << ", \"alpha\": " << jsonNumber(params.alpha)
-       << ", \"n_sgo\": " << params.sub_god_objects << ", \"tau_a\": " << jsonNumber(params.max_angle)
-       << ", \"friction\": " << (std::isinf(params.friction) ? std::string("\"inf\"") : jsonNumber(params.friction))
-       << ", \"walk\": \"" << walkVariantName(params.walk) << "\"}, ";
+  json << "\"params\": " << jsonObject(contactParameterTable(), params) << ", ";
   json << "\"samples\": " << options.samples << ", \"seed\": " << options.seed << ", \"failures\": " << failures
        << ", \"nan\": " << nan_count
        << ", \"sgo_per_contact_mean\": " << jsonNumber(static_cast<double>(active_total) / options.samples)

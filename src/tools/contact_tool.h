@@ -22,7 +22,7 @@ struct ContactToolOptions
 
 // Empty string on success, else one line saying what is wrong.
 std::string parseContactToolOptions(int argc, const char* const* argv, ContactToolOptions* options);
-const char* contactToolUsage();
+std::string contactToolUsage();
 // Runs the tool: health report on `report`, one JSON object on `out`. Returns the exit code;
 // on error writes one line "god_finger_contact: ..." on `report`.
 int runContactTool(const ContactToolOptions& options, std::ostream& out, std::ostream& report);

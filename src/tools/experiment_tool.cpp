@@ -66,7 +66,7 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
     {
       if (!parseContactModel(value, &experiment.model))
       {
-        return "option '--model' = '" + value + "' is not one of god_object, god_finger, soft_finger";
+        return "option '--model' = '" + value + "' is not one of " + contactModelNames();
       }
       have_model = true;
     }

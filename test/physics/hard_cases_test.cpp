@@ -91,7 +91,6 @@ RunRecord runChecked(GodFingerWorld* world, long steps, const std::function<void
 WorldParams fingerParams()
 {
   WorldParams params;
-  params.contact.distance_constant = 0.001;  // as the physics node and the experiments
   return params;
 }
 

@@ -76,7 +76,7 @@ TEST(NodeErrors, DeviceDriverNode)
   expectFails(node, "__name:=d2 _backend:=omni", "backend 'omni' needs the OpenHaptics HD API");
   expectFails(node, "__name:=d3 _backend:=mouse",
               "parameter '/d3/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni");
-  expectFails(node, "__name:=d4 _max_force:=-2", "parameter '/d4/max_force' = -2 is out of range (0, 1000] (N)");
+  expectFails(node, "__name:=d4 _max_force:=-2", "parameter '/d4/max_force' = -2 is out of range (0, 10000] (N)");
   expectFails(node, "__name:=d5", "parameter '/d5/script' must be a list of [t, x, y, z] waypoints");
   expectFails(node, "__name:=d6", "does not come after the previous one");
   expectFails(node, "__name:=d7 _backend:=replay", "parameter '/d7/bag' is required by backend 'replay'");

@@ -44,9 +44,9 @@ TEST(ContactRadius, Equation1Limits)
   // At a compression of D0' the radius is r_max (1 - 1/e).
   EXPECT_NEAR(contactRadius(Eigen::Vector3d(0.003, 0, -params.distance_constant), up, params),
               params.max_radius * (1.0 - std::exp(-1.0)), 1e-18);
-  // Monotonic in the compression.
+  // Monotonic in the compression (up to 30 D0', where 1 - exp(-s/D0') is still below 1 in doubles).
   double previous = 0.0;
-  for (double s = 1e-6; s < 0.1; s *= 1.5)
+  for (double s = 1e-3 * params.distance_constant; s < 30.0 * params.distance_constant; s *= 1.5)
   {
     const double r = contactRadius(Eigen::Vector3d(0, 0, -s), up, params);
     EXPECT_GT(r, previous);

@@ -66,7 +66,7 @@ TEST(ForceGuard, BadParametersAreNamed)
 {
   ForceGuardParams params;
   params.max_force = -1.0;
-  EXPECT_EQ(validate(params), "parameter 'max_force' = -1 is out of range (0, 1000] (N)");
+  EXPECT_EQ(validate(params), "parameter 'max_force' = -1 is out of range (0, 10000] (N)");
   EXPECT_THROW(ForceGuard{params}, InputError);
   params = ForceGuardParams();
   params.command_timeout = 0.0;

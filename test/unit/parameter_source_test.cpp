@@ -62,7 +62,7 @@ TEST(ParameterSource, LayeredSourcePrefersTheFirstAndNamesWhereItFoundTheValue)
   interface.set("max_force", ParameterValue::of(8.9));
   const LayeredParameterSource both(node, interface);
   EXPECT_EQ(errorOf([&] { readDeviceProfile(both); }),
-            "parameter '/finger/haptic/max_force' = -2 is out of range (0, 1000] (N)");
+            "parameter '/finger/haptic/max_force' = -2 is out of range (0, 10000] (N)");
   const DeviceProfile profile = readDeviceProfile(interface);
   EXPECT_EQ(profile.coupling.stiffness, 800.0);
   EXPECT_EQ(profile.coupling.max_force, 8.9);

@@ -110,8 +110,8 @@ TEST(SurfaceLocator, PointsOnNeedleTrianglesAreFoundOnThem)
   soup.vertices = {Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(0.06, 0.0, 0.0), Eigen::Vector3d(0.02, 32.7, 1.5)};
   soup.triangles = {{0, 1, 2}};
   const TriangleMesh mesh = TriangleMesh::build(soup);
-  for (const Eigen::Vector3d& barycentric : {Eigen::Vector3d(0.428, 2.31e-14, 0.572), Eigen::Vector3d(0.3, 0.3, 0.4),
-                                             Eigen::Vector3d(0.01, 0.5, 0.49)})
+  for (const Eigen::Vector3d& barycentric :
+       {Eigen::Vector3d(0.428, 2.31e-14, 0.572), Eigen::Vector3d(0.3, 0.3, 0.4), Eigen::Vector3d(0.01, 0.5, 0.49)})
   {
     const Eigen::Vector3d on =
         barycentric[0] * mesh.corner(0, 0) + barycentric[1] * mesh.corner(0, 1) + barycentric[2] * mesh.corner(0, 2);

@@ -34,13 +34,13 @@ TEST(VirtualCoupling, ProfileRangesNameTheParameter)
   CouplingProfile profile;
   EXPECT_EQ(validate(profile), "");
   profile.stiffness = 0.0;
-  EXPECT_EQ(validate(profile), "parameter 'coupling_stiffness' = 0 is out of range (0, 1e+05] (N/m)");
+  EXPECT_EQ(validate(profile), "parameter 'coupling_stiffness' = 0 is out of range (0, 100000] (N/m)");
   profile = CouplingProfile();
   profile.damping = -1.0;
   EXPECT_EQ(validate(profile), "parameter 'coupling_damping' = -1 is out of range [0, 1000] (N s/m)");
   profile = CouplingProfile();
   profile.max_force = NAN;
-  EXPECT_EQ(validate(profile), "parameter 'max_force' = nan is out of range (0, 1e+04] (N)");
+  EXPECT_EQ(validate(profile), "parameter 'max_force' = nan is out of range (0, 10000] (N)");
 }
 }  // namespace
 }  // namespace god_finger

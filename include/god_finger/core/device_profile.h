@@ -15,11 +15,13 @@ struct DeviceProfile
   // coupling.max_force is the device's force limit too (guard.max_force is set equal to it).
   CouplingProfile coupling;
   ForceGuardParams guard;
-  double workspace_radius = 0.15;  // m, range (0, 10]: the workspace the scripts stay within
+  double workspace_radius = 0.15;  // m: the workspace the scripts stay within
 };
 
-// max_force (N), command_timeout (s), ramp_time (s), coupling_stiffness (N/m),
-// coupling_damping (N s/m), workspace_radius (m), each with its range; defaults are the fake
-// device's. InputError naming the first bad one.
+// The coupling's rows, the guard's and workspace_radius: what config/devices/NAME.yaml may set.
+const ParameterTable<DeviceProfile>& deviceProfileTable();
+
+// Every row of deviceProfileTable() that `source` sets (defaults are the fake device's);
+// InputError naming the first bad one.
 DeviceProfile readDeviceProfile(const ParameterSource& source);
 }  // namespace god_finger

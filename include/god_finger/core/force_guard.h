@@ -7,6 +7,8 @@
 // allocation-free. Invariant: |output| <= max_force at every time.
 #pragma once
 
+#include "god_finger/core/parameter_table.h"
+
 #include <Eigen/Core>
 #include <string>
 
@@ -14,10 +16,12 @@ namespace god_finger
 {
 struct ForceGuardParams
 {
-  double max_force = 8.0;         // N, range (0, 1e3]: the device profile's limit
-  double command_timeout = 0.02;  // s, range (0, 10]: watchdog
-  double ramp_time = 0.01;        // s, range (0, 1]: from the last force to zero
+  double max_force = 8.0;         // N: set to the device profile's limit (coupling max_force)
+  double command_timeout = 0.02;  // s: watchdog
+  double ramp_time = 0.01;        // s: from the last force to zero
 };
+// command_timeout, ramp_time (the limit is the coupling's max_force row).
+const ParameterTable<ForceGuardParams>& forceGuardParameterTable();
 // Empty on success, else "parameter 'NAME' = VALUE is out of range [..] (unit)".
 std::string validate(const ForceGuardParams& params);
 

@@ -9,6 +9,8 @@
 // allocation, no lock).
 #pragma once
 
+#include "god_finger/core/parameter_table.h"
+
 #include <Eigen/Core>
 #include <string>
 
@@ -18,10 +20,12 @@ namespace god_finger
 // renders or simulates the coupling of that device's interface.
 struct CouplingProfile
 {
-  double stiffness = 400.0;  // N/m, range (0, 1e5]: stable at 1 kHz with the device
-  double damping = 4.0;      // N s/m, range [0, 1e3]
-  double max_force = 20.0;   // N, range (0, 1e4]: the coupling force is saturated here
+  double stiffness = 400.0;  // N/m: stable at 1 kHz with the device
+  double damping = 4.0;      // N s/m
+  double max_force = 20.0;   // N: the coupling force is saturated here
 };
+// coupling_stiffness, coupling_damping, max_force: names, units, ranges, meanings.
+const ParameterTable<CouplingProfile>& couplingParameterTable();
 // Empty on success, else one line naming the first bad value and its range.
 std::string validate(const CouplingProfile& profile);
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "god_finger/core/parameter_source.h"
+#include "god_finger/core/parameter_table.h"
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/devices/haptic_device.h"
 
@@ -17,14 +18,15 @@ namespace god_finger
 {
 struct FakeDeviceParams
 {
-  double handle_mass = 0.1;      // kg, range (0, 100]
-  double handle_damping = 0.5;   // N s/m, range [0, 1e4]: the mechanism's friction
-  double grip_stiffness = 2000;  // N/m, range (0, 1e6]: how firmly the hand holds the handle
-  double grip_damping = 20;      // N s/m, range [0, 1e4]
+  double handle_mass = 0.1;      // kg
+  double handle_damping = 0.5;   // N s/m: the mechanism's friction
+  double grip_stiffness = 2000;  // N/m: how firmly the hand holds the handle
+  double grip_damping = 20;      // N s/m
 };
+// handle_mass, handle_damping, grip_stiffness, grip_damping: units, ranges, meanings.
+const ParameterTable<FakeDeviceParams>& fakeDeviceParameterTable();
 std::string validate(const FakeDeviceParams& params);
-// handle_mass, handle_damping, grip_stiffness, grip_damping (defaults above); InputError on a
-// bad one.
+// Every row `source` sets (defaults above); InputError on a bad one.
 FakeDeviceParams readFakeDeviceParams(const ParameterSource& source);
 // `script`: a list of [t, x, y, z] waypoints (s, m, device frame); without it the hand holds
 // the handle at `fallback` (m). InputError on a malformed script.

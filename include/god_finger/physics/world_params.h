@@ -1,5 +1,6 @@
-// Parameters of the physics world and of the god-object proxies, with units, defaults and
-// ranges; validate() names the first bad one.
+// Parameters of the physics world and of the god-object proxies: the structs with their
+// defaults, and worldParameterTable(), the one table of their names, units, ranges and
+// meanings (core/parameter_table.h); validate() names the first bad one.
 #pragma once
 
 #include "god_finger/core/contact_params.h"
@@ -16,8 +17,8 @@ namespace god_finger
 // sphere with locked rotation.
 struct CouplingParams : CouplingProfile
 {
-  double proxy_mass = 0.02;     // kg, range (0, 10]
-  double proxy_radius = 0.003;  // m, range (0, 0.1]
+  double proxy_mass = 0.02;     // kg
+  double proxy_radius = 0.003;  // m
 };
 
 // The soft-finger baseline: Bullet's torsional and rolling friction at the single point.
@@ -25,8 +26,8 @@ struct CouplingParams : CouplingProfile
 // impulse solver only adds spinning friction when the rolling friction is non-zero.
 struct SoftFingerParams
 {
-  double spinning_friction = 0.01;  // m, range [0, 1]
-  double rolling_friction = 1e-4;   // m, range (0, 1]: must be > 0 for spinning to act
+  double spinning_friction = 0.01;  // m
+  double rolling_friction = 1e-4;   // m: must be > 0 for spinning to act
 };
 
 // The finger pad's compliance at each contact point of a proxy (the true one and every
@@ -38,17 +39,17 @@ struct SoftFingerParams
 // stiffness stays the coupling's, which is 50 times softer.
 struct FingerPadParams
 {
-  double stiffness = 2e4;  // N/m per contact point, range (0, 1e7]
-  double damping = 20.0;   // N s/m per contact point, range [0, 1e5]
+  double stiffness = 2e4;  // N/m per contact point
+  double damping = 20.0;   // N s/m per contact point
 };
 
 struct WorldParams
 {
-  double time_step = 1e-3;  // s, range [1e-5, 0.1]
+  double time_step = 1e-3;  // s, range [1e-5, 0.1]: the servo loop's period (its `rate`)
   // Sequential-impulse iterations per step. A pinched object slowly creeps about the contact
   // normal when they are too few (README, "Solver iterations"): 30 gives 0.086 rad in the 21.5 s
   // after the pinch_cylinder lift, 50 gives 0.010 rad, 60 gives 0.0035 rad.
-  int solver_iterations = 60;                              // range [1, 1000]
+  int solver_iterations = 60;
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  // m/s^2, finite
   ContactModel model = ContactModel::kGodFinger;
   ContactParams contact;
@@ -57,8 +58,14 @@ struct WorldParams
   FingerPadParams pad;
   // Largest edge of the walk surface of a sphere or cylinder, as a fraction of r_max: the
   // tessellation is refined until its edges are no longer (capped at 81920 triangles).
-  double walk_edge_per_max_radius = 0.5;  // range (0, 10]
+  double walk_edge_per_max_radius = 0.5;
 };
+
+// Every parameter of WorldParams that is read by name: model, solver_iterations, the contact
+// table's rows, proxy_mass, proxy_radius, the soft finger's, the pad's and
+// walk_edge_per_max_radius. (time_step comes from the loop's rate, gravity from the scene; the
+// coupling profile comes per interface from its device, deviceProfileTable().)
+const ParameterTable<WorldParams>& worldParameterTable();
 
 std::string validate(const WorldParams& params);
 // Empty when `profile` pulling a proxy of `proxy_mass` (kg) is stable at `time_step` (s): the

@@ -1,5 +1,5 @@
 // dynamic_reconfigure of the method's parameters and the contact model (cfg/GodFinger.cfg),
-// shared by the physics node and the servo node.
+// shared by the physics node and the servo node. Not real-time (called from ROS callbacks).
 #pragma once
 
 #include "god_finger/GodFingerConfig.h"
@@ -10,9 +10,10 @@
 namespace god_finger
 {
 // The configuration that shows `params` (to start the server from what the node runs with).
+// The cfg's entries are rows of worldParameterTable(), matched by name.
 god_finger::GodFingerConfig configOf(const WorldParams& params);
-// `config` applied over `base`: false (and `error` says why) when the model, the walk or the
-// whole set of contact parameters is invalid; nothing is to be applied then.
-bool contactFromConfig(const god_finger::GodFingerConfig& config, const ContactParams& base, ContactParams* contact,
-                       ContactModel* model, std::string* error);
+// `config` applied over `base` through worldParameterTable(): false (and `error` says why,
+// naming the parameter) when any value or the whole set is invalid; nothing is to be applied then.
+bool worldFromConfig(const god_finger::GodFingerConfig& config, const WorldParams& base, WorldParams* params,
+                     std::string* error);
 }  // namespace god_finger

@@ -1,0 +1,168 @@
+// The one parameter table per set (core/parameter_table.h) is what every other place follows:
+// the README's tables, dynamic_reconfigure's cfg, the defaults and the error messages (the
+// shipped device profiles: test/devices/device_profiles_test). A parameter added to a table and not to the README or
+// the cfg (or the other way round) fails here, with the text to paste.
+#include "god_finger/core/device_profile.h"
+#include "god_finger/core/input_error.h"
+#include "god_finger/physics/world_params.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace god_finger
+{
+namespace
+{
+std::string readSource(const std::string& relative)
+{
+  std::ifstream in(std::string(GOD_FINGER_SOURCE_DIR) + "/" + relative);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The world's own rows (its table lifts the contact table's rows in too).
+ParameterTable<WorldParams> worldOwnRows()
+{
+  std::set<std::string> contact_names;
+  for (const auto& row : contactParameterTable())
+  {
+    contact_names.insert(row.name);
+  }
+  ParameterTable<WorldParams> own;
+  for (const auto& row : worldParameterTable())
+  {
+    if (contact_names.count(row.name) == 0)
+    {
+      own.push_back(row);
+    }
+  }
+  return own;
+}
+
+TEST(ParameterTables, TheReadmeShowsEachTableAsGenerated)
+{
+  const std::string readme = readSource("README.md");
+  const std::pair<const char*, std::string> tables[] = {
+      {"method (contactParameterTable)", markdownTable(contactParameterTable())},
+      {"world (worldParameterTable, its own rows)", markdownTable(worldOwnRows())},
+      {"device profile (deviceProfileTable)", markdownTable(deviceProfileTable())},
+  };
+  for (const auto& [what, table] : tables)
+  {
+    EXPECT_NE(readme.find(table), std::string::npos) << "README.md lacks the " << what << " table as generated:\n"
+                                                     << table;
+  }
+}
+
+TEST(ParameterTables, TheCfgFollowsTheWorldTable)
+{
+  // gen.add("name", type, 0, "meaning", default, min, max) or, for a choice, edit_method=...
+  const std::string cfg = readSource("cfg/GodFinger.cfg");
+  const std::regex add(
+      "gen\\.add\\(\"(\\w+)\", (\\w+), 0,\\s*\"([^\"]*)\",\\s*([^,\\)]+)(?:,\\s*([^,\\)]+),\\s*([^,\\)]+))?");
+  int entries = 0;
+  for (std::sregex_iterator it(cfg.begin(), cfg.end(), add), end; it != end; ++it, ++entries)
+  {
+    const std::string name = (*it)[1];
+    const std::string type = (*it)[2];
+    const ParameterRow<WorldParams>* row = nullptr;
+    for (const auto& candidate : worldParameterTable())
+    {
+      row = name == candidate.name ? &candidate : row;
+    }
+    ASSERT_NE(row, nullptr) << "cfg entry '" << name << "' is no row of worldParameterTable()";
+    EXPECT_EQ((*it)[3].str(), row->meaning) << name << ": the cfg's description must be the row's meaning";
+    using Kind = ParameterRow<WorldParams>::Kind;
+    const std::string expected_type =
+        row->kind == Kind::kReal ? "double_t" : (row->kind == Kind::kInteger ? "int_t" : "str_t");
+    EXPECT_EQ(type, expected_type) << name;
+    if (row->kind == Kind::kChoice)
+    {
+      EXPECT_EQ((*it)[4].str(), "\"" + row->defaultText() + "\"") << name;
+      continue;
+    }
+    const double default_value = std::stod((*it)[4]);
+    EXPECT_EQ(default_value, row->number(WorldParams{})) << name << ": one default, the struct's";
+    // The slider's ends are the cfg's own (a slider needs finite ends) but lie in the range.
+    ASSERT_TRUE((*it)[5].matched) << name << " has no slider range";
+    const double low = std::stod((*it)[5]);
+    const double high = std::stod((*it)[6]);
+    EXPECT_TRUE(row->range.contains(low) && row->range.contains(high) && low <= default_value && default_value <= high)
+        << name << ": slider [" << low << ", " << high << "] must lie in " << row->range.text()
+        << " around the default";
+  }
+  EXPECT_GE(entries, 8);
+}
+
+TEST(ParameterTables, DefaultsAreValidAndEveryBoundIsEnforcedWithTheParameterNamed)
+{
+  EXPECT_EQ(validate(ContactParams{}), "");
+  EXPECT_EQ(validate(WorldParams{}), "");
+  EXPECT_EQ(validate(DeviceProfile{}.coupling), "");
+  // Just outside each finite end of each numeric row: read from a source, the error names
+  // the parameter's full name, the value and the range.
+  int checked = 0;
+  for (const auto& row : worldParameterTable())
+  {
+    if (row.kind == ParameterRow<WorldParams>::Kind::kChoice)
+    {
+      continue;
+    }
+    for (const double outside :
+         {row.range.low - (row.range.low_open ? 0.0 : 1.0), row.range.high + (row.range.high_open ? 0.0 : 1.0)})
+    {
+      if (!std::isfinite(outside))
+      {
+        continue;
+      }
+      MapParameterSource source("/physics/");
+      source.set(row.name, row.kind == ParameterRow<WorldParams>::Kind::kInteger
+                               ? ParameterValue::ofInteger(static_cast<int>(outside))
+                               : ParameterValue::of(outside));
+      WorldParams params;
+      try
+      {
+        readRows(source, worldParameterTable(), &params);
+        ADD_FAILURE() << row.name << " = " << outside << " was accepted";
+      }
+      catch (const InputError& error)
+      {
+        EXPECT_EQ(std::string(error.what()), "parameter '/physics/" + std::string(row.name) +
+                                                 "' = " + formatNumber(outside) + " is out of range " +
+                                                 row.range.text() + " (" + row.unit + ")");
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 25);
+  // The same through validate() on the struct itself.
+  WorldParams params;
+  params.contact.distance_constant = 0.0;
+  EXPECT_EQ(validate(params), "parameter 'd0' = 0 is out of range (0, 1000] (m)");
+  params = WorldParams();
+  params.pad.stiffness = -1.0;
+  EXPECT_EQ(validate(params), "parameter 'pad_stiffness' = -1 is out of range (0, 10000000] (N/m)");
+  // A choice outside its list.
+  MapParameterSource source("/physics/");
+  source.set("walk", ParameterValue::of(std::string("sideways")));
+  EXPECT_THROW(
+      {
+        try
+        {
+          readRows(source, worldParameterTable(), &params);
+        }
+        catch (const InputError& error)
+        {
+          EXPECT_STREQ(error.what(), "parameter '/physics/walk' = 'sideways' is not one of project, unfold");
+          throw;
+        }
+      },
+      InputError);
+}
+}  // namespace
+}  // namespace god_finger
