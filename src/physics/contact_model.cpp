@@ -1,51 +1,100 @@
 #include "god_finger/physics/contact_model.h"
 
+#include "contact_response.h"
+
 namespace god_finger
 {
+namespace
+{
+// The one list of contact models: name (messages, the cfg's enum, the tools, the device's model
+// button, which cycles through them in this order) and response (how its contacts reach the
+// solver). A new model: its enum value, its response's file and one row here.
+struct ContactModelEntry
+{
+  ContactModel model;
+  const char* name;
+  std::unique_ptr<ContactResponse> (*make_response)();
+};
+const ContactModelEntry kContactModelList[] = {
+    {ContactModel::kGodObject, "god_object", &makeGodObjectResponse},
+    {ContactModel::kGodFinger, "god_finger", &makeGodFingerResponse},
+    {ContactModel::kSoftFinger, "soft_finger", &makeSoftFingerResponse},
+};
+
+const ContactModelEntry* entryOf(ContactModel model)
+{
+  for (const ContactModelEntry& entry : kContactModelList)
+  {
+    if (entry.model == model)
+    {
+      return &entry;
+    }
+  }
+  return nullptr;
+}
+}  // namespace
+
+const std::vector<ContactModel>& contactModels()
+{
+  static const std::vector<ContactModel> models = []
+  {
+    std::vector<ContactModel> list;
+    for (const ContactModelEntry& entry : kContactModelList)
+    {
+      list.push_back(entry.model);
+    }
+    return list;
+  }();
+  return models;
+}
+
 const char* contactModelName(ContactModel model)
 {
-  switch (model)
-  {
-    case ContactModel::kGodObject:
-      return "god_object";
-    case ContactModel::kGodFinger:
-      return "god_finger";
-    case ContactModel::kSoftFinger:
-      return "soft_finger";
-  }
-  return "unknown";
+  const ContactModelEntry* entry = entryOf(model);
+  return entry != nullptr ? entry->name : "unknown";
+}
+
+bool isContactModel(ContactModel model)
+{
+  return entryOf(model) != nullptr;
+}
+
+std::unique_ptr<ContactResponse> makeContactResponse(ContactModel model)
+{
+  const ContactModelEntry* entry = entryOf(model);
+  return entry != nullptr ? entry->make_response() : nullptr;
 }
 
 ContactModel nextContactModel(ContactModel model)
 {
-  const int count = static_cast<int>(sizeof(kContactModels) / sizeof(kContactModels[0]));
-  for (int i = 0; i < count; ++i)
+  const std::vector<ContactModel>& models = contactModels();
+  for (std::size_t i = 0; i < models.size(); ++i)
   {
-    if (kContactModels[i] == model)
+    if (models[i] == model)
     {
-      return kContactModels[(i + 1) % count];
+      return models[(i + 1) % models.size()];
     }
   }
-  return kContactModels[0];
+  return models.front();
 }
 
 std::string contactModelNames()
 {
   std::string names;
-  for (ContactModel model : kContactModels)
+  for (const ContactModelEntry& entry : kContactModelList)
   {
-    names += (names.empty() ? "" : ", ") + std::string(contactModelName(model));
+    names += (names.empty() ? "" : ", ") + std::string(entry.name);
   }
   return names;
 }
 
 bool parseContactModel(const std::string& text, ContactModel* model)
 {
-  for (ContactModel candidate : kContactModels)
+  for (const ContactModelEntry& entry : kContactModelList)
   {
-    if (text == contactModelName(candidate))
+    if (text == entry.name)
     {
-      *model = candidate;
+      *model = entry.model;
       return true;
     }
   }

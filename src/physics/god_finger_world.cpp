@@ -1,9 +1,13 @@
 #include "god_finger/physics/god_finger_world.h"
 
+#include "bullet_helpers.h"
 #include "collision_shape.h"
+#include "contact_response.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/physics/walk_surface.h"
+#include "proxy.h"
+#include "sub_god_object_injection.h"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -15,43 +19,8 @@ namespace god_finger
 {
 namespace
 {
-// Collision groups: proxies touch scene bodies, never each other.
-constexpr int kBodyGroup = btBroadphaseProxy::DefaultFilter | btBroadphaseProxy::StaticFilter;
-constexpr int kProxyGroup = btBroadphaseProxy::CharacterFilter;
-// btCollisionObject user index: what an object is; user index 2: its index.
-constexpr int kKindBody = 1;
-constexpr int kKindProxy = 2;
 // Sub-god-objects closer than this to the contact point (m) duplicate it and are not added.
 constexpr double kCoincident = 1e-7;
-
-btVector3 toBullet(const Eigen::Vector3d& v)
-{
-  return btVector3(v.x(), v.y(), v.z());
-}
-Eigen::Vector3d toEigen(const btVector3& v)
-{
-  return Eigen::Vector3d(v.x(), v.y(), v.z());
-}
-btTransform toBullet(const Eigen::Isometry3d& t)
-{
-  const Eigen::Matrix3d& r = t.linear();
-  return btTransform(btMatrix3x3(r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1), r(1, 2), r(2, 0), r(2, 1), r(2, 2)),
-                     toBullet(t.translation()));
-}
-Eigen::Isometry3d toEigen(const btTransform& t)
-{
-  Eigen::Isometry3d result = Eigen::Isometry3d::Identity();
-  const btMatrix3x3& b = t.getBasis();
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      result.linear()(i, j) = b[i][j];
-    }
-  }
-  result.translation() = toEigen(t.getOrigin());
-  return result;
-}
 
 // Counts the contact points the solver receives.
 class CountingSolver : public btSequentialImpulseConstraintSolver
@@ -124,47 +93,6 @@ struct GodFingerWorld::Impl
     Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
     Eigen::Vector3d net_force = Eigen::Vector3d::Zero();
   };
-  struct WarmStart
-  {
-    long step = -1;  // the step the impulses are from
-    double normal = 0.0;
-    double lateral1 = 0.0;
-    double lateral2 = 0.0;
-  };
-  struct PadShape
-  {
-    long last_step = -2;
-    Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();
-  };
-  struct Proxy
-  {
-    std::unique_ptr<btSphereShape> shape;
-    std::unique_ptr<btRigidBody> rigid;
-    Eigen::Vector3d initial = Eigen::Vector3d::Zero();
-    CouplingProfile coupling;
-    Eigen::Vector3d target = Eigen::Vector3d::Zero();
-    Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();
-    InterfaceState state;
-    // Per touched body: the last first radial vector (a continuous basis in time).
-    std::vector<Eigen::Vector3d> reference_tangents;
-    // Per touched body and sub-god-object index: the impulses the solver gave it in the last
-    // step, to warm-start the next one as Bullet does for its own persistent points.
-    std::vector<std::array<WarmStart, ContactParams::kMaxSubGodObjects>> warm_starts;
-    // Per touched body: the pad, the shape the finger took when the contact began. It moves
-    // with the proxy and never rotates; `orientation` is the object's (world) when the contact
-    // began, `last_step` the last step the contact existed.
-    std::vector<PadShape> pads;
-  };
-  // Where an injected point sits, to read its impulses back after the solver.
-  struct InjectedPoint
-  {
-    btPersistentManifold* manifold = nullptr;
-    int point = 0;
-    int proxy = 0;
-    int body = 0;
-    int sub_god_object = 0;
-  };
-
   WorldParams params;
   SceneDescription scene;
   std::vector<Body> bodies;
@@ -174,8 +102,26 @@ struct GodFingerWorld::Impl
   std::unique_ptr<btDbvtBroadphase> broadphase;
   std::unique_ptr<CountingSolver> solver;
   std::unique_ptr<HookedWorld> world;
-  std::vector<btPersistentManifold*> injected;
-  std::vector<InjectedPoint> injected_points;
+  std::unique_ptr<SubGodObjectInjector> injector;
+  // Every model's response, made once; `response` is the current model's (a model change
+  // while running allocates nothing).
+  std::vector<std::pair<ContactModel, std::unique_ptr<ContactResponse>>> responses;
+  const ContactResponse* response = nullptr;
+
+  void chooseResponse()
+  {
+    if (responses.empty())
+    {
+      for (const ContactModel model : contactModels())
+      {
+        responses.emplace_back(model, makeContactResponse(model));
+      }
+    }
+    for (const auto& [model, candidate] : responses)
+    {
+      response = model == params.model ? candidate.get() : response;
+    }
+  }
   ContactAreaResult scratch;
   double time = 0.0;
   double deepest_penetration = 0.0;
@@ -225,7 +171,8 @@ struct GodFingerWorld::Impl
     // the sliding velocity).
     world->getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
     world->after_collision = [this]() { injectContactAreas(); };
-    injected.clear();
+    injector = std::make_unique<SubGodObjectInjector>(dispatcher.get());
+    chooseResponse();
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
       Body& body = bodies[i];
@@ -257,41 +204,10 @@ struct GodFingerWorld::Impl
   void addProxyToWorld(int index)
   {
     Proxy& proxy = proxies[index];
-    const CouplingParams& coupling = params.coupling;
-    proxy.shape = std::make_unique<btSphereShape>(coupling.proxy_radius);
-    btVector3 inertia(0, 0, 0);
-    proxy.shape->calculateLocalInertia(coupling.proxy_mass, inertia);
-    btRigidBody::btRigidBodyConstructionInfo info(coupling.proxy_mass, nullptr, proxy.shape.get(), inertia);
-    info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), toBullet(proxy.initial));
-    info.m_friction = 1.0;  // Bullet multiplies: the object's coefficient applies
-    proxy.rigid = std::make_unique<btRigidBody>(info);
-    proxy.rigid->setUserIndex(kKindProxy);
-    proxy.rigid->setUserIndex2(index);
-    proxy.rigid->setAngularFactor(0.0);
-    proxy.rigid->setContactStiffnessAndDamping(params.pad.stiffness, params.pad.damping);
-    proxy.rigid->setActivationState(DISABLE_DEACTIVATION);
-    proxy.rigid->setFlags(proxy.rigid->getFlags() | BT_DISABLE_WORLD_GRAVITY);
-    // Continuous collision so that a fast hand does not tunnel through thin objects.
-    proxy.rigid->setCcdMotionThreshold(0.5 * coupling.proxy_radius);
-    proxy.rigid->setCcdSweptSphereRadius(0.9 * coupling.proxy_radius);
+    buildProxyBody(params.coupling, params.pad, index, static_cast<int>(bodies.size()), &proxy);
     world->addRigidBody(proxy.rigid.get(), kProxyGroup, kBodyGroup);
     proxy.rigid->setGravity(btVector3(0, 0, 0));
-    applyModelToProxy(proxy);
-    proxy.target = proxy.initial;
-    proxy.previous_target = proxy.initial;
-    proxy.state = InterfaceState();
-    proxy.state.interface_position = proxy.initial;
-    proxy.state.proxy_position = proxy.initial;
-    proxy.reference_tangents.assign(bodies.size(), Eigen::Vector3d::Zero());
-    proxy.warm_starts.assign(bodies.size(), {});
-    proxy.pads.assign(bodies.size(), PadShape());
-  }
-
-  void applyModelToProxy(Proxy& proxy)
-  {
-    const bool soft = params.model == ContactModel::kSoftFinger;
-    proxy.rigid->setRollingFriction(soft ? params.soft_finger.rolling_friction : 0.0);
-    proxy.rigid->setSpinningFriction(soft ? params.soft_finger.spinning_friction : 0.0);
+    response->configureProxy(params, proxy.rigid.get());
   }
 
   Eigen::Isometry3d geometryToWorld(const Body& body) const
@@ -299,35 +215,11 @@ struct GodFingerWorld::Impl
     return toEigen(body.rigid->getWorldTransform()) * body.geometry_in_com;
   }
 
-  // After the solver: keep each injected point's impulses for the next step's warm start.
-  void recordImpulses()
-  {
-    for (const InjectedPoint& record : injected_points)
-    {
-      const btManifoldPoint& point = record.manifold->getContactPoint(record.point);
-      WarmStart& warm = proxies[record.proxy].warm_starts[record.body][record.sub_god_object];
-      warm.step = steps;
-      warm.normal = point.m_appliedImpulse;
-      warm.lateral1 = point.m_appliedImpulseLateral1;
-      warm.lateral2 = point.m_appliedImpulseLateral2;
-    }
-  }
-
-  void releaseInjected()
-  {
-    injected_points.clear();
-    for (btPersistentManifold* manifold : injected)
-    {
-      dispatcher->releaseManifold(manifold);
-    }
-    injected.clear();
-  }
-
   // Between collision detection and the solver: contact areas for every (proxy, body) pair in
   // contact; with kGodFinger their sub-god-objects join the solver.
   void injectContactAreas()
   {
-    releaseInjected();
+    injector->release();
     for (Proxy& proxy : proxies)
     {
       proxy.state.contact_count = 0;
@@ -428,57 +320,18 @@ struct GodFingerWorld::Impl
       radial_index[area.sub_god_object_count] = i;
       area.positions[area.sub_god_object_count++] = to_world * sgo.position;
     }
-    if (params.model != ContactModel::kGodFinger)
-    {
-      return;
-    }
-    const btCollisionObject* a = manifold->getBody0();
-    const btCollisionObject* b = manifold->getBody1();
-    btPersistentManifold* target = nullptr;
-    for (int i = 0; i < area.sub_god_object_count; ++i)
-    {
-      if (target == nullptr || target->getNumContacts() == MANIFOLD_CACHE_SIZE)
-      {
-        target = dispatcher->getNewManifold(a, b);
-        injected.push_back(target);
-      }
-      // Same normal and distance as the true contact; the object's point is the
-      // sub-god-object, the proxy's point is offset along the normal by the distance.
-      // Distance: the true contact's, plus how far the object has tilted away from (or into)
-      // the pad at this point since the contact began. Without the tilt term (the paper's
-      // "same distance") a tilt never shows as penetration, and the solver's small velocity
-      // errors add up to a slow, uncorrected tipping (README, "Sub-god-object distances").
-      const Eigen::Vector3d lever = area.positions[i] - point_world;
-      const double distance = contact.getDistance() + normal_world.dot(object_to_pad * lever - lever);
-      const btVector3 on_object = toBullet(area.positions[i]);
-      const btVector3 on_proxy = on_object + toBullet(normal_world) * distance;
-      const btVector3 on_a = proxy_is_a ? on_proxy : on_object;
-      const btVector3 on_b = proxy_is_a ? on_object : on_proxy;
-      btManifoldPoint point(a->getWorldTransform().invXform(on_a), b->getWorldTransform().invXform(on_b),
-                            contact.m_normalWorldOnB, distance);
-      point.m_positionWorldOnA = on_a;
-      point.m_positionWorldOnB = on_b;
-      point.m_combinedFriction = contact.m_combinedFriction;
-      point.m_combinedRestitution = contact.m_combinedRestitution;
-      point.m_combinedRollingFriction = contact.m_combinedRollingFriction;
-      point.m_combinedSpinningFriction = contact.m_combinedSpinningFriction;
-      // The pad's compliance (see FingerPadParams), as on the true contact.
-      point.m_contactPointFlags = contact.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
-      point.m_combinedContactStiffness1 = contact.m_combinedContactStiffness1;
-      point.m_combinedContactDamping1 = contact.m_combinedContactDamping1;
-      // Warm start from the same sub-god-object's impulses of the previous step, if it was
-      // there (without it the solver's 30 iterations leave a slow creep, see README).
-      const int sgo_index = radial_index[i];
-      const WarmStart& warm = proxy.warm_starts[body_index][sgo_index];
-      if (warm.step == steps - 1)
-      {
-        point.m_appliedImpulse = warm.normal;
-        point.m_appliedImpulseLateral1 = warm.lateral1;
-        point.m_appliedImpulseLateral2 = warm.lateral2;
-      }
-      const int slot = target->addManifoldPoint(point);
-      injected_points.push_back({target, slot, proxy_index, body_index, sgo_index});
-    }
+    AreaContact area_contact;
+    area_contact.manifold = manifold;
+    area_contact.contact = &contact;
+    area_contact.proxy_is_a = proxy_is_a;
+    area_contact.proxy_index = proxy_index;
+    area_contact.body_index = body_index;
+    area_contact.point_world = point_world;
+    area_contact.normal_world = normal_world;
+    area_contact.object_to_pad = object_to_pad;
+    area_contact.area = &area;
+    area_contact.radial_index = radial_index.data();
+    response->respond(area_contact, proxy, steps, injector.get());
   }
 
   void step()
@@ -503,7 +356,7 @@ struct GodFingerWorld::Impl
     }
     solver->resetCounts();
     world->stepSimulation(dt, 0);
-    recordImpulses();
+    injector->recordImpulses(&proxies, steps);
     time = (steps + 1) * dt;
     ++steps;
     for (std::size_t i = 0; i < bodies.size(); ++i)
@@ -528,7 +381,7 @@ struct GodFingerWorld::Impl
     {
       return;
     }
-    releaseInjected();
+    injector->release();
     for (Proxy& proxy : proxies)
     {
       world->removeRigidBody(proxy.rigid.get());
@@ -583,7 +436,7 @@ int GodFingerWorld::addInterface(const Eigen::Vector3d& position, const Coupling
   {
     throw InputError(error);
   }
-  Impl::Proxy proxy;
+  Proxy proxy;
   proxy.initial = position;
   proxy.coupling = coupling;
   impl_->proxies.push_back(std::move(proxy));
@@ -620,7 +473,7 @@ void GodFingerWorld::reset()
 
 void GodFingerWorld::resetAtInterfaces()
 {
-  for (Impl::Proxy& proxy : impl_->proxies)
+  for (Proxy& proxy : impl_->proxies)
   {
     proxy.initial = proxy.target;
   }
@@ -630,9 +483,10 @@ void GodFingerWorld::resetAtInterfaces()
 void GodFingerWorld::setContactModel(ContactModel model)
 {
   impl_->params.model = model;
-  for (Impl::Proxy& proxy : impl_->proxies)
+  impl_->chooseResponse();
+  for (Proxy& proxy : impl_->proxies)
   {
-    impl_->applyModelToProxy(proxy);
+    impl_->response->configureProxy(impl_->params, proxy.rigid.get());
   }
 }
 

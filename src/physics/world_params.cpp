@@ -58,12 +58,7 @@ std::string validate(const WorldParams& params)
   {
     return "parameter 'gravity' must be finite (m/s^2)";
   }
-  bool known_model = false;
-  for (const ContactModel model : kContactModels)
-  {
-    known_model = known_model || model == params.model;
-  }
-  if (!known_model)
+  if (!isContactModel(params.model))
   {
     return "parameter 'model' = " + std::to_string(static_cast<int>(params.model)) + " is not one of " +
            contactModelNames();

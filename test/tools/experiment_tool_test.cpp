@@ -123,7 +123,7 @@ TEST(ContactModels, TheCfgAndTheToolsListTheOneListInItsOrder)
   }
   EXPECT_EQ(listed, contactModelNames());
   std::string usage_list;
-  for (ContactModel model : kContactModels)
+  for (ContactModel model : contactModels())
   {
     usage_list += (usage_list.empty() ? "" : "|") + std::string(contactModelName(model));
   }

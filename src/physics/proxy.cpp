@@ -1,0 +1,34 @@
+#include "proxy.h"
+
+#include "bullet_helpers.h"
+
+namespace god_finger
+{
+void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, int index, int body_count, Proxy* proxy)
+{
+  proxy->shape = std::make_unique<btSphereShape>(coupling.proxy_radius);
+  btVector3 inertia(0, 0, 0);
+  proxy->shape->calculateLocalInertia(coupling.proxy_mass, inertia);
+  btRigidBody::btRigidBodyConstructionInfo info(coupling.proxy_mass, nullptr, proxy->shape.get(), inertia);
+  info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), toBullet(proxy->initial));
+  info.m_friction = 1.0;  // Bullet multiplies: the object's coefficient applies
+  proxy->rigid = std::make_unique<btRigidBody>(info);
+  proxy->rigid->setUserIndex(kKindProxy);
+  proxy->rigid->setUserIndex2(index);
+  proxy->rigid->setAngularFactor(0.0);
+  proxy->rigid->setContactStiffnessAndDamping(pad.stiffness, pad.damping);
+  proxy->rigid->setActivationState(DISABLE_DEACTIVATION);
+  proxy->rigid->setFlags(proxy->rigid->getFlags() | BT_DISABLE_WORLD_GRAVITY);
+  // Continuous collision so that a fast hand does not tunnel through thin objects.
+  proxy->rigid->setCcdMotionThreshold(0.5 * coupling.proxy_radius);
+  proxy->rigid->setCcdSweptSphereRadius(0.9 * coupling.proxy_radius);
+  proxy->target = proxy->initial;
+  proxy->previous_target = proxy->initial;
+  proxy->state = InterfaceState();
+  proxy->state.interface_position = proxy->initial;
+  proxy->state.proxy_position = proxy->initial;
+  proxy->reference_tangents.assign(body_count, Eigen::Vector3d::Zero());
+  proxy->warm_starts.assign(body_count, {});
+  proxy->pads.assign(body_count, PadShape());
+}
+}  // namespace god_finger

@@ -1,0 +1,25 @@
+// soft_finger: the single point with Bullet's spinning and rolling friction (SoftFingerParams;
+// Bullet's sequential impulse solver adds spinning friction only when rolling friction is set).
+#include "contact_response.h"
+
+namespace god_finger
+{
+namespace
+{
+class SoftFingerResponse : public ContactResponse
+{
+ public:
+  void configureProxy(const WorldParams& params, btRigidBody* proxy) const override
+  {
+    proxy->setRollingFriction(params.soft_finger.rolling_friction);
+    proxy->setSpinningFriction(params.soft_finger.spinning_friction);
+  }
+  void respond(const AreaContact&, const Proxy&, long, SubGodObjectInjector*) const override {}
+};
+}  // namespace
+
+std::unique_ptr<ContactResponse> makeSoftFingerResponse()
+{
+  return std::make_unique<SoftFingerResponse>();
+}
+}  // namespace god_finger
