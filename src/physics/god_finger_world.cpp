@@ -8,6 +8,7 @@
 #include "god_finger/physics/walk_surface.h"
 #include "proxy.h"
 #include "sub_god_object_injection.h"
+#include "support_pass_solver.h"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -21,45 +22,6 @@ namespace
 {
 // Sub-god-objects closer than this to the contact point (m) duplicate it and are not added.
 constexpr double kCoincident = 1e-7;
-
-// Counts the contact points the solver receives.
-class CountingSolver : public btSequentialImpulseConstraintSolver
-{
- public:
-  btScalar solveGroup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds, int num_manifolds,
-                      btTypedConstraint** constraints, int num_constraints, const btContactSolverInfo& info,
-                      btIDebugDraw* debug_draw, btDispatcher* dispatcher) override
-  {
-    for (int i = 0; i < num_manifolds; ++i)
-    {
-      points_ += manifolds[i]->getNumContacts();
-      if (manifolds[i]->getBody0()->getUserIndex() == kKindProxy ||
-          manifolds[i]->getBody1()->getUserIndex() == kKindProxy)
-      {
-        proxy_points_ += manifolds[i]->getNumContacts();
-      }
-    }
-    return btSequentialImpulseConstraintSolver::solveGroup(bodies, num_bodies, manifolds, num_manifolds, constraints,
-                                                           num_constraints, info, debug_draw, dispatcher);
-  }
-  void resetCounts()
-  {
-    points_ = 0;
-    proxy_points_ = 0;
-  }
-  int points() const
-  {
-    return points_;
-  }
-  int proxyPoints() const
-  {
-    return proxy_points_;
-  }
-
- private:
-  int points_ = 0;
-  int proxy_points_ = 0;
-};
 
 // Runs a hook between collision detection and the solver: where sub-god-objects join.
 class HookedWorld : public btDiscreteDynamicsWorld
@@ -100,7 +62,7 @@ struct GodFingerWorld::Impl
   std::unique_ptr<btDefaultCollisionConfiguration> configuration;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btDbvtBroadphase> broadphase;
-  std::unique_ptr<CountingSolver> solver;
+  std::unique_ptr<SupportPassSolver> solver;
   std::unique_ptr<HookedWorld> world;
   std::unique_ptr<SubGodObjectInjector> injector;
   // Every model's response, made once; `response` is the current model's (a model change
@@ -162,7 +124,7 @@ struct GodFingerWorld::Impl
     configuration = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
     broadphase = std::make_unique<btDbvtBroadphase>();
-    solver = std::make_unique<CountingSolver>();
+    solver = std::make_unique<SupportPassSolver>(params.support_passes);
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
     world->setGravity(toBullet(params.gravity));
     world->getSolverInfo().m_numIterations = params.solver_iterations;

@@ -19,6 +19,9 @@ const ParameterTable<WorldParams>& worldParameterTable()
         integerRow<P>("solver_iterations", closed(1, 1000),
                       "sequential-impulse iterations per step (a pinch creeps with too few)",
                       [](P& p) -> int& { return p.solver_iterations; }),
+        integerRow<P>("support_passes", closed(0, 100),
+                      "passes after them that hold a pressed object on its static support (light objects sink without)",
+                      [](P& p) -> int& { return p.support_passes; }),
     };
     const ParameterTable<P> contact =
         liftRows<P, ContactParams>(contactParameterTable(), [](P& p) -> ContactParams& { return p.contact; });

@@ -179,12 +179,11 @@ TEST(HardCases, ObjectsAThousandTimesHeavierAndLighterThanTheProxy)
   // A 5 cm box of ratio x the proxy's 20 g on the table, pressed 5 mm (2 N) from the top, then
   // dragged 3 cm along x at 3 cm/s.
   //
-  // Known limit, measured here and in bench/REPORT.md: Bullet's sequential impulses transfer
-  // about one object-mass of momentum per iteration through a proxy -> light object -> table
-  // stack, so an object much lighter than the proxy sinks into the table while pressed: 0.14
-  // mm at 1/10, 3.4 mm at 1/100, 7.4 mm at 1/1000 (god-object: 15 mm), and pops back up when
-  // released. It is not tunnelling (the box stays above the table's midplane) and its energy
-  // stays far below what the hand put in; the 2 mm penetration tolerance holds down to 1/10.
+  // Bullet's sequential impulses transfer about one object-mass of momentum per iteration
+  // through a proxy -> light object -> table stack: without the support passes
+  // (WorldParams::support_passes = 0, src/physics/support_pass_solver.h) an object much lighter
+  // than the proxy sank into the table while pressed: 0.14 mm at 1/10, 1.8 mm at 1/100, 7.2 mm
+  // at 1/1000. With them it rests within 0.2 mm down to 1/1000, and is still dragged along.
   const double proxy_mass = fingerParams().coupling.proxy_mass;
   for (double ratio : {1000.0, 0.1, 0.01, 0.001})
   {
@@ -215,10 +214,12 @@ TEST(HardCases, ObjectsAThousandTimesHeavierAndLighterThanTheProxy)
     // Never through the table: the centre stays above the table's top by more than a quarter
     // of the box.
     EXPECT_GT(lowest_centre, 0.25 * 0.05);
-    if (ratio >= 0.1)
-    {
-      EXPECT_LT(record.deepest, 2e-3);
-    }
+    EXPECT_LT(record.deepest, 2e-3);
+    // The hand drags along +x: the box never goes the other way (without the support passes the
+    // 1/1000 box ended 2.9 cm behind its start). Known limit: a light box follows the hand only
+    // about half of the 3 cm (friction in the stack converges as slowly as the normal did).
+    std::printf("[ mass ratio %g ] ends %.4f m along x\n", ratio, world.bodyState(1).center_of_mass.x());
+    EXPECT_GT(world.bodyState(1).center_of_mass.x(), -1e-3);
   }
 }
 
