@@ -33,7 +33,7 @@ TEST(NodeErrors, PhysicsNode)
   expectFails(node, "__name:=p4 _scene:=" + kData + "/missing_mesh.urdf",
               "link 'widget': mesh 'meshes/not_here.stl' not found");
   expectFails(node, "__name:=p5 _scene:=" + kScene + " _r_max:=-0.01",
-              "parameter 'r_max' = -0.01 is out of range (0, 1000] (m)");
+              "parameter '/p5/r_max' = -0.01 is out of range (0, 1000] (m)");
   expectFails(node, "__name:=p6 _scene:=" + kScene + " _rate:=5",
               "parameter '/p6/rate' = 5 is out of range [10, 10000] (Hz)");
   expectFails(node, "__name:=p7 _scene:=" + kScene + " _model:=point",

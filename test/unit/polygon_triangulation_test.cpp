@@ -96,6 +96,18 @@ TEST(PolygonTriangulation, ConcaveShapesAreCoveredExactly)
   expectExactCover(comb, "comb");
   // Collinear runs along the edges (a T-junction with neighbouring faces stays a vertex).
   expectExactCover(flat({{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}, {1, 2}, {1, 1}, {0, 1}}), "collinear runs");
+  // A square with a square hole, as files without holes carry it: one polygon whose outer ring
+  // and (clockwise) hole are joined by a bridge walked both ways (its ends repeat).
+  const Polygon keyhole = flat({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 0}, {1, 1}, {1, 3}, {3, 3}, {3, 1}, {1, 1}});
+  EXPECT_DOUBLE_EQ(shoelace(keyhole), 12.0);
+  expectExactCover(keyhole, "square with a hole (keyhole)");
+  std::vector<std::array<int, 3>> triangles;
+  ASSERT_EQ(triangulatePolygon(keyhole, &triangles), "");
+  for (const auto& t : triangles)
+  {
+    const Eigen::Vector3d centre = (keyhole[t[0]] + keyhole[t[1]] + keyhole[t[2]]) / 3.0;
+    EXPECT_FALSE(centre.x() > 1 && centre.x() < 3 && centre.y() > 1 && centre.y() < 3) << "a triangle in the hole";
+  }
 }
 
 TEST(PolygonTriangulation, RepeatedCornersAndNoAreaAreHandled)
