@@ -151,6 +151,15 @@ void BM_ContactAreaOnly(benchmark::State& state)
         queryAt(sphere_case.locator->closest(sphere_case.probes[k]), sphere_case.mesh, params.distance_constant, k));
   }
   ContactAreaResult area;
+  long crossings = 0;
+  for (int k = 0; k < kContacts; ++k)
+  {
+    computeContactArea(sphere_case.mesh, queries[k], params, &area);
+    for (int s = 0; s < area.count; ++s)
+    {
+      crossings += area.sub_god_objects[s].walk.crossings;
+    }
+  }
   int i = 0;
   for (auto _ : state)
   {
@@ -159,6 +168,8 @@ void BM_ContactAreaOnly(benchmark::State& state)
     i = (i + 1) % kContacts;
   }
   setCounters(state, sphere_case, area.active);
+  // Edges crossed by all walks of one contact area, averaged over the contacts.
+  state.counters["crossings"] = static_cast<double>(crossings) / kContacts;
 }
 
 // Plates of 12 to 708 cells per side: 288 to 1,002,528 triangles (keys are negative).
@@ -194,6 +205,7 @@ BENCHMARK(BM_GodFingerContact)->Apply(meshSizes)->ArgNames({"mesh", "n_sgo", "wa
 BENCHMARK(BM_ContactAreaOnly)->Apply(meshSizes)->ArgNames({"mesh", "n_sgo", "walk"});
 BENCHMARK(BM_GodObjectLocate)->Args({6})->ArgNames({"mesh"});
 BENCHMARK(BM_GodFingerContact)->Apply(subGodObjectCounts)->ArgNames({"mesh", "n_sgo", "walk"});
+BENCHMARK(BM_ContactAreaOnly)->Args({6, 8, 1})->ArgNames({"mesh", "n_sgo", "walk"});
 }  // namespace god_finger
 
 BENCHMARK_MAIN();

@@ -18,27 +18,33 @@ constexpr double kVertexTolerance = 1e-10;
 constexpr int kMaxStalledCrossings = 64;
 
 // Barycentric gradients of a face (1/m), in the face plane: d(lambda_j) = gradient[j] . dp.
+// Read from the mesh's precomputed ones: no division or root per face entered.
 struct FaceGradients
 {
   Eigen::Vector3d gradient[3];
-  double inverse_norm[3];  // 1 / |gradient[j]| = height of the triangle above the edge opposite j
+
+  // |gradient[j]|^2 = 1 / (height of the triangle above the edge opposite j)^2.
+  double squaredNorm(int j) const
+  {
+    return gradient[j].squaredNorm();
+  }
 };
 
 FaceGradients faceGradients(const TriangleMesh& mesh, int face)
 {
   FaceGradients result;
-  const Eigen::Vector3d& n = mesh.normals()[face];
-  const Eigen::Vector3d& a = mesh.corner(face, 0);
-  const Eigen::Vector3d& b = mesh.corner(face, 1);
-  const Eigen::Vector3d& c = mesh.corner(face, 2);
-  const double twice_area = (b - a).cross(c - a).dot(n);
-  const Eigen::Vector3d edges[3] = {c - b, a - c, b - a};  // edge opposite corner j, j+1 -> j+2
-  for (int j = 0; j < 3; ++j)
-  {
-    result.gradient[j] = n.cross(edges[j]) / twice_area;
-    result.inverse_norm[j] = 1.0 / result.gradient[j].norm();
-  }
+  result.gradient[0] = mesh.barycentricGradient(face, 0);
+  result.gradient[1] = mesh.barycentricGradient(face, 1);
+  result.gradient[2] = -result.gradient[0] - result.gradient[1];
   return result;
+}
+
+// True when `rate` = gradient[j] . direction makes coordinate j fall faster than the parallel
+// tolerance: the sine of the angle between the direction and the edge is below
+// -kParallelTolerance (compared squared: no root; the norm only when the coordinate falls).
+bool fallsAcross(const FaceGradients& gradients, int j, double rate)
+{
+  return rate < 0.0 && rate * rate > kParallelTolerance * kParallelTolerance * gradients.squaredNorm(j);
 }
 
 // Carries a unit direction lying in the plane with normal `from` onto the plane with normal
@@ -48,6 +54,11 @@ FaceGradients faceGradients(const TriangleMesh& mesh, int face)
 bool carryDirection(const Eigen::Vector3d& direction, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
                     WalkVariant variant, Eigen::Vector3d* carried)
 {
+  if (from == to)
+  {
+    *carried = direction;  // coplanar faces (a flat region): nothing to carry
+    return true;
+  }
   Eigen::Vector3d result;
   if (variant == WalkVariant::kProject)
   {
@@ -62,6 +73,13 @@ bool carryDirection(const Eigen::Vector3d& direction, const Eigen::Vector3d& fro
     }
     const Eigen::Vector3d w = from.cross(to);
     result = direction * c + w.cross(direction) + w * (w.dot(direction) / (1.0 + c));
+    if (std::abs(direction.dot(from)) < 1e-12)
+    {
+      // A unit direction in the old plane rotates onto a unit direction in the new one: no
+      // projection or renormalisation needed (the rounding stays at 1e-16 per crossing).
+      *carried = result;
+      return true;
+    }
   }
   result -= result.dot(to) * to;
   const double length = result.norm();
@@ -98,7 +116,7 @@ double entryScore(const FaceGradients& gradients, const Eigen::Vector3d& directi
   {
     if (zero_mask[j])
     {
-      score = std::min(score, gradients.gradient[j].dot(direction) * gradients.inverse_norm[j]);
+      score = std::min(score, gradients.gradient[j].dot(direction) / std::sqrt(gradients.squaredNorm(j)));
     }
   }
   return score;
@@ -312,11 +330,14 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
                        double distance, const WalkLimits& limits)
 {
   int face = start.face;
-  Eigen::Vector3d lambda = start.barycentric;
+  // Barycentric coordinates as plain doubles: stores at a runtime index followed by vector
+  // loads of the same bytes (an Eigen vector) stall store forwarding on every crossing.
+  double lambda[3] = {start.barycentric[0], start.barycentric[1], start.barycentric[2]};
+  const auto coordinates = [&lambda]() { return Eigen::Vector3d(lambda[0], lambda[1], lambda[2]); };
   double walked = 0.0;
   int crossings = 0;
   int stalled = 0;
-  if (face < 0 || face >= mesh.triangleCount() || !lambda.allFinite() || !direction.allFinite() ||
+  if (face < 0 || face >= mesh.triangleCount() || !start.barycentric.allFinite() || !direction.allFinite() ||
       !std::isfinite(distance) || distance < 0.0)
   {
     WalkResult invalid;
@@ -326,7 +347,7 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
   Eigen::Vector3d r = direction - direction.dot(mesh.normals()[face]) * mesh.normals()[face];
   if (!(r.norm() > 1e-9))
   {
-    return finish(mesh, face, lambda, walked, crossings, WalkStop::kDirectionLost);
+    return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kDirectionLost);
   }
   r.normalize();
   double remaining = distance;
@@ -338,24 +359,29 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
   {
     double rate[3];
     int exit_index = -1;
-    double exit_t = std::numeric_limits<double>::infinity();
+    // The first coordinate to reach zero: the smallest lambda_j / -rate_j, compared as
+    // cross products so that only the winner is divided.
+    double exit_numerator = 1.0;
+    double exit_denominator = 0.0;
     for (int j = 0; j < 3; ++j)
     {
       rate[j] = gradients.gradient[j].dot(r);
       // Only coordinates that decrease faster than the parallel tolerance can reach zero.
-      if (rate[j] * gradients.inverse_norm[j] < -kParallelTolerance)
+      if (fallsAcross(gradients, j, rate[j]))
       {
-        const double t = std::max(lambda[j], 0.0) / -rate[j];
-        if (t < exit_t)
+        const double numerator = std::max(lambda[j], 0.0);
+        if (exit_index < 0 || numerator * exit_denominator < exit_numerator * -rate[j])
         {
-          exit_t = t;
+          exit_numerator = numerator;
+          exit_denominator = -rate[j];
           exit_index = j;
         }
       }
     }
+    const double exit_t = exit_index < 0 ? std::numeric_limits<double>::infinity() : exit_numerator / exit_denominator;
     if (exit_index < 0)
     {
-      return finish(mesh, face, lambda, walked, crossings, WalkStop::kDirectionLost);
+      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kDirectionLost);
     }
     if (exit_t >= remaining)
     {
@@ -363,26 +389,32 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
       {
         lambda[j] += remaining * rate[j];
       }
-      return finish(mesh, face, lambda.cwiseMax(0.0) / lambda.cwiseMax(0.0).sum(), walked + remaining, crossings,
-                    WalkStop::kDistanceReached);
+      const Eigen::Vector3d reached = coordinates().cwiseMax(0.0);
+      return finish(mesh, face, reached / reached.sum(), walked + remaining, crossings, WalkStop::kDistanceReached);
     }
 
     // Move onto the exit edge.
-    for (int j = 0; j < 3; ++j)
     {
-      lambda[j] += exit_t * rate[j];
+      const double l0 = exit_index == 0 ? 0.0 : std::max(lambda[0] + exit_t * rate[0], 0.0);
+      const double l1 = exit_index == 1 ? 0.0 : std::max(lambda[1] + exit_t * rate[1], 0.0);
+      const double l2 = exit_index == 2 ? 0.0 : std::max(lambda[2] + exit_t * rate[2], 0.0);
+      const double inverse_sum = 1.0 / (l0 + l1 + l2);
+      lambda[0] = l0 * inverse_sum;
+      lambda[1] = l1 * inverse_sum;
+      lambda[2] = l2 * inverse_sum;
     }
-    lambda[exit_index] = 0.0;
-    lambda = lambda.cwiseMax(0.0);
-    lambda /= lambda.sum();
     walked += exit_t;
     remaining -= exit_t;
-    const double progress =
-        exit_t / std::max({gradients.inverse_norm[0], gradients.inverse_norm[1], gradients.inverse_norm[2]});
-    stalled = progress < 1e-12 ? stalled + 1 : 0;
+    // No progress: a step below 1e-12 of the face's largest height (exit_t * min |gradient|,
+    // squared), looked at only for steps below a nanometre (faces up to a kilometre).
+    const bool no_progress =
+        exit_t < 1e-9 &&
+        exit_t * exit_t * std::min({gradients.squaredNorm(0), gradients.squaredNorm(1), gradients.squaredNorm(2)}) <
+            1e-24;
+    stalled = no_progress ? stalled + 1 : 0;
     if (crossings >= limits.max_crossings || stalled > kMaxStalledCrossings)
     {
-      return finish(mesh, face, lambda, walked, crossings, WalkStop::kCrossingCap);
+      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kCrossingCap);
     }
 
     const int a_local = (exit_index + 1) % 3;
@@ -401,22 +433,25 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
     if (vertex_local >= 0)
     {
       // Through a vertex: into the incident face whose corner wedge holds the direction.
-      lambda = Eigen::Vector3d::Zero();
+      lambda[0] = lambda[1] = lambda[2] = 0.0;
       lambda[vertex_local] = 1.0;
       const int vertex = corners[vertex_local];
       const double weight = 1.0;
       const FaceChoice choice = chooseFaceAround(mesh, &vertex, &weight, 1, r, mesh.normals()[face], face, limits);
       if (choice.face < 0 || choice.score < -kParallelTolerance)
       {
-        return finish(mesh, face, lambda, walked, crossings, WalkStop::kVertexBlocked);
+        return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kVertexBlocked);
       }
       const WalkStop blocked = faceBlocked(mesh.normals()[choice.face], limits);
       if (blocked != WalkStop::kDistanceReached)
       {
-        return finish(mesh, face, lambda, walked, crossings, blocked);
+        return finish(mesh, face, coordinates(), walked, crossings, blocked);
       }
       face = choice.face;
-      lambda = choice.barycentric;
+      for (int j = 0; j < 3; ++j)
+      {
+        lambda[j] = choice.barycentric[j];
+      }
       r = choice.direction;
       gradients = faceGradients(mesh, face);
       ++crossings;
@@ -428,43 +463,46 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
     const int next = mesh.neighbours()[face][edge];
     if (next == TriangleMesh::kBoundaryEdge)
     {
-      return finish(mesh, face, lambda, walked, crossings, WalkStop::kBoundaryEdge);
+      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kBoundaryEdge);
     }
     if (next < 0)
     {
-      return finish(mesh, face, lambda, walked, crossings, WalkStop::kNonManifoldEdge);
+      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kNonManifoldEdge);
     }
     const WalkStop blocked = faceBlocked(mesh.normals()[next], limits);
     if (blocked != WalkStop::kDistanceReached)
     {
-      return finish(mesh, face, lambda, walked, crossings, blocked);
+      return finish(mesh, face, coordinates(), walked, crossings, blocked);
     }
     const int a_next = mesh.localVertex(next, corners[a_local]);
     const int b_next = mesh.localVertex(next, corners[b_local]);
     if (a_next < 0 || b_next < 0)
     {
-      return finish(mesh, face, lambda, walked, crossings, WalkStop::kNonManifoldEdge);
+      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kNonManifoldEdge);
     }
     Eigen::Vector3d carried;
     if (!carryDirection(r, mesh.normals()[face], mesh.normals()[next], limits.variant, &carried))
     {
-      return finish(mesh, face, lambda, walked, crossings, WalkStop::kDirectionLost);
+      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kDirectionLost);
     }
     // The carried direction must enter the new face: its coordinate opposite the shared edge
     // has to grow. The walk left the old face across this edge, so the unfolded direction
     // always does; the projection fails at folds of 90 degrees or more.
     const int opposite_next = 3 - a_next - b_next;
     const FaceGradients next_gradients = faceGradients(mesh, next);
-    if (next_gradients.gradient[opposite_next].dot(carried) * next_gradients.inverse_norm[opposite_next] <=
-        kParallelTolerance)
+    const double entering = next_gradients.gradient[opposite_next].dot(carried);
+    if (entering <= 0.0 ||
+        entering * entering <= kParallelTolerance * kParallelTolerance * next_gradients.squaredNorm(opposite_next))
     {
-      return finish(mesh, face, lambda, walked, crossings, WalkStop::kDirectionLost);
+      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kDirectionLost);
     }
-    Eigen::Vector3d next_lambda = Eigen::Vector3d::Zero();
-    next_lambda[a_next] = lambda[a_local];
-    next_lambda[b_next] = lambda[b_local];
+    const double on_a = lambda[a_local];
+    const double on_b = lambda[b_local];
     face = next;
-    lambda = next_lambda;
+    for (int j = 0; j < 3; ++j)
+    {
+      lambda[j] = j == a_next ? on_a : (j == b_next ? on_b : 0.0);
+    }
     r = carried;
     gradients = next_gradients;
     ++crossings;

@@ -385,6 +385,18 @@ TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOption
     mesh.normals_[t] =
         (mesh.vertices_[mesh.triangles_[t][1]] - a).cross(mesh.vertices_[mesh.triangles_[t][2]] - a).normalized();
   }
+  mesh.gradients_.resize(n);
+  for (int t = 0; t < n; ++t)
+  {
+    const Eigen::Vector3d& n_t = mesh.normals_[t];
+    const Eigen::Vector3d& a = mesh.corner(t, 0);
+    const Eigen::Vector3d& b = mesh.corner(t, 1);
+    const Eigen::Vector3d& c = mesh.corner(t, 2);
+    const double twice_area = (b - a).cross(c - a).dot(n_t);
+    // The gradient of lambda_j is normal x (edge opposite j, from j+1 to j+2) / (2 area).
+    mesh.gradients_[t].first = n_t.cross(c - b) / twice_area;
+    mesh.gradients_[t].second = n_t.cross(a - c) / twice_area;
+  }
   const int used_vertices = static_cast<int>(mesh.vertices_.size());
   mesh.vertex_face_offsets_.assign(used_vertices + 1, 0);
   for (const Eigen::Vector3i& t : mesh.triangles_)
@@ -414,7 +426,7 @@ std::size_t TriangleMesh::memoryBytes() const
 {
   return vertices_.capacity() * sizeof(Eigen::Vector3d) + triangles_.capacity() * sizeof(Eigen::Vector3i) +
          normals_.capacity() * sizeof(Eigen::Vector3d) + neighbours_.capacity() * sizeof(Eigen::Vector3i) +
-         vertex_face_offsets_.capacity() * sizeof(int) + vertex_faces_.capacity() * sizeof(int) +
-         source_triangle_.capacity() * sizeof(int) + sizeof(*this);
+         gradients_.capacity() * sizeof(BarycentricGradients) + vertex_face_offsets_.capacity() * sizeof(int) +
+         vertex_faces_.capacity() * sizeof(int) + source_triangle_.capacity() * sizeof(int) + sizeof(*this);
 }
 }  // namespace god_finger

@@ -79,6 +79,14 @@ class TriangleMesh
   {
     return neighbours_;
   }
+  // Barycentric gradients of a triangle (1/m, in its plane): d(lambda_j) = gradient(t, j) . dp.
+  // Precomputed for corners 0 and 1 (48 bytes per triangle); corner 2's is minus their sum.
+  // What the surface walk needs per face, so that an edge crossing costs no division or root.
+  Eigen::Vector3d barycentricGradient(int triangle, int local_vertex) const
+  {
+    const BarycentricGradients& g = gradients_[triangle];
+    return local_vertex == 0 ? g.first : (local_vertex == 1 ? g.second : Eigen::Vector3d(-g.first - g.second));
+  }
   int triangleCount() const
   {
     return static_cast<int>(triangles_.size());
@@ -118,7 +126,8 @@ class TriangleMesh
   {
     return bounding_box_diagonal_;
   }
-  // Bytes held by this mesh (vertices, triangles, normals, neighbour and vertex tables).
+  // Bytes held by this mesh (vertices, triangles, normals, gradients, neighbour and vertex
+  // tables).
   std::size_t memoryBytes() const;
 
  private:
@@ -126,6 +135,12 @@ class TriangleMesh
   std::vector<Eigen::Vector3i> triangles_;
   std::vector<Eigen::Vector3d> normals_;
   std::vector<Eigen::Vector3i> neighbours_;
+  struct BarycentricGradients
+  {
+    Eigen::Vector3d first;
+    Eigen::Vector3d second;
+  };
+  std::vector<BarycentricGradients> gradients_;
   std::vector<int> vertex_face_offsets_;
   std::vector<int> vertex_faces_;
   std::vector<int> source_triangle_;
