@@ -452,6 +452,26 @@ void GodFingerWorld::setContactModel(ContactModel model)
   }
 }
 
+void GodFingerWorld::applyBodyWrench(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque)
+{
+  if (body < 0 || body >= bodyCount())
+  {
+    throw InputError("body " + std::to_string(body) + " does not exist (the scene has " + std::to_string(bodyCount()) +
+                     ")");
+  }
+  if (!force.allFinite() || !torque.allFinite())
+  {
+    throw InputError("body wrench must be finite");
+  }
+  if (impl_->scene.bodies[body].is_static)
+  {
+    return;
+  }
+  btRigidBody& rigid = *impl_->bodies[body].rigid;
+  rigid.applyCentralForce(toBullet(force));
+  rigid.applyTorque(toBullet(torque));
+}
+
 ContactModel GodFingerWorld::contactModel() const
 {
   return impl_->params.model;

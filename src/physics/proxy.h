@@ -19,13 +19,19 @@
 
 namespace god_finger
 {
-// The impulses the solver gave one sub-god-object in one step.
+// What one sub-god-object keeps from one step to the next: the impulses the solver gave it (to
+// warm-start the next step) and its friction anchor, the material points of the pad and of the
+// object it held when it began to stick (the friction rows pull them back together, so that a
+// held object does not creep).
 struct WarmStart
 {
-  long step = -1;  // the step the impulses are from
+  long step = -1;  // the step the impulses and the anchor are from
   double normal = 0.0;
   double lateral1 = 0.0;
   double lateral2 = 0.0;
+  double friction = 0.0;                                       // the point's combined friction
+  Eigen::Vector3d anchor_on_proxy = Eigen::Vector3d::Zero();   // m, in the proxy's frame
+  Eigen::Vector3d anchor_on_object = Eigen::Vector3d::Zero();  // m, in the object's (centre of mass) frame
 };
 
 // The pad: the shape the finger took when a contact began. It moves with the proxy and never

@@ -3,6 +3,8 @@
 #include "bullet_helpers.h"
 #include "god_finger/core/sub_god_object_distance.h"
 
+#include <cmath>
+
 namespace god_finger
 {
 void SubGodObjectInjector::inject(const AreaContact& c, const Proxy& proxy, long step)
@@ -22,8 +24,33 @@ void SubGodObjectInjector::inject(const AreaContact& c, const Proxy& proxy, long
     // point is offset along the normal by the distance.
     const double distance = tiltCorrectedDistance(contact.getDistance(), c.normal_world, c.object_to_pad,
                                                   c.area->positions[i] - c.point_world);
-    const btVector3 on_object = toBullet(c.area->positions[i]);
-    const btVector3 on_proxy = on_object + toBullet(c.normal_world) * distance;
+    const btVector3 fresh_on_object = toBullet(c.area->positions[i]);
+    const btVector3 fresh_on_proxy = fresh_on_object + toBullet(c.normal_world) * distance;
+    const btCollisionObject* proxy_object = c.proxy_is_a ? a : b;
+    const btCollisionObject* object = c.proxy_is_a ? b : a;
+    // The friction anchor: the pad's and the object's material points where this
+    // sub-god-object began to stick, kept while it sticks; it starts again where the
+    // sub-god-object is now when it is new, slipped in the last step (friction at its cone) or
+    // lies away from where its anchor drifted (the area moved on).
+    const int sgo_index = c.radial_index[i];
+    const WarmStart& warm = proxy.warm_starts[c.body_index][sgo_index];
+    btVector3 on_object = fresh_on_object;
+    btVector3 on_proxy = fresh_on_proxy;
+    if (warm.step == step - 1)
+    {
+      const btVector3 anchored_object = object->getWorldTransform() * toBullet(warm.anchor_on_object);
+      const btVector3 anchored_proxy = proxy_object->getWorldTransform() * toBullet(warm.anchor_on_proxy);
+      // Slipped: a friction row at its bound (Bullet bounds each direction by mu times the
+      // normal impulse).
+      const double bound = 0.999 * warm.friction * warm.normal;
+      const bool slipped = std::abs(warm.lateral1) >= bound || std::abs(warm.lateral2) >= bound;
+      const bool moved_on = (anchored_object - fresh_on_object).length() > 0.25 * c.area->radius;
+      if (!slipped && !moved_on)
+      {
+        on_object = anchored_object;
+        on_proxy = anchored_proxy;
+      }
+    }
     const btVector3 on_a = c.proxy_is_a ? on_proxy : on_object;
     const btVector3 on_b = c.proxy_is_a ? on_object : on_proxy;
     btManifoldPoint point(a->getWorldTransform().invXform(on_a), b->getWorldTransform().invXform(on_b),
@@ -34,14 +61,14 @@ void SubGodObjectInjector::inject(const AreaContact& c, const Proxy& proxy, long
     point.m_combinedRestitution = contact.m_combinedRestitution;
     point.m_combinedRollingFriction = contact.m_combinedRollingFriction;
     point.m_combinedSpinningFriction = contact.m_combinedSpinningFriction;
-    // The pad's compliance (see FingerPadParams), as on the true contact.
-    point.m_contactPointFlags = contact.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING;
+    // The pad's compliance (see FingerPadParams), as on the true contact, and the anchor: the
+    // friction rows also correct the tangential drift between the anchored points.
+    point.m_contactPointFlags =
+        (contact.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING) | BT_CONTACT_FLAG_FRICTION_ANCHOR;
     point.m_combinedContactStiffness1 = contact.m_combinedContactStiffness1;
     point.m_combinedContactDamping1 = contact.m_combinedContactDamping1;
     // Warm start from the same sub-god-object's impulses of the previous step, if it was
     // there (without it the solver's 30 iterations leave a slow creep, see README).
-    const int sgo_index = c.radial_index[i];
-    const WarmStart& warm = proxy.warm_starts[c.body_index][sgo_index];
     if (warm.step == step - 1)
     {
       point.m_appliedImpulse = warm.normal;
@@ -49,7 +76,11 @@ void SubGodObjectInjector::inject(const AreaContact& c, const Proxy& proxy, long
       point.m_appliedImpulseLateral2 = warm.lateral2;
     }
     const int slot = target->addManifoldPoint(point);
-    points_.push_back({target, slot, c.proxy_index, c.body_index, sgo_index});
+    // The anchor as material points, in each body's frame at this step (before the solver moves
+    // them): what the next step places back in the world.
+    points_.push_back({target, slot, c.proxy_index, c.body_index, sgo_index,
+                       toEigen(proxy_object->getWorldTransform().invXform(on_proxy)),
+                       toEigen(object->getWorldTransform().invXform(on_object))});
   }
 }
 
@@ -63,6 +94,9 @@ void SubGodObjectInjector::recordImpulses(std::vector<Proxy>* proxies, long step
     warm.normal = point.m_appliedImpulse;
     warm.lateral1 = point.m_appliedImpulseLateral1;
     warm.lateral2 = point.m_appliedImpulseLateral2;
+    warm.friction = point.m_combinedFriction;
+    warm.anchor_on_proxy = record.anchor_on_proxy;
+    warm.anchor_on_object = record.anchor_on_object;
   }
 }
 

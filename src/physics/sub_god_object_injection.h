@@ -58,6 +58,8 @@ class SubGodObjectInjector
     int proxy = 0;
     int body = 0;
     int sub_god_object = 0;
+    Eigen::Vector3d anchor_on_proxy;   // m, proxy frame
+    Eigen::Vector3d anchor_on_object;  // m, object frame
   };
   btCollisionDispatcher* dispatcher_;
   std::vector<btPersistentManifold*> manifolds_;

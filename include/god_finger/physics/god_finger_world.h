@@ -91,6 +91,10 @@ class GodFingerWorld
   // The device's position in the world for the next step; non-finite values are ignored
   // (and counted), the previous target stays.
   void setInterfaceTarget(int interface, const Eigen::Vector3d& position);
+  // An external force (N, world, at the centre of mass) and torque (N m, world) on a dynamic
+  // body during the next step only (a disturbance, a test's load). Ignored for static bodies;
+  // InputError for a bad index or non-finite values.
+  void applyBodyWrench(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque);
   void step();
   // Back to the scene's initial state, proxies where they started, time 0 (a reset run repeats
   // the first one bit for bit).
