@@ -40,6 +40,17 @@ Eigen::Vector3d WaypointPath::at(double time) const
       const Waypoint& a = waypoints_[i - 1];
       const Waypoint& b = waypoints_[i];
       const double s = (time - a.time) / (b.time - a.time);
+      // At a waypoint up to rounding (a recorded track replayed on the same ticks): the
+      // waypoint itself, bit for bit, not an interpolation 1e-16 off it.
+      constexpr double kAtWaypoint = 1e-9;
+      if (s < kAtWaypoint)
+      {
+        return a.position;
+      }
+      if (s > 1.0 - kAtWaypoint)
+      {
+        return b.position;
+      }
       return a.position + s * (b.position - a.position);
     }
   }

@@ -21,6 +21,7 @@ class WaypointPath
   WaypointPath() = default;
   // Throws InputError if the list is empty, a value is not finite or times do not increase.
   explicit WaypointPath(std::vector<Waypoint> waypoints);
+  // Within 1e-9 of a segment from a waypoint (rounding), the waypoint itself, bit for bit.
   Eigen::Vector3d at(double time) const;
   double endTime() const;
   const std::vector<Waypoint>& waypoints() const
