@@ -7,18 +7,27 @@
 
 namespace god_finger
 {
+const ParameterTable<WorkspaceMappingParams>& workspaceMappingParameterTable()
+{
+  using P = WorkspaceMappingParams;
+  static const ParameterTable<P> table = {
+      realRow<P>("workspace_scale", "dimensionless", openClosed(0.0, 1e3), "world metres per device metre",
+                 [](P& p) -> double& { return p.scale; }),
+      realRow<P>("force_scale", "dimensionless", openClosed(0.0, 1e3), "device newtons per world newton",
+                 [](P& p) -> double& { return p.force_scale; }),
+  };
+  return table;
+}
+
 std::string validate(const WorkspaceMappingParams& params)
 {
   std::ostringstream message;
-  if (!(params.scale > 0.0 && params.scale <= 1e3))
+  const std::string row_error = validateRows(workspaceMappingParameterTable(), params);
+  if (!row_error.empty())
   {
-    message << "parameter 'workspace_scale' = " << params.scale << " is out of range (0, 1000] (dimensionless)";
+    return row_error;
   }
-  else if (!(params.force_scale > 0.0 && params.force_scale <= 1e3))
-  {
-    message << "parameter 'force_scale' = " << params.force_scale << " is out of range (0, 1000] (dimensionless)";
-  }
-  else if (!params.offset.allFinite())
+  if (!params.offset.allFinite())
   {
     message << "parameter 'workspace_offset' must be finite (m)";
   }

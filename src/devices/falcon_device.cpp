@@ -4,14 +4,27 @@
 
 namespace god_finger
 {
+const ParameterTable<FalconParams>& falconParameterTable()
+{
+  using P = FalconParams;
+  static const ParameterTable<P> table = {
+      integerRow<P>("index", closed(0, 15), "which Falcon (libnifalcon's device index)",
+                    [](P& p) -> int& { return p.index; }),
+      integerRow<P>("firmware_attempts", closed(1, 100), "firmware loads tried (loading fails now and then over USB)",
+                    [](P& p) -> int& { return p.firmware_attempts; }),
+      realRow<P>("homing_timeout", "s", openClosed(0.0, 600.0), "time the user has to home the Falcon",
+                 [](P& p) -> double& { return p.homing_timeout; }),
+      realRow<P>("center_z", "m", closed(0.0, 0.3), "Falcon z of the workspace centre",
+                 [](P& p) -> double& { return p.center_z; }),
+  };
+  return table;
+}
+
 FalconParams readFalconParams(const ParameterSource& source, double max_force)
 {
   FalconParams params;
-  params.index = readInt(source, "index", params.index, 0, 15);
-  params.firmware_attempts = readInt(source, "firmware_attempts", params.firmware_attempts, 1, 100);
-  params.homing_timeout = readDouble(source, "homing_timeout", params.homing_timeout, 0.0, 600.0, "s", true);
+  readRows(source, falconParameterTable(), &params);
   params.max_force = std::min(max_force, params.max_force);
-  params.center_z = readDouble(source, "center_z", params.center_z, 0.0, 0.3, "m");
   return params;
 }
 

@@ -5,12 +5,21 @@
 
 namespace god_finger
 {
+const ParameterTable<OmniParams>& omniParameterTable()
+{
+  using P = OmniParams;
+  static const ParameterTable<P> table = {
+      realRow<P>("calibration_timeout", "s", openClosed(0.0, 600.0), "time to put the stylus in the inkwell",
+                 [](P& p) -> double& { return p.calibration_timeout; }),
+  };
+  return table;
+}
+
 OmniParams readOmniParams(const ParameterSource& source, double max_force)
 {
   OmniParams params;
   params.device_name = readString(source, "device_name", params.device_name);
-  params.calibration_timeout =
-      readDouble(source, "calibration_timeout", params.calibration_timeout, 0.0, 600.0, "s", true);
+  readRows(source, omniParameterTable(), &params);
   params.max_force = max_force;
   const Eigen::VectorXd center = readVector(source, "center_mm", Eigen::Vector3d::Zero());
   params.center_mm = {center[0], center[1], center[2]};

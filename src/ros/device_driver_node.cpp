@@ -1,4 +1,5 @@
 #include "god_finger/ros/device_driver_node.h"
+#include "god_finger/ros/node_parameters.h"
 
 #include "god_finger/DeviceState.h"
 #include "god_finger/core/force_guard.h"
@@ -179,10 +180,11 @@ struct DeviceDriverNode::Impl
 DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
 {
   Impl& impl = *impl_;
-  impl.period = 1.0 / readDouble(pnh, "rate", 1000.0, 10.0, 10000.0, "Hz");
-  // SCHED_FIFO priority of the servo loop (0: normal scheduling). It sleeps every tick, so it
-  // never holds a core.
-  impl.realtime_priority = readInt(pnh, "realtime_priority", 80, 0, 99);
+  // The loop's timing rows (servoLoopParameterTable()): SCHED_FIFO priority 0 is normal
+  // scheduling; the loop sleeps every tick, so it never holds a core.
+  const ServoLoopParams timing = readLoopParams(pnh);
+  impl.period = 1.0 / timing.rate;
+  impl.realtime_priority = timing.realtime_priority;
   // The interface's namespace holds its device, profile and mapping (interface_parameters.h).
   const RosParameterSource private_params(pnh);
   const RosParameterSource interface_params(nh);

@@ -1,4 +1,5 @@
 #include "god_finger/ros/hand_marker.h"
+#include "god_finger/ros/node_parameters.h"
 
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/ros/parameters.h"
@@ -63,7 +64,7 @@ std::unique_ptr<interactive_markers::InteractiveMarkerServer> makeHandMarker(
 
 double sharedScriptStart(const ros::NodeHandle& pnh, double clock_now)
 {
-  const double delay = readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s");
+  const double delay = readNodeParams(pnh).script_delay;
   std::string epoch_text;
   double epoch = 0.0;
   if (ros::param::get("/god_finger_script_epoch", epoch_text) &&

@@ -1,4 +1,5 @@
 #include "god_finger/ros/haptic_node.h"
+#include "god_finger/ros/node_parameters.h"
 
 #include "god_finger/DeviceState.h"
 #include "god_finger/SetContactModel.h"
@@ -57,7 +58,7 @@ struct HapticNode::Impl
   ros::SteadyTime proxy_received;  // when the last proxy position came
   // s: older than this, the proxy is stale (the physics is gone); long enough that a loaded
   // machine delaying the proxy topic (tens of ms) does not cut the spring.
-  double proxy_timeout = 0.25;
+  double proxy_timeout = NodeParams().proxy_timeout;
   bool have_proxy = false;
   std::uint32_t buttons = 0;
   int pending_model_switch = 0;
@@ -265,7 +266,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   // Across processes or machines the hand's spring is rendered here, from the freshest device
   // position, so that no topic latency sits between the hand and its spring.
   impl.local_coupling = readBool(pnh, "local_coupling", true);
-  impl.proxy_timeout = readDouble(pnh, "proxy_timeout", impl.proxy_timeout, 0.0, 10.0, "s", true);
+  impl.proxy_timeout = readNodeParams(pnh).proxy_timeout;
   const std::string model_name = readString(pnh, "model", contactModelName(impl.model));
   if (!parseContactModel(model_name, &impl.model))
   {

@@ -1,4 +1,5 @@
 #include "god_finger/ros/physics_node.h"
+#include "god_finger/ros/node_parameters.h"
 
 #include "god_finger/ContactAreaArray.h"
 #include "god_finger/GodFingerConfig.h"
@@ -329,7 +330,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   impl.nh = nh;
   impl.pnh = pnh;
   const WorldParams params = readWorldParams(pnh);
-  impl.publish_period = 1.0 / readDouble(pnh, "publish_rate", 60.0, 1.0, 1000.0, "Hz");
+  impl.publish_period = 1.0 / readNodeParams(pnh).publish_rate;
   std::string scene_path;
   impl.world = std::make_unique<GodFingerWorld>(loadSceneParameter(pnh, &scene_path), params);
   const std::vector<std::string> names = readStringList(pnh, "interfaces", {"finger"});

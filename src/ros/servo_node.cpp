@@ -1,4 +1,5 @@
 #include "god_finger/ros/servo_node.h"
+#include "god_finger/ros/node_parameters.h"
 
 #include "god_finger/DeviceState.h"
 #include "god_finger/SetContactModel.h"
@@ -372,7 +373,7 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   // subscribers.
   // Meanwhile /clock says 1 ns: valid for those (rosbag record) that wait for a clock before
   // they subscribe.
-  const int wait_for = readInt(pnh, "wait_for_subscribers", 0, 0, 100);
+  const int wait_for = readNodeParams(pnh).wait_for_subscribers;
   const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(10.0);
   while (impl.sim_time && wait_for > 0 && ros::ok() && ros::WallTime::now() < give_up &&
          std::any_of(impl.interfaces.begin(), impl.interfaces.end(),

@@ -6,6 +6,7 @@
 #include "god_finger/ros/bag_track.h"
 #include "god_finger/ros/hand_marker.h"
 #include "god_finger/ros/interface_parameters.h"
+#include "god_finger/ros/node_parameters.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/scene_parameter.h"
 
@@ -17,23 +18,19 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
 {
   ServoSetup setup;
   const WorldParams world_params = readWorldParams(pnh);
-  ServoLoopParams loop_params;
-  loop_params.rate = 1.0 / world_params.time_step;
-  loop_params.realtime_priority = readInt(pnh, "realtime_priority", loop_params.realtime_priority, 0, 99);
+  ServoLoopParams loop_params = readLoopParams(pnh);
+  const NodeParams node_params = readNodeParams(pnh);
   bool use_sim_time = false;
   ros::param::get("/use_sim_time", use_sim_time);
   const bool sim_time = readBool(pnh, "sim_time", use_sim_time);
   loop_params.simulated_time = sim_time;
-  loop_params.real_time_factor = readDouble(pnh, "real_time_factor", 1.0, 0.0, 1000.0, "dimensionless");
-  const double publish_rate = readDouble(pnh, "publish_rate", 60.0, 1.0, 1000.0, "Hz");
-  loop_params.snapshot_every = std::max(1, static_cast<int>(std::lround(loop_params.rate / publish_rate)));
+  loop_params.snapshot_every = std::max(1, static_cast<int>(std::lround(loop_params.rate / node_params.publish_rate)));
   std::string scene_path;
   auto world = std::make_unique<GodFingerWorld>(loadSceneParameter(pnh, &scene_path), world_params);
   setup.names = readStringList(pnh, "interfaces", {"finger"});
   // Simulated devices start their scripts together: on simulated time script_delay after 0,
   // on the wall clock script_delay after the launch's epoch (the loop's clock starts now).
-  const double script_start =
-      sim_time ? readDouble(pnh, "script_delay", 2.0, 0.0, 60.0, "s") : sharedScriptStart(pnh, 0.0);
+  const double script_start = sim_time ? node_params.script_delay : sharedScriptStart(pnh, 0.0);
   std::vector<ServoInterface> servo_interfaces;
   for (std::size_t i = 0; i < setup.names.size(); ++i)
   {

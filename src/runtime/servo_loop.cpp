@@ -8,31 +8,31 @@
 
 namespace god_finger
 {
+const ParameterTable<ServoLoopParams>& servoLoopParameterTable()
+{
+  using P = ServoLoopParams;
+  static const ParameterTable<P> table = {
+      realRow<P>("rate", "Hz", closed(10.0, 10000.0),
+                 "the servo loop's (and the device's) rate; the world steps at 1 / rate",
+                 [](P& p) -> double& { return p.rate; }),
+      integerRow<P>("realtime_priority", closed(0, 99),
+                    "SCHED_FIFO priority of the loop's thread, 0 for normal scheduling",
+                    [](P& p) -> int& { return p.realtime_priority; }),
+      realRow<P>("real_time_factor", "dimensionless", closed(0.0, 1000.0),
+                 "simulated time only: simulated seconds per wall second, 0 as fast as it goes",
+                 [](P& p) -> double& { return p.real_time_factor; }),
+      integerRow<P>("snapshot_every", closed(1, 1000000),
+                    "ticks between world snapshots for the publishers (the servo node sets it from publish_rate)",
+                    [](P& p) -> int& { return p.snapshot_every; }),
+      integerRow<P>("queue_ticks", closed(16, 1000000), "ticks of samples the publishers may lag behind",
+                    [](P& p) -> int& { return p.queue_ticks; }),
+  };
+  return table;
+}
+
 std::string validate(const ServoLoopParams& params)
 {
-  std::ostringstream message;
-  if (!(params.rate >= 10.0 && params.rate <= 10000.0))
-  {
-    message << "parameter 'rate' = " << params.rate << " is out of range [10, 10000] (Hz)";
-  }
-  else if (params.realtime_priority < 0 || params.realtime_priority > 99)
-  {
-    message << "parameter 'realtime_priority' = " << params.realtime_priority << " is out of range [0, 99] (count)";
-  }
-  else if (!(params.real_time_factor >= 0.0 && params.real_time_factor <= 1000.0))
-  {
-    message << "parameter 'real_time_factor' = " << params.real_time_factor
-            << " is out of range [0, 1000] (dimensionless)";
-  }
-  else if (params.snapshot_every < 1 || params.snapshot_every > 1000000)
-  {
-    message << "parameter 'snapshot_every' = " << params.snapshot_every << " is out of range [1, 1e+06] (count)";
-  }
-  else if (params.queue_ticks < 16 || params.queue_ticks > 1000000)
-  {
-    message << "parameter 'queue_ticks' = " << params.queue_ticks << " is out of range [16, 1e+06] (count)";
-  }
-  return message.str();
+  return validateRows(servoLoopParameterTable(), params);
 }
 
 namespace

@@ -4,6 +4,8 @@
 #include "god_finger/core/device_profile.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/fake_device.h"
+#include "god_finger/devices/falcon_device.h"
+#include "god_finger/devices/omni_device.h"
 
 #include <gtest/gtest.h>
 
@@ -51,13 +53,20 @@ TEST(DeviceProfiles, ShippedDeviceProfilesSetOnlyRowsOfTheProfileTable)
   EXPECT_EQ(files, 3);
 }
 
-TEST(DeviceProfiles, TheReadmeShowsTheFakeDeviceTableAsGenerated)
+TEST(DeviceProfiles, TheReadmeShowsTheBackendTablesAsGenerated)
 {
   std::ifstream in(std::string(GOD_FINGER_SOURCE_DIR) + "/README.md");
   std::stringstream readme;
   readme << in.rdbuf();
-  const std::string table = markdownTable(fakeDeviceParameterTable());
-  EXPECT_NE(readme.str().find(table), std::string::npos) << "README.md lacks the fake device's table:\n" << table;
+  const std::pair<const char*, std::string> tables[] = {
+      {"fake device's", markdownTable(fakeDeviceParameterTable())},
+      {"Falcon's", markdownTable(falconParameterTable())},
+      {"Omni's", markdownTable(omniParameterTable())},
+  };
+  for (const auto& [what, table] : tables)
+  {
+    EXPECT_NE(readme.str().find(table), std::string::npos) << "README.md lacks the " << what << " table:\n" << table;
+  }
 }
 }  // namespace
 }  // namespace god_finger

@@ -7,6 +7,8 @@
 // stiffness at k_world / scale. Invariant: R is a rotation (orthonormal, det +1).
 #pragma once
 
+#include "god_finger/core/parameter_table.h"
+
 #include <Eigen/Geometry>
 #include <string>
 
@@ -14,11 +16,13 @@ namespace god_finger
 {
 struct WorkspaceMappingParams
 {
-  double scale = 1.0;                                            // world metres per device metre, range (0, 1e3]
-  double force_scale = 1.0;                                      // device newtons per world newton, range (0, 1e3]
+  double scale = 1.0;                                            // world metres per device metre
+  double force_scale = 1.0;                                      // device newtons per world newton
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();              // m, world position of the device origin
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();  // device axes in the world
 };
+// workspace_scale, force_scale (offset and rotation are vectors, read as such).
+const ParameterTable<WorkspaceMappingParams>& workspaceMappingParameterTable();
 // Empty on success, else one line naming the bad parameter.
 std::string validate(const WorkspaceMappingParams& params);
 

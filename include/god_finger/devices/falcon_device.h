@@ -13,6 +13,7 @@
 #pragma once
 
 #include "god_finger/core/parameter_source.h"
+#include "god_finger/core/parameter_table.h"
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
 
@@ -45,16 +46,18 @@ class FalconIo
 
 struct FalconParams
 {
-  int index = 0;                 // which Falcon, range [0, 15]
-  int firmware_attempts = 10;    // range [1, 100]: loading fails now and then over USB
-  double homing_timeout = 30.0;  // s, range (0, 600]: time the user has to home it
-  double max_force = 8.9;        // N, range (0, 8.9]: the Falcon's rated peak
-  double center_z = 0.11;        // m, range [0, 0.3]: Falcon z of the workspace centre
+  int index = 0;                 // which Falcon
+  int firmware_attempts = 10;    // loading fails now and then over USB
+  double homing_timeout = 30.0;  // s: time the user has to home it
+  double max_force = 8.9;        // N, (0, 8.9]: the profile's limit, capped at the Falcon's rated peak
+  double center_z = 0.11;        // m: Falcon z of the workspace centre
   int io_failures_allowed = 50;  // consecutive failed USB cycles before giving up
 };
+// index, firmware_attempts, homing_timeout, center_z: units, ranges, meanings.
+const ParameterTable<FalconParams>& falconParameterTable();
 
-// index, firmware_attempts, homing_timeout, center_z from `source` (ranges above); max_force is
-// the profile's limit, capped at the Falcon's rating. InputError on a bad one.
+// The table's rows from `source`; max_force is the profile's limit, capped at the Falcon's
+// rating. InputError on a bad one.
 FalconParams readFalconParams(const ParameterSource& source, double max_force);
 
 class FalconDevice : public HapticDevice

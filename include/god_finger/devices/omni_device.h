@@ -13,6 +13,7 @@
 #pragma once
 
 #include "god_finger/core/parameter_source.h"
+#include "god_finger/core/parameter_table.h"
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
 
@@ -58,10 +59,13 @@ struct OmniParams
 {
   std::string device_name;                         // "" = OpenHaptics' default device
   double max_force = 3.3;                          // N, range (0, 10]: the profile's limit
-  double calibration_timeout = 30.0;               // s, range (0, 600]: time to put the stylus in the inkwell
+  double calibration_timeout = 30.0;               // s: time to put the stylus in the inkwell
   std::array<double, 3> center_mm{0.0, 0.0, 0.0};  // mm, Omni frame: the workspace centre
   int io_failures_allowed = 50;                    // consecutive failed servo frames before giving up
 };
+
+// calibration_timeout (its numeric row; device_name and center_mm are a string and a vector).
+const ParameterTable<OmniParams>& omniParameterTable();
 
 // device_name, calibration_timeout, center_mm ([x, y, z], mm, Omni frame) from `source`;
 // max_force is the profile's limit. InputError on a bad one.

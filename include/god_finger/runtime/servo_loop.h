@@ -29,6 +29,7 @@
 #pragma once
 
 #include "god_finger/core/device_profile.h"
+#include "god_finger/core/parameter_table.h"
 #include "god_finger/core/spsc_queue.h"
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/devices/haptic_device.h"
@@ -54,14 +55,17 @@ struct ServoInterface
 
 struct ServoLoopParams
 {
-  double rate = 1000.0;           // Hz, range [10, 10000]: the device rate; the world's step is 1 / rate
-  int realtime_priority = 80;     // range [0, 99]: SCHED_FIFO priority of the loop thread, 0 for none
+  double rate = 1000.0;           // Hz: the device rate; the world's step is 1 / rate
+  int realtime_priority = 80;     // SCHED_FIFO priority of the loop thread, 0 for none
   bool lock_memory = true;        // mlockall when permitted
   bool simulated_time = false;    // see above
-  double real_time_factor = 1.0;  // range [0, 1000]; simulated time only; 0: as fast as it goes
-  int snapshot_every = 16;        // range [1, 1e6]: ticks between world snapshots (16: ~60 Hz)
-  int queue_ticks = 2000;         // range [16, 1e6]: samples the publishers may lag behind, in ticks
+  double real_time_factor = 1.0;  // simulated time only; 0: as fast as it goes
+  int snapshot_every = 16;        // ticks between world snapshots (16: ~60 Hz)
+  int queue_ticks = 2000;         // samples the publishers may lag behind, in ticks
 };
+// rate, realtime_priority, real_time_factor, snapshot_every, queue_ticks: units, ranges,
+// meanings (the device driver node reads rate and realtime_priority from it too).
+const ParameterTable<ServoLoopParams>& servoLoopParameterTable();
 std::string validate(const ServoLoopParams& params);
 
 // One interface at one tick.

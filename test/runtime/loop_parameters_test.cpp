@@ -1,0 +1,44 @@
+// The servo loop's parameter table (runtime/servo_loop.h): the README shows it as generated,
+// its defaults are valid and each bound is enforced with the parameter named.
+#include "god_finger/core/input_error.h"
+#include "god_finger/runtime/servo_loop.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace god_finger
+{
+namespace
+{
+TEST(LoopParameters, TheReadmeShowsTheTableAsGenerated)
+{
+  std::ifstream in(std::string(GOD_FINGER_SOURCE_DIR) + "/README.md");
+  std::stringstream readme;
+  readme << in.rdbuf();
+  const std::string table = markdownTable(servoLoopParameterTable());
+  EXPECT_NE(readme.str().find(table), std::string::npos) << "README.md lacks the servo loop's table:\n" << table;
+}
+
+TEST(LoopParameters, DefaultsAreValidAndBoundsNamed)
+{
+  EXPECT_EQ(validate(ServoLoopParams{}), "");
+  ServoLoopParams params;
+  params.rate = 5.0;
+  EXPECT_EQ(validate(params), "parameter 'rate' = 5 is out of range [10, 10000] (Hz)");
+  MapParameterSource source("/servo/");
+  source.set("realtime_priority", ParameterValue::ofInteger(120));
+  ServoLoopParams read;
+  try
+  {
+    readRows(source, servoLoopParameterTable(), &read);
+    FAIL() << "accepted";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(), "parameter '/servo/realtime_priority' = 120 is out of range [0, 99] (count)");
+  }
+}
+}  // namespace
+}  // namespace god_finger
