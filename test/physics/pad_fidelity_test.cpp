@@ -4,14 +4,13 @@
 // Measured (this test prints them; mu = 0.8, a from Eq. 1 at N): a point contact (god_object)
 // and Bullet's spinning friction (soft_finger) resist almost nothing (the turn a slow ramp needs
 // is the box's inertia: 3-18 % of the ring's capacity); the god-finger's ring of 8 points plus
-// the centre resists up to 56-104 % of the ring's (8/9) mu N a over a 12 s ramp, and holds still
-// below about a third of it. Known gap: between about 40 % and the ring's capacity it creeps
-// (58-89 mrad in 3 s at 50 %): the friction rows of the ring share one light proxy, which the
-// sequential impulses do not converge on, and rows at their bound let go of their anchors.
+// the centre resists 87-109 % of the ring's (8/9) mu N a over a 12 s ramp, and holds a twist of
+// 70 % of it still (< 0.5 mrad in 3 s). Known gap: at 80-90 % it creeps (0.02-0.28 rad in 3 s).
 #include "god_finger/physics/pad_fidelity.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace god_finger
@@ -50,7 +49,7 @@ TEST(PadFidelity, OnlyTheGodFingerResistsATwist)
       EXPECT_NEAR(m.normal_force, normal_force, 0.1 * normal_force);
       if (model == ContactModel::kGodFinger)
       {
-        EXPECT_GT(m.slip_torque, 0.5 * ring);
+        EXPECT_GT(m.slip_torque, 0.8 * ring);
         EXPECT_LT(m.slip_torque, 1.15 * ring);
       }
       else
@@ -61,20 +60,26 @@ TEST(PadFidelity, OnlyTheGodFingerResistsATwist)
   }
 }
 
-TEST(PadFidelity, AGodFingerHoldsATwistBelowAThirdOfItsCapacityWithoutCreep)
+TEST(PadFidelity, AGodFingerHoldsATwistUpTo70PercentOfItsCapacityWithoutCreep)
 {
   // Before the friction anchors, 17 % of the ring's capacity turned the box 35 mrad in 3 s,
-  // linearly in time and torque.
-  TwistSetup setup;
-  setup.normal_force = 2.0;
-  const TwistMeasurement probe = slowRamp(ContactModel::kGodFinger, 2.0, &setup);
-  const double ring = ringTorque(setup, probe);
-  for (const double fraction : {0.17, 0.3})
+  // linearly in time and torque; with anchors but the points visited around the ring, 50 %
+  // still turned it 58-89 mrad.
+  for (const double normal_force : {0.5, 2.0, 5.0})
   {
-    const TwistMeasurement hold = measureTwistHold(setup, fraction * ring, 3.0);
-    std::printf("[ twist hold %.0f %% of the ring ] turned %.3g rad in 3 s\n", 100 * fraction, hold.rotation);
-    EXPECT_LT(std::abs(hold.rotation), 1e-3) << fraction;
+    TwistSetup setup;
+    setup.normal_force = normal_force;
+    const TwistMeasurement pressed = measureTwistHold(setup, 0.0, 0.01);
+    const double ring = ringTorque(setup, pressed);
+    for (const double fraction : {0.17, 0.5, 0.7})
+    {
+      const TwistMeasurement hold = measureTwistHold(setup, fraction * ring, 3.0);
+      std::printf("[ twist N %.1f, hold %.0f %% of the ring ] turned %.3g rad in 3 s\n", normal_force, 100 * fraction,
+                  hold.rotation);
+      EXPECT_LT(std::abs(hold.rotation), 1e-3) << normal_force << " N, " << fraction;
+    }
   }
 }
+
 }  // namespace
 }  // namespace god_finger
