@@ -23,7 +23,7 @@ class ContactResponse
   virtual void configureProxy(const WorldParams& params, btRigidBody* proxy) const = 0;
   // One contact area, between collision detection and the solver of step `step`: adds
   // whatever the model adds to the solver. Real-time safe once the injector's lists have grown.
-  virtual void respond(const AreaContact& contact, const Proxy& proxy, long step,
+  virtual void respond(const WorldParams& params, const AreaContact& contact, Proxy* proxy, long step,
                        SubGodObjectInjector* injector) const = 0;
 };
 

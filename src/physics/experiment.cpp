@@ -385,6 +385,7 @@ WorldParams scenarioParams(const ExperimentOptions& options)
   WorldParams params;
   params.time_step = options.time_step;
   params.solver_iterations = options.solver_iterations;
+  params.pad_solver = options.pad_solver;
   params.model = options.model;
   return params;
 }

@@ -1,5 +1,5 @@
 // god_finger: the paper's method, the proxy's point plus the sub-god-objects of its contact
-// area (sub_god_object_injection.h).
+// area (sub_god_object_injection.h), as points or as one pad constraint (pad_constraint.h).
 #include "contact_response.h"
 
 namespace god_finger
@@ -14,9 +14,17 @@ class GodFingerResponse : public ContactResponse
     proxy->setRollingFriction(0.0);
     proxy->setSpinningFriction(0.0);
   }
-  void respond(const AreaContact& contact, const Proxy& proxy, long step, SubGodObjectInjector* injector) const override
+  void respond(const WorldParams& params, const AreaContact& contact, Proxy* proxy, long step,
+               SubGodObjectInjector* injector) const override
   {
-    injector->inject(contact, proxy, step);
+    if (params.pad_solver == PadSolver::kConstraint)
+    {
+      injector->injectPad(contact, proxy, step);
+    }
+    else
+    {
+      injector->inject(contact, *proxy, step);
+    }
   }
 };
 }  // namespace

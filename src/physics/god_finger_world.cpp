@@ -134,6 +134,7 @@ struct GodFingerWorld::Impl
     world->getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
     world->after_collision = [this]() { injectContactAreas(); };
     injector = std::make_unique<SubGodObjectInjector>(dispatcher.get());
+    solver->setPadRows(injector->padRows());
     chooseResponse();
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
@@ -226,7 +227,7 @@ struct GodFingerWorld::Impl
     }
   }
 
-  void addContactArea(btPersistentManifold* manifold, const btManifoldPoint& contact, bool proxy_is_a, int proxy_index,
+  void addContactArea(btPersistentManifold* manifold, btManifoldPoint& contact, bool proxy_is_a, int proxy_index,
                       int body_index)
   {
     Proxy& proxy = proxies[proxy_index];
@@ -293,7 +294,7 @@ struct GodFingerWorld::Impl
     area_contact.object_to_pad = object_to_pad;
     area_contact.area = &area;
     area_contact.radial_index = radial_index.data();
-    response->respond(area_contact, proxy, steps, injector.get());
+    response->respond(params, area_contact, &proxy, steps, injector.get());
   }
 
   void step()

@@ -3,7 +3,6 @@
 #include "god_finger/physics/god_finger_world.h"
 
 #include <cmath>
-#include <functional>
 #include <memory>
 
 namespace god_finger
@@ -13,7 +12,7 @@ namespace
 constexpr double kSettle = 0.5;  // s before any torque
 constexpr double kBoxHeight = 0.02;
 
-SceneDescription twistScene(double friction)
+SceneDescription padScene(PadLoad load, double friction)
 {
   BodyDescription table;
   table.name = "table";
@@ -33,25 +32,35 @@ SceneDescription twistScene(double friction)
   box.pose.translation() = Eigen::Vector3d(0.0, 0.0, 0.5 * kBoxHeight);
   box.material.friction = friction;
   SceneDescription scene;
-  scene.name = "twist";
+  scene.name = load == PadLoad::kTwist ? "twist" : "tilt";
   scene.bodies = {table, box};
+  if (load == PadLoad::kTilt)
+  {
+    scene.bodies = {box};
+  }
   return scene;
 }
 
-double yaw(const BodyState& state)
+// The box's turn about the load's axis (z for a twist, x for a tilt).
+double turn(PadLoad load, const BodyState& state)
 {
   const Eigen::Matrix3d& r = state.pose.linear();
-  return std::atan2(r(1, 0), r(0, 0));
+  return load == PadLoad::kTwist ? std::atan2(r(1, 0), r(0, 0)) : std::atan2(r(2, 1), r(1, 1));
 }
 
-// Builds the world, settles the press, then steps with torque(t) (t from the end of settling)
-// until `stop` returns true or `duration` is over; returns the measurement with the rotation.
-TwistMeasurement run(const TwistSetup& setup, double duration, const std::function<double(double)>& torque,
-                     const std::function<bool(double, double, TwistMeasurement*)>& stop)
+// Builds the world, settles the press, then steps for `duration` (s) with `torque` (N m) held
+// on the box; returns the measurement with the box's turn.
+PadLoadMeasurement run(const PadLoadSetup& setup, double duration, double torque)
 {
   WorldParams params = setup.params;
   params.model = setup.model;
-  GodFingerWorld world(twistScene(setup.friction), params);
+  const bool tilt = setup.load == PadLoad::kTilt;
+  if (tilt)
+  {
+    params.gravity.setZero();
+  }
+  GodFingerWorld world(padScene(setup.load, setup.friction), params);
+  const int box = tilt ? 0 : 1;
   const double radius = params.coupling.proxy_radius;
   const double rest = kBoxHeight + radius;
   const int finger = world.addInterface(Eigen::Vector3d(0.0, 0.0, rest + 0.005));
@@ -62,24 +71,30 @@ TwistMeasurement run(const TwistSetup& setup, double duration, const std::functi
   {
     const double s = std::min(1.0, (i + 1) * dt / (0.6 * kSettle));
     world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, rest + 0.005 * (1.0 - s) - press * s));
+    if (tilt)
+    {
+      world.applyBodyWrench(box, Eigen::Vector3d(0.0, 0.0, s * setup.normal_force), Eigen::Vector3d::Zero());
+    }
     world.step();
   }
-  TwistMeasurement result;
+  PadLoadMeasurement result;
   const InterfaceState& state = world.interfaceState(finger);
   result.normal_force = std::abs(state.user_force.z());
   result.contact_radius = state.contact_count > 0 ? state.contacts[0].radius : 0.0;
-  const double start = yaw(world.bodyState(1));
+  const double start = turn(setup.load, world.bodyState(box));
   const long steps = std::lround(duration / dt);
   for (long i = 0; i < steps; ++i)
   {
-    const double t = i * dt;
-    world.applyBodyWrench(1, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, torque(t)));
-    world.step();
-    result.rotation = yaw(world.bodyState(1)) - start;
-    if (stop(t, torque(t), &result))
+    if (tilt)
     {
-      return result;
+      world.applyBodyWrench(box, Eigen::Vector3d(0.0, 0.0, setup.normal_force), Eigen::Vector3d(torque, 0.0, 0.0));
     }
+    else
+    {
+      world.applyBodyWrench(box, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, torque));
+    }
+    world.step();
+    result.rotation = turn(setup.load, world.bodyState(box)) - start;
   }
   return result;
 }
@@ -95,30 +110,24 @@ double hertzPadTorque(double mu, double normal_force, double radius)
   return 3.0 * M_PI / 16.0 * mu * normal_force * radius;
 }
 
-TwistMeasurement measureTwistSlip(const TwistSetup& setup, double torque_rate, double duration, double slip_angle)
+double padTiltTorque(double normal_force, double radius)
 {
-  bool slipped = false;
-  TwistMeasurement result = run(
-      setup, duration, [torque_rate](double t) { return torque_rate * t; },
-      [&](double, double torque, TwistMeasurement* m)
-      {
-        if (std::abs(m->rotation) >= slip_angle)
-        {
-          m->slip_torque = torque;
-          slipped = true;
-        }
-        return slipped;
-      });
-  if (!slipped)
-  {
-    result.slip_torque = INFINITY;
-  }
-  return result;
+  return normal_force * radius;
 }
 
-TwistMeasurement measureTwistHold(const TwistSetup& setup, double torque, double duration)
+PadLoadMeasurement measurePadHold(const PadLoadSetup& setup, double torque, double duration)
 {
-  return run(
-      setup, duration, [torque](double) { return torque; }, [](double, double, TwistMeasurement*) { return false; });
+  return run(setup, duration, torque);
+}
+double measurePadCapacity(const PadLoadSetup& setup, double upper, double duration, double tolerance, int bisections)
+{
+  double held = 0.0;
+  double turned = upper;
+  for (int i = 0; i < bisections; ++i)
+  {
+    const double torque = 0.5 * (held + turned);
+    (std::abs(measurePadHold(setup, torque, duration).rotation) < tolerance ? held : turned) = torque;
+  }
+  return held;
 }
 }  // namespace god_finger

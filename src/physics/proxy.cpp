@@ -7,8 +7,13 @@ namespace god_finger
 void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, int index, int body_count, Proxy* proxy)
 {
   proxy->shape = std::make_unique<btSphereShape>(coupling.proxy_radius);
-  btVector3 inertia(0, 0, 0);
-  proxy->shape->calculateLocalInertia(coupling.proxy_mass, inertia);
+  // Zero inertia: Bullet's inverse inertia is then zero and the proxy never turns. Locking its
+  // rotation with setAngularFactor(0) alone is not enough: Bullet's torsional and rolling
+  // friction rows take their effective mass from the inverse inertia without the angular factor
+  // (btSequentialImpulseConstraintSolver::setupTorsionalFrictionConstraint), so the 20 g
+  // sphere's tiny inertia made every such row about 1e5 times too weak and soft_finger resisted
+  // no twist at all.
+  const btVector3 inertia(0, 0, 0);
   btRigidBody::btRigidBodyConstructionInfo info(coupling.proxy_mass, nullptr, proxy->shape.get(), inertia);
   info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), toBullet(proxy->initial));
   info.m_friction = 1.0;  // Bullet multiplies: the object's coefficient applies
@@ -30,5 +35,6 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->reference_tangents.assign(body_count, Eigen::Vector3d::Zero());
   proxy->warm_starts.assign(body_count, {});
   proxy->pads.assign(body_count, PadShape());
+  proxy->pad_states.assign(body_count, PadState());
 }
 }  // namespace god_finger

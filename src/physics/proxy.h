@@ -13,6 +13,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <memory>
 #include <vector>
@@ -32,6 +33,18 @@ struct WarmStart
   double friction = 0.0;                                       // the point's combined friction
   Eigen::Vector3d anchor_on_proxy = Eigen::Vector3d::Zero();   // m, in the proxy's frame
   Eigen::Vector3d anchor_on_object = Eigen::Vector3d::Zero();  // m, in the object's (centre of mass) frame
+};
+
+// What the pad constraint of one (proxy, body) pair keeps from one step to the next
+// (pad_constraint.h): its point's impulses and friction anchor, as a sub-god-object's, and its
+// orientation anchor: the object's world orientation when the pad began to stick (the proxy
+// never turns), let go when a torsional row reached its bound (slip).
+struct PadState
+{
+  WarmStart linear;
+  bool twist_slipped = true;
+  Eigen::Quaterniond object_at_anchor = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d torque_impulse = Eigen::Vector3d::Zero();  // N m s on the manifold's body B, world
 };
 
 // The pad: the shape the finger took when a contact began. It moves with the proxy and never
@@ -59,6 +72,7 @@ struct Proxy
   std::vector<std::array<WarmStart, ContactParams::kMaxSubGodObjects>> warm_starts;
   // Per touched body.
   std::vector<PadShape> pads;
+  std::vector<PadState> pad_states;
 
   Eigen::Vector3d position() const
   {

@@ -10,6 +10,7 @@
 // are reused.
 #pragma once
 
+#include "pad_constraint.h"
 #include "proxy.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -23,7 +24,7 @@ namespace god_finger
 struct AreaContact
 {
   btPersistentManifold* manifold = nullptr;  // Bullet's manifold holding the true contact
-  const btManifoldPoint* contact = nullptr;  // the true contact (the deepest point)
+  btManifoldPoint* contact = nullptr;        // the true contact (the deepest point)
   bool proxy_is_a = false;                   // the proxy is the manifold's body 0
   int proxy_index = 0;
   int body_index = 0;
@@ -43,12 +44,21 @@ class SubGodObjectInjector
     release();
   }
   // Adds the area's sub-god-objects as solver points, warm-started from `proxy`'s record of
-  // step `step - 1`.
+  // step `step - 1` (pad_solver: points).
   void inject(const AreaContact& contact, const Proxy& proxy, long step);
-  // After the solver of step `step`: each injected point's impulses into its proxy's record.
-  void recordImpulses(std::vector<Proxy>* proxies, long step) const;
+  // Makes the true contact the pad (pad_constraint.h; pad_solver: constraint), warm-started and
+  // anchored from `proxy`'s record of step `step - 1`.
+  void injectPad(const AreaContact& contact, Proxy* proxy, long step);
+  // After the solver of step `step`: each injected point's impulses into its proxy's record;
+  // the pads' points back to plain contacts.
+  void recordImpulses(std::vector<Proxy>* proxies, long step);
   // Gives the injected manifolds back to the dispatcher.
   void release();
+  // This step's pads, for the solver's torsional rows (support_pass_solver.h).
+  std::vector<PadRows>* padRows()
+  {
+    return &pads_;
+  }
 
  private:
   struct InjectedPoint
@@ -64,5 +74,6 @@ class SubGodObjectInjector
   btCollisionDispatcher* dispatcher_;
   std::vector<btPersistentManifold*> manifolds_;
   std::vector<InjectedPoint> points_;
+  std::vector<PadRows> pads_;
 };
 }  // namespace god_finger

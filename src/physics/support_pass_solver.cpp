@@ -2,6 +2,8 @@
 
 #include "bullet_helpers.h"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace god_finger
@@ -40,6 +42,90 @@ btScalar SupportPassSolver::solveGroup(btCollisionObject** bodies, int num_bodie
   }
   return btSequentialImpulseConstraintSolver::solveGroup(bodies, num_bodies, manifolds, num_manifolds, constraints,
                                                          num_constraints, info, debug_draw, dispatcher);
+}
+
+PadRows* SupportPassSolver::padOf(const btSolverConstraint& row)
+{
+  const btManifoldPoint* point =
+      static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_originalContactPoint);
+  if (pads_ == nullptr || point == nullptr || (point->m_contactPointFlags & kPadPointFlag) == 0)
+  {
+    return nullptr;
+  }
+  const int index = point->m_index0;
+  if (index < 0 || index >= static_cast<int>(pads_->size()) || (*pads_)[index].point != point)
+  {
+    return nullptr;
+  }
+  return &(*pads_)[index];
+}
+
+void SupportPassSolver::convertContacts(btPersistentManifold** manifolds, int num_manifolds,
+                                        const btContactSolverInfo& info)
+{
+  btSequentialImpulseConstraintSolver::convertContacts(manifolds, num_manifolds, info);
+  for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j)
+  {
+    btSolverConstraint& row = m_tmpSolverContactRollingFrictionConstraintPool[j];
+    if (!std::isfinite(row.m_jacDiagABInv))
+    {
+      // Neither body can turn (a proxy on a static object): nothing to solve.
+      row.m_jacDiagABInv = 0.0;
+      row.m_rhs = 0.0;
+      continue;
+    }
+    const btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+    const btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+    // This step's external torques, which Bullet leaves out of these rows' velocity.
+    const btScalar external = (a.m_originalBody ? row.m_relpos1CrossNormal.dot(a.m_externalTorqueImpulse) : 0.0) +
+                              (b.m_originalBody ? row.m_relpos2CrossNormal.dot(b.m_externalTorqueImpulse) : 0.0);
+    row.m_rhs -= external * row.m_jacDiagABInv;
+    const PadRows* pad = padOf(row);
+    if (pad == nullptr)
+    {
+      continue;
+    }
+    // The row turns B relative to A about `axis`; towards the anchor at the friction ERP.
+    const btVector3& axis = row.m_relpos2CrossNormal;
+    const double turned = toBullet(pad->turn_since_anchor).dot(axis);
+    row.m_rhs -= turned * info.m_frictionERP / info.m_timeStep * row.m_jacDiagABInv;
+    // Warm start inside this step's bound (the normal row's warm impulse times the row's
+    // coefficient, as the iterations will bound it).
+    if (info.m_solverMode & SOLVER_USE_WARMSTARTING)
+    {
+      const btScalar normal = m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_appliedImpulse;
+      const btScalar bound = std::max<btScalar>(0.0, row.m_friction * normal);
+      const btScalar warm =
+          btClamped<btScalar>(toBullet(pad->warm_torque_impulse).dot(axis) * info.m_warmstartingFactor, -bound, bound);
+      row.m_appliedImpulse = warm;
+      btSolverBody& body_a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+      btSolverBody& body_b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+      body_a.internalApplyImpulse(row.m_contactNormal1 * body_a.internalGetInvMass(), row.m_angularComponentA, warm);
+      body_b.internalApplyImpulse(row.m_contactNormal2 * body_b.internalGetInvMass(), row.m_angularComponentB, warm);
+    }
+  }
+}
+
+btScalar SupportPassSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int num_bodies,
+                                                          const btContactSolverInfo& info)
+{
+  for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j)
+  {
+    const btSolverConstraint& row = m_tmpSolverContactRollingFrictionConstraintPool[j];
+    PadRows* pad = padOf(row);
+    if (pad == nullptr)
+    {
+      continue;
+    }
+    pad->state->torque_impulse += toEigen(row.m_relpos2CrossNormal) * row.m_appliedImpulse;
+    // At its bound (the last iteration's): the pad slipped about this axis.
+    const btScalar bound = row.m_upperLimit;
+    if (bound > 0.0 && std::abs(row.m_appliedImpulse) >= 0.999 * bound)
+    {
+      pad->state->twist_slipped = true;
+    }
+  }
+  return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyFinish(bodies, num_bodies, info);
 }
 
 btScalar SupportPassSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int num_bodies,

@@ -13,9 +13,18 @@
 // (for heavier ones the iterations converge); one that touches nothing static (pinched in the
 // air, lying on another dynamic object) is not.
 //
+// Torsional rows (Bullet's spinning and rolling friction): Bullet sets them up without the
+// step's external torques, which they then meet one step late, and without an effective mass
+// when neither body can turn (0/0). Here every such row sees this step's external torques and a
+// row between two bodies that cannot turn is empty. The pads' rows (pad_constraint.h) are also
+// warm-started and corrected towards their orientation anchor; their impulses and slips go back
+// to the pads' states after the solve.
+//
 // Units: Bullet's (SI). Counts the contact points it receives (all, and the proxies').
 // Not real-time safe to construct; solving reuses Bullet's pools.
 #pragma once
+
+#include "pad_constraint.h"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -44,8 +53,16 @@ class SupportPassSolver : public btSequentialImpulseConstraintSolver
   {
     return proxy_points_;
   }
+  // This step's pads (owned by the sub-god-object injector), or none.
+  void setPadRows(std::vector<PadRows>* pads)
+  {
+    pads_ = pads;
+  }
 
  protected:
+  void convertContacts(btPersistentManifold** manifolds, int num_manifolds, const btContactSolverInfo& info) override;
+  btScalar solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int num_bodies,
+                                         const btContactSolverInfo& info) override;
   btScalar solveGroupCacheFriendlyIterations(btCollisionObject** bodies, int num_bodies,
                                              btPersistentManifold** manifolds, int num_manifolds,
                                              btTypedConstraint** constraints, int num_constraints,
@@ -53,6 +70,9 @@ class SupportPassSolver : public btSequentialImpulseConstraintSolver
 
  private:
   void supportPass();
+  // The pad a torsional row belongs to, or null.
+  PadRows* padOf(const btSolverConstraint& row);
+  std::vector<PadRows>* pads_ = nullptr;
   int support_passes_;
   std::vector<char> supported_;
   int points_ = 0;

@@ -6,6 +6,36 @@
 
 namespace god_finger
 {
+const char* padSolverName(PadSolver solver)
+{
+  return solver == PadSolver::kConstraint ? "constraint" : "points";
+}
+
+constexpr PadSolver kPadSolvers[] = {PadSolver::kPoints, PadSolver::kConstraint};
+
+std::string padSolverNames()
+{
+  std::string names;
+  for (const PadSolver solver : kPadSolvers)
+  {
+    names += (names.empty() ? "" : ", ") + std::string(padSolverName(solver));
+  }
+  return names;
+}
+
+bool parsePadSolver(const std::string& text, PadSolver* solver)
+{
+  for (const PadSolver candidate : kPadSolvers)
+  {
+    if (text == padSolverName(candidate))
+    {
+      *solver = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
 const ParameterTable<WorldParams>& worldParameterTable()
 {
   using P = WorldParams;
@@ -16,6 +46,11 @@ const ParameterTable<WorldParams>& worldParameterTable()
             "model", contactModelNames(), "contact model: how a proxy touches objects",
             [](const P& p) -> std::string { return contactModelName(p.model); },
             [](P* p, const std::string& text) { return parseContactModel(text, &p->model); }),
+        choiceRow<P>(
+            "pad_solver", padSolverNames(),
+            "god_finger: a solver point per sub-god-object (the paper's), or one pad constraint per contact area",
+            [](const P& p) -> std::string { return padSolverName(p.pad_solver); },
+            [](P* p, const std::string& text) { return parsePadSolver(text, &p->pad_solver); }),
         integerRow<P>("solver_iterations", closed(1, 1000),
                       "sequential-impulse iterations per step (a pinch creeps with too few)",
                       [](P& p) -> int& { return p.solver_iterations; }),

@@ -14,6 +14,7 @@ const char* experimentToolUsage()
          "                             --model god_object|god_finger|soft_finger\n"
          "                             [--duration S] [--dt S] [--csv FILE] [--seed N] [--fast]\n"
          "                             [--push-height M] [--scenes DIR] [--hand ideal|fake]\n"
+         "                             [--pad-solver points|constraint]\n"
          "Runs the scenario's scripted hand motion in the physics world and prints one JSON object:\n"
          "scenario, model, duration_s, steps, step_us_median, step_us_p99, max_penetration_m, nan,\n"
          "metrics. --duration 0 (default) runs the scenario's own length; --fast lifts ten times\n"
@@ -85,6 +86,13 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
         return "option '--dt' = '" + value + "' is out of range [1e-05, 0.01] (s)";
       }
       (option == "--duration" ? experiment.duration : experiment.time_step) = number;
+    }
+    else if (option == "--pad-solver")
+    {
+      if (!parsePadSolver(value, &experiment.pad_solver))
+      {
+        return "option '--pad-solver' = '" + value + "' is not one of " + padSolverNames();
+      }
     }
     else if (option == "--push-height")
     {

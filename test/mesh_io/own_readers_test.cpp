@@ -252,7 +252,7 @@ TEST(OffReader, CorruptFilesGiveOneClearLine)
 
 TEST(OwnReaders, LoadThroughTheLoaderAsExactTriangles)
 {
-  for (const std::string& extension : {"ply", "off", "OFF"})
+  for (const std::string extension : {"ply", "off", "OFF"})
   {
     const std::string path = ::testing::TempDir() + "god_finger_pyramid." + extension;
     std::ofstream(path, std::ios::binary) << (extension == "ply" ? binaryPly(true) : off("OFF\n"));

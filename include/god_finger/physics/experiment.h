@@ -58,9 +58,11 @@ struct ExperimentOptions
   // touches the ball 17 degrees above its equator.
   double push_height = 0.0125;
   std::uint64_t seed = 1;
-  std::string csv;             // time series path, empty for none
-  std::string scenes_dir;      // folder of the scene URDFs (urdf/scenes of the package)
-  int solver_iterations = 60;  // range [1, 1000]: Bullet's sequential-impulse iterations
+  std::string csv;         // time series path, empty for none
+  std::string scenes_dir;  // folder of the scene URDFs (urdf/scenes of the package)
+  // The world's (world_params.h) unless a caller sets them.
+  int solver_iterations = WorldParams().solver_iterations;
+  PadSolver pad_solver = WorldParams().pad_solver;
   // > 0: the watched object's pose is sampled every sample_period (s; rounded to whole steps)
   // into ExperimentResult::trajectory, for comparing runs of different settings.
   double sample_period = 0.0;

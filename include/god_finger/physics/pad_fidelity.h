@@ -2,44 +2,54 @@
 //
 // A pad of contact radius a under normal force N resists a torque about its normal up to
 // (2/3) mu N a for uniform pressure and (3 pi / 16) mu N a for Hertzian pressure; n points on a
-// ring of radius a plus the centre, each carrying N / (n + 1), resist (n / (n + 1)) mu N a.
+// ring of radius a plus the centre, each carrying N / (n + 1), resist (n / (n + 1)) mu N a. It
+// resists a torque about a tangent (tilt) while the centre of pressure stays inside the area:
+// up to N a for either pressure.
 //
-// The twist set-up: a flat box (0.1 x 0.1 x 0.02 m, 0.2 kg, friction mu) lying on a frictionless
-// static table, one finger pressing its centre from above with N; after 0.5 s of settling, a
-// torque about the vertical grows on the box (or is held). Only the finger resists it.
-// Units: SI; rotations in rad about the table's normal. Not real-time (builds a world).
+// The set-up: a flat box (0.1 x 0.1 x 0.02 m, 0.2 kg, friction mu), one finger pressing its
+// centre from above with N; after 0.5 s of settling, a torque is held on the box.
+// Twist: the box lies on a frictionless static table and the torque is about the vertical.
+// Tilt: no table and no gravity; a force N up at the box's centre holds it against the finger
+// and the torque is about a horizontal axis (x). Only the finger resists either.
+// Units: SI; rotations in rad about the torque's axis. Not real-time (builds a world).
 #pragma once
 
 #include "god_finger/physics/world_params.h"
 
 namespace god_finger
 {
-struct TwistSetup
+enum class PadLoad
 {
+  kTwist,  // torque about the contact normal
+  kTilt,   // torque about a tangent
+};
+
+struct PadLoadSetup
+{
+  PadLoad load = PadLoad::kTwist;
   ContactModel model = ContactModel::kGodFinger;
   double normal_force = 2.0;  // N, pressed by the coupling (target below the proxy's rest)
   double friction = 0.8;      // mu of the box (the proxy's is 1; Bullet multiplies them)
   WorldParams params;         // the world's; model and time step are taken from here too
 };
 
-struct TwistMeasurement
+struct PadLoadMeasurement
 {
   double contact_radius = 0.0;  // a (m), the contact area's radius after settling
   double normal_force = 0.0;    // N measured on the hand after settling
-  // Ramp: the torque (N m) at which the box had turned by `slip_angle`; infinite if never.
-  double slip_torque = 0.0;
-  // Hold: the box's turn (rad) after the hold.
-  double rotation = 0.0;
+  double rotation = 0.0;        // the box's turn (rad) at the end of the hold
 };
 
 // Analytic limits of a pad of radius `radius` (m) under `normal_force` (N), friction `mu`.
 double uniformPadTorque(double mu, double normal_force, double radius);
 double hertzPadTorque(double mu, double normal_force, double radius);
+double padTiltTorque(double normal_force, double radius);  // N a, either pressure
 
-// Ramps the torque at `torque_rate` (N m / s) for up to `duration` (s) and reports the torque
-// at which the box had turned by `slip_angle` (rad).
-TwistMeasurement measureTwistSlip(const TwistSetup& setup, double torque_rate, double duration = 4.0,
-                                  double slip_angle = 0.05);
 // Holds `torque` (N m) for `duration` (s) and reports the box's turn.
-TwistMeasurement measureTwistHold(const TwistSetup& setup, double torque, double duration);
+PadLoadMeasurement measurePadHold(const PadLoadSetup& setup, double torque, double duration);
+// The pad's static capacity (N m): the largest torque that, held for `duration` (s), turns the
+// box less than `tolerance` (rad); bisection over [0, upper] (N m), `bisections` times. (A
+// slow ramp read 5-16 % higher: once it slips, the box needs time to turn a visible angle.)
+double measurePadCapacity(const PadLoadSetup& setup, double upper, double duration = 1.0, double tolerance = 1e-3,
+                          int bisections = 10);
 }  // namespace god_finger

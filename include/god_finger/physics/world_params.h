@@ -43,6 +43,20 @@ struct FingerPadParams
   double damping = 20.0;   // N s/m per contact point
 };
 
+// How a god_finger contact area reaches the solver (src/physics/pad_constraint.h):
+// kPoints, the paper's way, a contact point per sub-god-object (about 3 (1 + n_SGO) rows per
+// finger); kConstraint, one pad per area at its centre of pressure with torsional and tilt rows
+// bounded by the area (6 rows per finger).
+enum class PadSolver
+{
+  kPoints,
+  kConstraint,
+};
+const char* padSolverName(PadSolver solver);
+std::string padSolverNames();  // "points, constraint"
+// False (and `solver` unchanged) if `text` names none.
+bool parsePadSolver(const std::string& text, PadSolver* solver);
+
 struct WorldParams
 {
   double time_step = 1e-3;  // s, range [1e-5, 0.1]: the servo loop's period (its `rate`)
@@ -56,6 +70,7 @@ struct WorldParams
   int support_passes = 2;
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  // m/s^2, finite
   ContactModel model = ContactModel::kGodFinger;
+  PadSolver pad_solver = PadSolver::kPoints;
   ContactParams contact;
   CouplingParams coupling;
   SoftFingerParams soft_finger;
