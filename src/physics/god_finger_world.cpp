@@ -554,6 +554,11 @@ int GodFingerWorld::solverContactPoints() const
   return impl_->solver->points();
 }
 
+int GodFingerWorld::solverContactRows() const
+{
+  return impl_->solver->rows();
+}
+
 int GodFingerWorld::solverProxyContactPoints() const
 {
   return impl_->solver->proxyPoints();

@@ -64,6 +64,8 @@ void SupportPassSolver::convertContacts(btPersistentManifold** manifolds, int nu
                                         const btContactSolverInfo& info)
 {
   btSequentialImpulseConstraintSolver::convertContacts(manifolds, num_manifolds, info);
+  rows_ += m_tmpSolverContactConstraintPool.size() + m_tmpSolverContactFrictionConstraintPool.size() +
+           m_tmpSolverContactRollingFrictionConstraintPool.size();
   for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j)
   {
     btSolverConstraint& row = m_tmpSolverContactRollingFrictionConstraintPool[j];

@@ -44,6 +44,7 @@ class SupportPassSolver : public btSequentialImpulseConstraintSolver
   {
     points_ = 0;
     proxy_points_ = 0;
+    rows_ = 0;
   }
   int points() const
   {
@@ -52,6 +53,10 @@ class SupportPassSolver : public btSequentialImpulseConstraintSolver
   int proxyPoints() const
   {
     return proxy_points_;
+  }
+  int rows() const
+  {
+    return rows_;
   }
   // This step's pads (owned by the sub-god-object injector), or none.
   void setPadRows(std::vector<PadRows>* pads)
@@ -77,5 +82,6 @@ class SupportPassSolver : public btSequentialImpulseConstraintSolver
   std::vector<char> supported_;
   int points_ = 0;
   int proxy_points_ = 0;
+  int rows_ = 0;
 };
 }  // namespace god_finger

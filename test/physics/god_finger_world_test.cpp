@@ -1,10 +1,10 @@
 // The physics world against analytic answers: a proxy resting on a plane, the friction cone on
 // flat and inclined planes, no tunnelling at 1 m/s, every sub-god-object inside Bullet's
 // solver, model switching, determinism, and bad input.
-#include "god_finger/mesh_io/mesh_loader.h"
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/physics/urdf_scene.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/mesh_io/mesh_loader.h"
+#include "god_finger/physics/urdf_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -161,41 +161,86 @@ TEST(GodFingerWorld, ProxyDoesNotTunnelThroughAThinPlateAtOneMetrePerSecond)
   }
 }
 
+// The points layout: every sub-god-object is a solver point beside the true contact; the pad
+// constraint: the true contact alone. On a static plane.
 TEST(GodFingerWorld, EverySubGodObjectReachesTheSolver)
 {
-  for (int n_sgo : {3, 8, 32, 64})
+  for (const PadSolver solver : {PadSolver::kPoints, PadSolver::kConstraint})
   {
-    SCOPED_TRACE(n_sgo);
-    WorldParams params;
-    params.contact.sub_god_objects = n_sgo;
-    GodFingerWorld world(planeScene(0.0, 0.5), params);
-    const int finger = world.addInterface(Eigen::Vector3d(0.01, 0.02, 0.003));
-    world.setInterfaceTarget(finger, Eigen::Vector3d(0.01, 0.02, -0.01));
-    run(&world, 0.3);
-    // One true contact and n_sgo sub-god-objects, although a Bullet manifold holds 4 points.
-    EXPECT_EQ(world.solverProxyContactPoints(), 1 + n_sgo);
-    const InterfaceState& state = world.interfaceState(finger);
-    ASSERT_EQ(state.contact_count, 1);
-    EXPECT_EQ(state.contacts[0].sub_god_object_count, n_sgo);
-    // Eq. 1: r = r_max (1 - exp(-s / D0')), s the coupling stretch into the object.
-    const double stretch = state.proxy_position.z() - state.interface_position.z();
-    const double radius = params.contact.max_radius * (1.0 - std::exp(-stretch / params.contact.distance_constant));
-    EXPECT_NEAR(state.contacts[0].radius, radius, 1e-6);
-    for (int i = 0; i < n_sgo; ++i)
+    for (int n_sgo : {3, 8, 32, 64})
     {
-      // On the plane, at the radius from the contact point.
-      EXPECT_NEAR(state.contacts[0].positions[i].z(), 0.0, 1e-9);
-      EXPECT_NEAR((state.contacts[0].positions[i] - state.contacts[0].point).norm(), radius, 1e-6);
-    }
+      SCOPED_TRACE(std::string(padSolverName(solver)) + ", " + std::to_string(n_sgo));
+      WorldParams params;
+      params.pad_solver = solver;
+      params.contact.sub_god_objects = n_sgo;
+      GodFingerWorld world(planeScene(0.0, 0.5), params);
+      const int finger = world.addInterface(Eigen::Vector3d(0.01, 0.02, 0.003));
+      world.setInterfaceTarget(finger, Eigen::Vector3d(0.01, 0.02, -0.01));
+      run(&world, 0.3);
+      // One true contact and n_sgo sub-god-objects, although a Bullet manifold holds 4 points.
+      const int points = solver == PadSolver::kPoints ? 1 + n_sgo : 1;
+      EXPECT_EQ(world.solverProxyContactPoints(), points);
+      const InterfaceState& state = world.interfaceState(finger);
+      ASSERT_EQ(state.contact_count, 1);
+      EXPECT_EQ(state.contacts[0].sub_god_object_count, n_sgo);
+      // Eq. 1: r = r_max (1 - exp(-s / D0')), s the coupling stretch into the object.
+      const double stretch = state.proxy_position.z() - state.interface_position.z();
+      const double radius = params.contact.max_radius * (1.0 - std::exp(-stretch / params.contact.distance_constant));
+      EXPECT_NEAR(state.contacts[0].radius, radius, 1e-6);
+      for (int i = 0; i < n_sgo; ++i)
+      {
+        // On the plane, at the radius from the contact point.
+        EXPECT_NEAR(state.contacts[0].positions[i].z(), 0.0, 1e-9);
+        EXPECT_NEAR((state.contacts[0].positions[i] - state.contacts[0].point).norm(), radius, 1e-6);
+      }
 
-    // Switching the model while running: the single point again.
-    world.setContactModel(ContactModel::kGodObject);
-    world.step();
-    EXPECT_EQ(world.solverProxyContactPoints(), 1);
-    world.setContactModel(ContactModel::kGodFinger);
-    world.step();
-    EXPECT_EQ(world.solverProxyContactPoints(), 1 + n_sgo);
+      // Switching the model while running: the single point again.
+      world.setContactModel(ContactModel::kGodObject);
+      world.step();
+      EXPECT_EQ(world.solverProxyContactPoints(), 1);
+      world.setContactModel(ContactModel::kGodFinger);
+      world.step();
+      EXPECT_EQ(world.solverProxyContactPoints(), points);
+    }
   }
+}
+
+// One finger pressing a free box on a table: the solver rows the finger adds beyond a
+// god-object's three (normal, two friction): 3 per sub-god-object with the points layout (24
+// for n_SGO = 8: 27 in all), the three torsional rows with the pad constraint (6 in all).
+TEST(GodFingerWorld, ThePadConstraintIsSixRowsPerFinger)
+{
+  auto rows = [](ContactModel model, PadSolver solver)
+  {
+    BodyDescription table;
+    table.name = "table";
+    table.is_static = true;
+    table.geometry.kind = GeometryKind::kBox;
+    table.geometry.size = Eigen::Vector3d(1.0, 1.0, 0.1);
+    table.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.05);
+    BodyDescription box;
+    box.name = "box";
+    box.geometry.kind = GeometryKind::kBox;
+    box.geometry.size = Eigen::Vector3d(0.1, 0.1, 0.02);
+    box.mass = 0.2;
+    box.inertia = Eigen::Matrix3d::Identity() * 2e-4;
+    box.pose.translation() = Eigen::Vector3d(0.0, 0.0, 0.01);
+    SceneDescription scene;
+    scene.name = "press";
+    scene.bodies = {table, box};
+    WorldParams params;
+    params.model = model;
+    params.pad_solver = solver;
+    GodFingerWorld world(scene, params);
+    const int finger = world.addInterface(Eigen::Vector3d(0.0, 0.0, 0.03));
+    world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, 0.015));
+    run(&world, 0.3);
+    EXPECT_EQ(world.interfaceState(finger).contact_count, 1);
+    return world.solverContactRows();
+  };
+  const int point = rows(ContactModel::kGodObject, PadSolver::kPoints);
+  EXPECT_EQ(rows(ContactModel::kGodFinger, PadSolver::kPoints) - point, 3 * 8);
+  EXPECT_EQ(rows(ContactModel::kGodFinger, PadSolver::kConstraint) - point, 3);
 }
 
 // A ball on a table, pushed by a finger along a fixed script.

@@ -88,11 +88,17 @@ RunRecord runChecked(GodFingerWorld* world, long steps, const std::function<void
   return record;
 }
 
-WorldParams fingerParams()
+// Every case runs with either pad solver (world_params.h).
+class HardCases : public ::testing::TestWithParam<PadSolver>
 {
-  WorldParams params;
-  return params;
-}
+ protected:
+  WorldParams fingerParams() const
+  {
+    WorldParams params;
+    params.pad_solver = GetParam();
+    return params;
+  }
+};
 
 // Presses a finger `press` (m) into the top of body 1 (top at `top`) over 0.3 s, then holds.
 std::function<void(long)> pressOnTop(GodFingerWorld* world, int finger, const Eigen::Vector3d& top, double press)
@@ -105,7 +111,7 @@ std::function<void(long)> pressOnTop(GodFingerWorld* world, int finger, const Ei
   };
 }
 
-TEST(HardCases, ObjectsOfOneMillimetreAndOfTenMetres)
+TEST_P(HardCases, ObjectsOfOneMillimetreAndOfTenMetres)
 {
   // 1 mm: a 1 mm cube of 2 mg, touched by a 0.3 mm proxy with a 0.5 mm pad, pressed 0.2 mm.
   {
@@ -149,9 +155,9 @@ TEST(HardCases, ObjectsOfOneMillimetreAndOfTenMetres)
   }
 }
 
-TEST(HardCases, SceneTenKilometresFromTheOriginBehavesAsAtTheOrigin)
+TEST_P(HardCases, SceneTenKilometresFromTheOriginBehavesAsAtTheOrigin)
 {
-  auto pressAt = [](const Eigen::Vector3d& origin)
+  auto pressAt = [this](const Eigen::Vector3d& origin)
   {
     SceneDescription scene;
     scene.bodies = {tableAt(origin), boxAt(origin, 0.05, 0.2)};
@@ -174,7 +180,7 @@ TEST(HardCases, SceneTenKilometresFromTheOriginBehavesAsAtTheOrigin)
   EXPECT_LT(far.first.max_displacement, 1e-3);
 }
 
-TEST(HardCases, ObjectsAThousandTimesHeavierAndLighterThanTheProxy)
+TEST_P(HardCases, ObjectsAThousandTimesHeavierAndLighterThanTheProxy)
 {
   // A 5 cm box of ratio x the proxy's 20 g on the table, pressed 5 mm (2 N) from the top, then
   // dragged 3 cm along x at 3 cm/s.
@@ -223,7 +229,7 @@ TEST(HardCases, ObjectsAThousandTimesHeavierAndLighterThanTheProxy)
   }
 }
 
-TEST(HardCases, CouplingIsStableUpToItsAnalyticLimitAndRefusedBeyond)
+TEST_P(HardCases, CouplingIsStableUpToItsAnalyticLimitAndRefusedBeyond)
 {
   // The proxy in free space (no gravity) follows a 1 cm step of the hand. The explicit
   // coupling is stable iff (k dt + 2 c) dt / m < 4: at 90 % of that stiffness it settles, and
@@ -268,7 +274,7 @@ TEST(HardCases, CouplingIsStableUpToItsAnalyticLimitAndRefusedBeyond)
   EXPECT_LT(800.0, 0.02 * limit);
 }
 
-TEST(HardCases, HandAtTwoMetresPerSecondIntoATwoMillimetrePlateDoesNotTunnel)
+TEST_P(HardCases, HandAtTwoMetresPerSecondIntoATwoMillimetrePlateDoesNotTunnel)
 {
   for (ContactModel model : {ContactModel::kGodObject, ContactModel::kGodFinger})
   {
@@ -298,12 +304,12 @@ TEST(HardCases, HandAtTwoMetresPerSecondIntoATwoMillimetrePlateDoesNotTunnel)
   }
 }
 
-TEST(HardCases, LateLoopJumpOfTheHandIsAbsorbed)
+TEST_P(HardCases, LateLoopJumpOfTheHandIsAbsorbed)
 {
   // The hand pushes a 200 g box along the table by its side at 0.2 m/s; in one run the loop is
   // late for 20 ms (no new target), then the target jumps 4 mm to catch up. The late run must
   // end where the smooth one does (the box was pushed 8 cm) and the jump must not kick the box.
-  auto push = [](bool late)
+  auto push = [this](bool late)
   {
     SceneDescription scene;
     scene.bodies = {tableAt(Eigen::Vector3d::Zero()), boxAt(Eigen::Vector3d::Zero(), 0.05, 0.2)};
@@ -337,7 +343,7 @@ TEST(HardCases, LateLoopJumpOfTheHandIsAbsorbed)
   EXPECT_LT(late.first.deepest, 2e-3);
 }
 
-TEST(HardCases, FourFingersWithOverlappingContactAreasHoldABoxStill)
+TEST_P(HardCases, FourFingersWithOverlappingContactAreasHoldABoxStill)
 {
   SceneDescription scene;
   scene.bodies = {tableAt(Eigen::Vector3d::Zero()), boxAt(Eigen::Vector3d::Zero(), 0.1, 0.5)};
@@ -378,5 +384,8 @@ TEST(HardCases, FourFingersWithOverlappingContactAreasHoldABoxStill)
   // (4 x k x (5 mm)^2 / 2 = 0.02 J): the overlapping areas add none.
   EXPECT_LT(record.max_kinetic, 0.01 * 4.0 * 0.5 * params.coupling.stiffness * 0.005 * 0.005);
 }
+INSTANTIATE_TEST_SUITE_P(PadSolvers, HardCases, ::testing::Values(PadSolver::kPoints, PadSolver::kConstraint),
+                         [](const ::testing::TestParamInfo<PadSolver>& info)
+                         { return std::string(padSolverName(info.param)); });
 }  // namespace
 }  // namespace god_finger

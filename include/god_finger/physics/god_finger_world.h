@@ -123,6 +123,8 @@ class GodFingerWorld
   int solverContactPoints() const;
   // Of those, points between a proxy and an object.
   int solverProxyContactPoints() const;
+  // Contact rows (normal, friction, torsional) the solver solved in the last step, all pairs.
+  int solverContactRows() const;
   // Deepest penetration (m, >= 0) among all contacts found in the last step, before the solver.
   double deepestPenetration() const;
   double time() const;

@@ -70,7 +70,7 @@ struct WorldParams
   int support_passes = 2;
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  // m/s^2, finite
   ContactModel model = ContactModel::kGodFinger;
-  PadSolver pad_solver = PadSolver::kPoints;
+  PadSolver pad_solver = PadSolver::kConstraint;
   ContactParams contact;
   CouplingParams coupling;
   SoftFingerParams soft_finger;
