@@ -14,7 +14,19 @@ namespace god_finger
 {
 namespace
 {
-const ContactModel kModels[] = {ContactModel::kGodObject, ContactModel::kGodFinger, ContactModel::kSoftFinger};
+// The model argument: 0 god_object, 1 god_finger (the default pad solver, the pad
+// constraint), 2 soft_finger, 3 god_finger with the paper's points (scripts/bench_report reads
+// them in this order).
+struct Layout
+{
+  ContactModel model;
+  PadSolver pad_solver;
+  const char* label;
+};
+const Layout kModels[] = {{ContactModel::kGodObject, PadSolver::kConstraint, "god_object"},
+                          {ContactModel::kGodFinger, PadSolver::kConstraint, "god_finger"},
+                          {ContactModel::kSoftFinger, PadSolver::kConstraint, "soft_finger"},
+                          {ContactModel::kGodFinger, PadSolver::kPoints, "god_finger/points"}};
 const Scenario kScenarios[] = {Scenario::kSlide, Scenario::kLiftOne, Scenario::kLiftTwo, Scenario::kPinchCylinder};
 
 // Runs `fingers` through `world` for `duration` (s); returns the steps taken.
@@ -59,11 +71,12 @@ void BM_ScenarioStep(benchmark::State& state)
 {
   ExperimentOptions options;
   options.scenario = kScenarios[state.range(0)];
-  options.model = kModels[state.range(1)];
+  options.model = kModels[state.range(1)].model;
+  options.pad_solver = kModels[state.range(1)].pad_solver;
   options.scenes_dir = GOD_FINGER_SCENES_DIR;
   const ScenarioSetup setup = loadScenario(options);
   runWorlds(state, setup.scene, scenarioParams(options), setup.fingers, std::min(setup.duration, 6.0));
-  state.SetLabel(std::string(scenarioName(options.scenario)) + "/" + contactModelName(options.model));
+  state.SetLabel(std::string(scenarioName(options.scenario)) + "/" + kModels[state.range(1)].label);
 }
 
 BodyDescription table()
@@ -106,10 +119,11 @@ std::vector<WaypointPath> pressAndSlide(const std::vector<Eigen::Vector3d>& tops
   return fingers;
 }
 
-WorldParams generatedParams(ContactModel model)
+WorldParams generatedParams(const Layout& layout)
 {
   ExperimentOptions options;
-  options.model = model;
+  options.model = layout.model;
+  options.pad_solver = layout.pad_solver;
   return scenarioParams(options);
 }
 
@@ -127,7 +141,7 @@ void BM_InterfacesStep(benchmark::State& state)
     tops.push_back(Eigen::Vector3d(0.0, 0.0, 0.04) + on_sphere + Eigen::Vector3d(0.0, 0.0, 0.003));
   }
   runWorlds(state, scene, generatedParams(kModels[state.range(1)]), pressAndSlide(tops), 1.5);
-  state.SetLabel(contactModelName(kModels[state.range(1)]));
+  state.SetLabel(kModels[state.range(1)].label);
 }
 
 // 1, 10 or 100 balls on a table (10 cm grid), one finger on the first.
@@ -142,26 +156,26 @@ void BM_ObjectsStep(benchmark::State& state)
   }
   runWorlds(state, scene, generatedParams(kModels[state.range(1)]), pressAndSlide({Eigen::Vector3d(0.0, 0.0, 0.083)}),
             1.5);
-  state.SetLabel(contactModelName(kModels[state.range(1)]));
+  state.SetLabel(kModels[state.range(1)].label);
 }
 }  // namespace
 
 BENCHMARK(BM_ScenarioStep)
-    ->ArgsProduct({{0, 1, 2, 3}, {0, 1, 2}})
+    ->ArgsProduct({{0, 1, 2, 3}, {0, 1, 2, 3}})
     ->ArgNames({"scenario", "model"})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(3)
     ->UseRealTime();
 BENCHMARK(BM_InterfacesStep)
-    ->ArgsProduct({{1, 2, 4}, {0, 1, 2}})
+    ->ArgsProduct({{1, 2, 4}, {0, 1, 2, 3}})
     ->ArgNames({"interfaces", "model"})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(3)
     ->UseRealTime();
 BENCHMARK(BM_ObjectsStep)
-    ->ArgsProduct({{1, 10, 100}, {0, 1, 2}})
+    ->ArgsProduct({{1, 10, 100}, {0, 1, 2, 3}})
     ->ArgNames({"objects", "model"})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
