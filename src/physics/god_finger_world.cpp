@@ -4,6 +4,7 @@
 #include "collision_shape.h"
 #include "contact_response.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/physics/walk_surface.h"
 #include "proxy.h"
@@ -15,6 +16,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 namespace god_finger
 {
@@ -22,6 +24,21 @@ namespace
 {
 // Sub-god-objects closer than this to the contact point (m) duplicate it and are not added.
 constexpr double kCoincident = 1e-7;
+
+// The exact walk's surface for a sphere or a cylinder; none for boxes (their 12-triangle walk
+// surface is exact already) and meshes.
+std::optional<PrimitiveSurface> primitiveSurface(const Geometry& geometry)
+{
+  if (geometry.kind == GeometryKind::kSphere)
+  {
+    return PrimitiveSurface{PrimitiveSurface::Kind::kSphere, geometry.radius, 0.0};
+  }
+  if (geometry.kind == GeometryKind::kCylinder)
+  {
+    return PrimitiveSurface{PrimitiveSurface::Kind::kCylinder, geometry.radius, geometry.length};
+  }
+  return std::nullopt;
+}
 
 // Runs a hook between collision detection and the solver: where sub-god-objects join.
 class HookedWorld : public btDiscreteDynamicsWorld
@@ -46,6 +63,9 @@ struct GodFingerWorld::Impl
   {
     std::unique_ptr<TriangleMesh> walk;
     std::unique_ptr<SurfaceLocator> locator;
+    // Spheres and cylinders: contact areas by exact walks (core/primitive_walk.h); the walk
+    // surface then only serves the collision shape and walkSurface().
+    std::optional<PrimitiveSurface> primitive;
     std::unique_ptr<CollisionShape> collision;
     std::unique_ptr<btCompoundShape> placed;  // the collision shape placed in the centre-of-mass frame
     std::unique_ptr<btRigidBody> rigid;
@@ -99,6 +119,7 @@ struct GodFingerWorld::Impl
       Body body;
       body.walk = std::make_unique<TriangleMesh>(makeWalkSurface(description.geometry, max_edge));
       body.locator = std::make_unique<SurfaceLocator>(*body.walk);
+      body.primitive = primitiveSurface(description.geometry);
       body.collision = makeCollisionShape(description.geometry, *body.walk, description.is_static);
       if (!description.is_static)
       {
@@ -244,12 +265,26 @@ struct GodFingerWorld::Impl
     const Eigen::Isometry3d to_world = geometryToWorld(body);
     const Eigen::Isometry3d to_local = to_world.inverse();
     ContactQuery query;
-    query.location = body.locator->closest(to_local * point_world);
+    if (body.primitive)
+    {
+      query.location.point = to_local * point_world;
+    }
+    else
+    {
+      query.location = body.locator->closest(to_local * point_world);
+    }
     query.normal = to_local.linear() * normal_world;
     query.depth = -contact.getDistance();
     query.coupling = to_local.linear() * (proxy.target - toEigen(proxy.rigid->getWorldTransform().getOrigin()));
     query.reference_tangent = proxy.reference_tangents[body_index];
-    computeContactArea(*body.walk, query, params.contact, &scratch);
+    if (body.primitive)
+    {
+      computeContactArea(*body.primitive, query, params.contact, &scratch);
+    }
+    else
+    {
+      computeContactArea(*body.walk, query, params.contact, &scratch);
+    }
     if (!scratch.valid)
     {
       return;

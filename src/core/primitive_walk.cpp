@@ -1,0 +1,272 @@
+#include "god_finger/core/primitive_walk.h"
+
+#include "god_finger/core/radial_frame.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace god_finger
+{
+namespace
+{
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// A rim is reached when closer than this (m); a walk that stops within it of its start is
+// dropped.
+constexpr double kOnRim = 1e-12;
+// Most rims one walk may cross (a long walk around a short, wide cylinder with tau_a >= 90).
+constexpr int kMaxRims = 64;
+
+// The first parameter u > 0 where rho cos(u - delta) falls to `level`, the walk starting at
+// u = 0 inside the allowed region (rho cos(-delta) > level): delta + acos(level / rho); never
+// (infinite) if the whole circle is allowed. Zero when even the start is not allowed.
+double firstExit(double rho, double delta, double level)
+{
+  if (!(rho * std::cos(delta) > level))
+  {
+    return 0.0;
+  }
+  if (!(rho > 0.0) || level / rho <= -1.0)
+  {
+    return kInfinity;
+  }
+  return delta + std::acos(std::min(1.0, level / rho));
+}
+
+// Why a surface of normal `normal` cannot be entered (kDistanceReached: it can).
+WalkStop blockedBy(const Eigen::Vector3d& normal, const WalkLimits& limits)
+{
+  const double c = limits.normal_sign * normal.dot(limits.contact_normal);
+  if (!(c > limits.cos_max_angle))
+  {
+    return WalkStop::kAngleLimit;
+  }
+  if (!(c > limits.cos_friction))
+  {
+    return WalkStop::kFrictionLimit;
+  }
+  return WalkStop::kDistanceReached;
+}
+
+// Along a circle of parameter u (the normal turning as rho cos(u - delta) against the contact
+// normal): the arc length before either limit, `scale` metres per unit of u, and which limit.
+double limitedArc(double rho, double delta, double scale, const WalkLimits& limits, WalkStop* stop)
+{
+  const double s = limits.normal_sign;
+  const double angle = scale * firstExit(s * rho, delta, limits.cos_max_angle);
+  const double friction = scale * firstExit(s * rho, delta, limits.cos_friction);
+  *stop = angle <= friction ? WalkStop::kAngleLimit : WalkStop::kFrictionLimit;
+  return std::min(angle, friction);
+}
+
+WalkResult finish(const Eigen::Vector3d& position, double walked, int crossings, WalkStop stop)
+{
+  WalkResult result;
+  result.position = position;
+  result.location.face = -1;
+  result.location.point = position;
+  result.walked = walked;
+  result.crossings = crossings;
+  // A walk that cannot leave its start at all: the radial vector is dropped.
+  result.stop = (walked <= kOnRim && stop != WalkStop::kDistanceReached) ? WalkStop::kDropped : stop;
+  return result;
+}
+
+WalkResult walkSphere(double radius, const Eigen::Vector3d& start, const Eigen::Vector3d& direction, double distance,
+                      const WalkLimits& limits)
+{
+  const Eigen::Vector3d n0 = start.normalized();
+  const Eigen::Vector3d tangent = (direction - n0 * n0.dot(direction)).normalized();
+  // n(phi) . c = a cos(phi) + b sin(phi) = rho cos(phi - delta).
+  const double a = n0.dot(limits.contact_normal);
+  const double b = tangent.dot(limits.contact_normal);
+  WalkStop stop = WalkStop::kDistanceReached;
+  const double limit = limitedArc(std::hypot(a, b), std::atan2(b, a), radius, limits, &stop);
+  const double walked = std::min(distance, limit);
+  const double phi = walked / radius;
+  return finish(radius * (n0 * std::cos(phi) + tangent * std::sin(phi)), walked, 0,
+                walked < distance ? stop : WalkStop::kDistanceReached);
+}
+
+// A point of the cylinder walk: on the mantle (angle theta, height z; direction (along the
+// circumference, along z)) or on a cap (top: +1, bottom: -1; point and direction in its plane).
+struct CylinderState
+{
+  int cap = 0;  // 0: mantle
+  double theta = 0.0;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector2d along = Eigen::Vector2d::Zero();    // mantle: (circumferential, axial), unit
+  Eigen::Vector3d heading = Eigen::Vector3d::Zero();  // cap: unit, z = 0
+};
+
+WalkResult walkCylinder(double radius, double half_length, const Eigen::Vector3d& start,
+                        const Eigen::Vector3d& direction, double distance, const WalkLimits& limits)
+{
+  // Start on the surface the contact normal faces: a cap if it is closer to the axis than to
+  // the radial plane.
+  CylinderState state;
+  const double planar = std::hypot(limits.contact_normal.x(), limits.contact_normal.y());
+  if (std::abs(limits.contact_normal.z()) >= planar)
+  {
+    state.cap = limits.contact_normal.z() * limits.normal_sign >= 0.0 ? 1 : -1;
+    Eigen::Vector3d on_cap(start.x(), start.y(), state.cap * half_length);
+    const double r = std::hypot(on_cap.x(), on_cap.y());
+    if (r > radius)
+    {
+      on_cap.head<2>() *= radius / r;
+    }
+    state.point = on_cap;
+    state.heading = Eigen::Vector3d(direction.x(), direction.y(), 0.0).normalized();
+  }
+  else
+  {
+    state.theta = std::atan2(start.y(), start.x());
+    state.point = Eigen::Vector3d(radius * std::cos(state.theta), radius * std::sin(state.theta),
+                                  std::clamp(start.z(), -half_length, half_length));
+    const Eigen::Vector3d circumferential(-std::sin(state.theta), std::cos(state.theta), 0.0);
+    state.along = Eigen::Vector2d(direction.dot(circumferential), direction.z()).normalized();
+  }
+  double walked = 0.0;
+  int crossings = 0;
+  while (true)
+  {
+    const double remaining = distance - walked;
+    if (state.cap == 0)
+    {
+      // Mantle: theta(s) = theta0 + along.x s / R, z(s) = z0 + along.y s.
+      const double turn = state.along.x() / radius;
+      WalkStop limit_stop = WalkStop::kDistanceReached;
+      double limit = kInfinity;
+      if (turn != 0.0)
+      {
+        const double beta = std::atan2(limits.contact_normal.y(), limits.contact_normal.x());
+        // Measured along the turn: u = |turn| s, the normal's angle from beta is
+        // sign(turn) (theta - beta).
+        const double from = std::remainder(state.theta - beta, 2.0 * M_PI);
+        limit = limitedArc(planar, turn > 0.0 ? -from : from, 1.0 / std::abs(turn), limits, &limit_stop);
+      }
+      else if (blockedBy(Eigen::Vector3d(std::cos(state.theta), std::sin(state.theta), 0.0), limits) !=
+               WalkStop::kDistanceReached)
+      {
+        limit = 0.0;
+        limit_stop = blockedBy(Eigen::Vector3d(std::cos(state.theta), std::sin(state.theta), 0.0), limits);
+      }
+      const double to_rim = state.along.y() > 0.0   ? (half_length - state.point.z()) / state.along.y()
+                            : state.along.y() < 0.0 ? (-half_length - state.point.z()) / state.along.y()
+                                                    : kInfinity;
+      const double step = std::min({remaining, limit, std::max(0.0, to_rim)});
+      state.theta += turn * step;
+      state.point = Eigen::Vector3d(radius * std::cos(state.theta), radius * std::sin(state.theta),
+                                    std::clamp(state.point.z() + state.along.y() * step, -half_length, half_length));
+      walked += step;
+      if (step >= remaining)
+      {
+        return finish(state.point, distance, crossings, WalkStop::kDistanceReached);
+      }
+      if (step >= limit)
+      {
+        return finish(state.point, walked, crossings, limit_stop);
+      }
+      // The rim: onto the cap, if it may be entered and rims are left.
+      const int cap = state.along.y() > 0.0 ? 1 : -1;
+      const WalkStop blocked = blockedBy(Eigen::Vector3d(0.0, 0.0, cap), limits);
+      if (blocked != WalkStop::kDistanceReached || crossings >= kMaxRims)
+      {
+        return finish(state.point, walked, crossings,
+                      blocked != WalkStop::kDistanceReached ? blocked : WalkStop::kCrossingCap);
+      }
+      const Eigen::Vector3d outward(std::cos(state.theta), std::sin(state.theta), 0.0);
+      const Eigen::Vector3d circumferential(-std::sin(state.theta), std::cos(state.theta), 0.0);
+      state.heading = state.along.x() * circumferential - std::abs(state.along.y()) * outward;
+      state.cap = cap;
+      ++crossings;
+    }
+    else
+    {
+      // Cap: a straight line to the rim |p + s u| = R.
+      const Eigen::Vector2d p = state.point.head<2>();
+      const Eigen::Vector2d u = state.heading.head<2>();
+      const double pu = p.dot(u);
+      const double to_rim = -pu + std::sqrt(std::max(0.0, pu * pu + radius * radius - p.squaredNorm()));
+      const double step = std::min(remaining, to_rim);
+      state.point.head<2>() = p + u * step;
+      walked += step;
+      if (step >= remaining)
+      {
+        return finish(state.point, distance, crossings, WalkStop::kDistanceReached);
+      }
+      // The rim: onto the mantle, going away from the cap.
+      state.theta = std::atan2(state.point.y(), state.point.x());
+      const Eigen::Vector3d outward(std::cos(state.theta), std::sin(state.theta), 0.0);
+      const WalkStop blocked = blockedBy(outward, limits);
+      if (blocked != WalkStop::kDistanceReached || crossings >= kMaxRims)
+      {
+        return finish(state.point, walked, crossings,
+                      blocked != WalkStop::kDistanceReached ? blocked : WalkStop::kCrossingCap);
+      }
+      const Eigen::Vector3d circumferential(-std::sin(state.theta), std::cos(state.theta), 0.0);
+      state.along =
+          Eigen::Vector2d(state.heading.dot(circumferential), -state.cap * std::max(0.0, state.heading.dot(outward)))
+              .normalized();
+      state.point = Eigen::Vector3d(radius * outward.x(), radius * outward.y(), state.cap * half_length);
+      state.cap = 0;
+      ++crossings;
+    }
+  }
+}
+}  // namespace
+
+WalkResult walkPrimitive(const PrimitiveSurface& surface, const Eigen::Vector3d& start,
+                         const Eigen::Vector3d& direction, double distance, const WalkLimits& limits)
+{
+  if (!start.allFinite() || !direction.allFinite() || !std::isfinite(distance) || !(start.norm() > 0.0))
+  {
+    WalkResult invalid;
+    invalid.stop = WalkStop::kInvalidInput;
+    invalid.location.face = -1;
+    return invalid;
+  }
+  if (surface.kind == PrimitiveSurface::Kind::kSphere)
+  {
+    return walkSphere(surface.radius, surface.radius * start.normalized(), direction, std::max(0.0, distance), limits);
+  }
+  return walkCylinder(surface.radius, 0.5 * surface.length, start, direction, std::max(0.0, distance), limits);
+}
+
+void computeContactArea(const PrimitiveSurface& surface, const ContactQuery& query, const ContactParams& params,
+                        ContactAreaResult* out)
+{
+  out->valid = false;
+  out->count = 0;
+  out->active = 0;
+  out->radius = 0.0;
+  const double normal_length = query.normal.norm();
+  if (!query.location.point.allFinite() || !std::isfinite(normal_length) || normal_length < 1e-9 ||
+      !query.coupling.allFinite() || !std::isfinite(query.depth) || !(surface.radius > 0.0))
+  {
+    return;
+  }
+  const Eigen::Vector3d normal = query.normal / normal_length;
+  out->point = query.location.point;
+  out->normal = normal;
+  out->depth = query.depth;
+  out->radius = contactRadius(query.coupling, normal, params);
+  out->first_tangent = transportTangent(query.reference_tangent, normal);
+  const WalkLimits limits = makeWalkLimits(params, normal, 1.0);
+  const int n = params.sub_god_objects;
+  for (int i = 0; i < n; ++i)
+  {
+    SubGodObject& sgo = out->sub_god_objects[i];
+    sgo.radial = radialVector(normal, out->first_tangent, i, n);
+    sgo.target_distance = radialDistance(out->radius, query.coupling, sgo.radial, params);
+    sgo.walk = walkPrimitive(surface, query.location.point, sgo.radial, sgo.target_distance, limits);
+    sgo.position = sgo.walk.position;
+    if (!sgo.dropped())
+    {
+      ++out->active;
+    }
+  }
+  out->count = n;
+  out->valid = true;
+}
+}  // namespace god_finger
