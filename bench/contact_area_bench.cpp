@@ -11,6 +11,7 @@
 // table + tree), sgo_active (sub-god-objects per contact).
 #include "god_finger/core/contact_area.h"
 #include "god_finger/core/mesh_primitives.h"
+#include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/radial_frame.h"
 #include "god_finger/core/surface_locator.h"
 
@@ -172,6 +173,57 @@ void BM_ContactAreaOnly(benchmark::State& state)
   state.counters["crossings"] = static_cast<double>(crossings) / kContacts;
 }
 
+// The exact walks (core/primitive_walk.h), shape 0: the 4 cm ball's 256 contacts on the sphere
+// itself; shape 1: a cylinder of radius 2 cm and length 10 cm, 256 contacts on its mantle and
+// caps. Same pressing and pulls as the meshes'; no location needed (the contact point is the
+// query).
+void BM_ContactAreaExact(benchmark::State& state)
+{
+  const bool sphere = state.range(0) == 0;
+  const PrimitiveSurface surface = sphere ? PrimitiveSurface{PrimitiveSurface::Kind::kSphere, kRadius, 0.0}
+                                          : PrimitiveSurface{PrimitiveSurface::Kind::kCylinder, 0.02, 0.1};
+  const ContactParams params = benchParams(static_cast<int>(state.range(1)), WalkVariant::kUnfold);
+  std::mt19937_64 random(7);
+  std::normal_distribution<double> gaussian;
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<ContactQuery> queries;
+  for (int k = 0; k < kContacts; ++k)
+  {
+    ContactQuery query;
+    if (sphere)
+    {
+      query.normal = Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random)).normalized();
+      query.location.point = kRadius * query.normal;
+    }
+    else if (k % 4 == 0)  // a cap
+    {
+      const double side = uniform(random) < 0.0 ? -1.0 : 1.0;
+      query.normal = Eigen::Vector3d(0.0, 0.0, side);
+      query.location.point = Eigen::Vector3d(0.01 * uniform(random), 0.01 * uniform(random), 0.05 * side);
+    }
+    else  // the mantle
+    {
+      const double theta = M_PI * uniform(random);
+      query.normal = Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0);
+      query.location.point = 0.02 * query.normal + Eigen::Vector3d(0.0, 0.0, 0.04 * uniform(random));
+    }
+    const double pull = (k % 4) * 0.5 * params.distance_constant;
+    query.coupling = -3.0 * params.distance_constant * query.normal + pull * defaultTangent(query.normal);
+    query.depth = 1e-4;
+    queries.push_back(query);
+  }
+  ContactAreaResult area;
+  int i = 0;
+  for (auto _ : state)
+  {
+    computeContactArea(surface, queries[i], params, &area);
+    benchmark::DoNotOptimize(area);
+    i = (i + 1) % kContacts;
+  }
+  state.counters["sgo_active"] = area.active;
+  state.SetLabel(sphere ? "sphere" : "cylinder");
+}
+
 // Plates of 12 to 708 cells per side: 288 to 1,002,528 triangles (keys are negative).
 const int kPlateCells[] = {12, 24, 72, 224, 708};
 void meshSizes(benchmark::internal::Benchmark* benchmark)
@@ -206,6 +258,7 @@ BENCHMARK(BM_ContactAreaOnly)->Apply(meshSizes)->ArgNames({"mesh", "n_sgo", "wal
 BENCHMARK(BM_GodObjectLocate)->Args({6})->ArgNames({"mesh"});
 BENCHMARK(BM_GodFingerContact)->Apply(subGodObjectCounts)->ArgNames({"mesh", "n_sgo", "walk"});
 BENCHMARK(BM_ContactAreaOnly)->Args({6, 8, 1})->ArgNames({"mesh", "n_sgo", "walk"});
+BENCHMARK(BM_ContactAreaExact)->ArgsProduct({{0, 1}, {8}})->ArgNames({"shape", "n_sgo"});
 }  // namespace god_finger
 
 BENCHMARK_MAIN();

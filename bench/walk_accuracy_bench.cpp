@@ -2,6 +2,9 @@
 // cylinders of increasing resolution, per walk variant, against the exact geodesic on the
 // smooth surface; time per contact (location + contact area) is the benchmark's time.
 //
+// The exact walks (core/primitive_walk.h) run on the same contacts (BM_WalkSphereExact,
+// BM_WalkCylinderExact), checked against the same closed forms written independently here.
+//
 // Counter error_um: mean distance (micrometres) between each sub-god-object and the point the
 // exact geodesic reaches on the smooth surface, from the contact point pushed onto that
 // surface, along the same radial direction made tangent there, over the same walked length.
@@ -11,6 +14,7 @@
 // full length.
 #include "god_finger/core/contact_area.h"
 #include "god_finger/core/mesh_primitives.h"
+#include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
 
 #include <benchmark/benchmark.h>
@@ -113,9 +117,53 @@ void runWalkCase(benchmark::State& state, const TriangleMesh& mesh, const std::v
   state.counters["radius_mm"] = 1e3 * area.radius;
 }
 
-void BM_WalkSphere(benchmark::State& state)
+// The exact walk from the probes pushed onto the smooth surface (no location step).
+template <typename Smooth>
+void runExactCase(benchmark::State& state, const PrimitiveSurface& surface, const std::vector<Eigen::Vector3d>& probes,
+                  const Smooth& smooth)
 {
-  const TriangleMesh mesh = TriangleMesh::build(makeIcosphere(kSphereRadius, static_cast<int>(state.range(0))));
+  const ContactParams params = walkParams(WalkVariant::kUnfold);
+  std::vector<ContactQuery> queries;
+  for (const Eigen::Vector3d& probe : probes)
+  {
+    ContactQuery query;
+    query.normal = surface.kind == PrimitiveSurface::Kind::kSphere
+                       ? probe.normalized()
+                       : Eigen::Vector3d(probe.x(), probe.y(), 0.0).normalized();
+    query.location.point = surface.kind == PrimitiveSurface::Kind::kSphere
+                               ? Eigen::Vector3d(surface.radius * query.normal)
+                               : Eigen::Vector3d(surface.radius * query.normal + probe.z() * Eigen::Vector3d::UnitZ());
+    query.coupling = -3.0 * params.distance_constant * query.normal;
+    query.depth = 1e-4;
+    queries.push_back(query);
+  }
+  ContactAreaResult area;
+  double error_sum = 0.0;
+  long sub_god_objects = 0;
+  for (const ContactQuery& query : queries)
+  {
+    computeContactArea(surface, query, params, &area);
+    for (int k = 0; k < area.count; ++k)
+    {
+      const SubGodObject& sgo = area.sub_god_objects[k];
+      error_sum += (sgo.position - smooth.endpoint(area.point, sgo.radial, sgo.walk.walked)).norm();
+      ++sub_god_objects;
+    }
+  }
+  int i = 0;
+  for (auto _ : state)
+  {
+    computeContactArea(surface, queries[i], params, &area);
+    benchmark::DoNotOptimize(area);
+    i = (i + 1) % kContacts;
+  }
+  state.counters["triangles"] = 0;
+  state.counters["error_um"] = sub_god_objects > 0 ? 1e6 * error_sum / sub_god_objects : NAN;
+  state.counters["radius_mm"] = 1e3 * area.radius;
+}
+
+std::vector<Eigen::Vector3d> sphereProbes()
+{
   std::mt19937_64 random(11);
   std::normal_distribution<double> gaussian;
   std::vector<Eigen::Vector3d> probes;
@@ -124,13 +172,11 @@ void BM_WalkSphere(benchmark::State& state)
     probes.push_back(Eigen::Vector3d(gaussian(random), gaussian(random), gaussian(random)).normalized() *
                      (kSphereRadius - 0.002));
   }
-  runWalkCase(state, mesh, probes, SmoothSphere{kSphereRadius});
+  return probes;
 }
 
-void BM_WalkCylinder(benchmark::State& state)
+std::vector<Eigen::Vector3d> cylinderProbes()
 {
-  const TriangleMesh mesh =
-      TriangleMesh::build(makeCylinder(kCylinderRadius, kCylinderLength, static_cast<int>(state.range(0))));
   std::mt19937_64 random(13);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<Eigen::Vector3d> probes;
@@ -140,12 +186,39 @@ void BM_WalkCylinder(benchmark::State& state)
     const double z = (unit(random) - 0.5) * 0.5 * kCylinderLength;  // away from the caps
     probes.emplace_back((kCylinderRadius - 0.002) * std::cos(theta), (kCylinderRadius - 0.002) * std::sin(theta), z);
   }
-  runWalkCase(state, mesh, probes, SmoothCylinder{kCylinderRadius});
+  return probes;
+}
+
+void BM_WalkSphereExact(benchmark::State& state)
+{
+  runExactCase(state, PrimitiveSurface{PrimitiveSurface::Kind::kSphere, kSphereRadius, 0.0}, sphereProbes(),
+               SmoothSphere{kSphereRadius});
+}
+
+void BM_WalkCylinderExact(benchmark::State& state)
+{
+  runExactCase(state, PrimitiveSurface{PrimitiveSurface::Kind::kCylinder, kCylinderRadius, kCylinderLength},
+               cylinderProbes(), SmoothCylinder{kCylinderRadius});
+}
+
+void BM_WalkSphere(benchmark::State& state)
+{
+  const TriangleMesh mesh = TriangleMesh::build(makeIcosphere(kSphereRadius, static_cast<int>(state.range(0))));
+  runWalkCase(state, mesh, sphereProbes(), SmoothSphere{kSphereRadius});
+}
+
+void BM_WalkCylinder(benchmark::State& state)
+{
+  const TriangleMesh mesh =
+      TriangleMesh::build(makeCylinder(kCylinderRadius, kCylinderLength, static_cast<int>(state.range(0))));
+  runWalkCase(state, mesh, cylinderProbes(), SmoothCylinder{kCylinderRadius});
 }
 }  // namespace
 
 BENCHMARK(BM_WalkSphere)->ArgsProduct({{2, 3, 4, 5, 6, 7}, {0, 1}})->ArgNames({"level", "walk"});
 BENCHMARK(BM_WalkCylinder)->ArgsProduct({{12, 24, 48, 96, 192, 384, 768}, {0, 1}})->ArgNames({"segments", "walk"});
+BENCHMARK(BM_WalkSphereExact);
+BENCHMARK(BM_WalkCylinderExact);
 }  // namespace god_finger
 
 BENCHMARK_MAIN();

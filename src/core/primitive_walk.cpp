@@ -48,6 +48,22 @@ WalkStop blockedBy(const Eigen::Vector3d& normal, const WalkLimits& limits)
   return WalkStop::kDistanceReached;
 }
 
+// True when the allowed set of a circle (the normal turning in one plane) is one arc about the
+// start no longer than a half turn, so that a walk of at most a half turn that ends inside it
+// never left it: each level is at least 0 (limits of at most 90 degrees) or at most -1 (no limit
+// but the single antipodal normal).
+bool endpointDecides(const WalkLimits& limits)
+{
+  auto decides = [](double level) { return level >= 0.0 || level <= -1.0; };
+  return decides(limits.cos_max_angle) && decides(limits.cos_friction);
+}
+
+// The surface normal's cosine to the contact normal is inside both limits.
+bool inside(double cosine, const WalkLimits& limits)
+{
+  return cosine > limits.cos_max_angle && cosine > limits.cos_friction;
+}
+
 // Along a circle of parameter u (the normal turning as rho cos(u - delta) against the contact
 // normal): the arc length before either limit, `scale` metres per unit of u, and which limit.
 double limitedArc(double rho, double delta, double scale, const WalkLimits& limits, WalkStop* stop)
@@ -72,14 +88,30 @@ WalkResult finish(const Eigen::Vector3d& position, double walked, int crossings,
   return result;
 }
 
-WalkResult walkSphere(double radius, const Eigen::Vector3d& start, const Eigen::Vector3d& direction, double distance,
+// From `n0` (unit, the start's outward normal) along `tangent` (unit, orthogonal to n0).
+WalkResult walkSphere(double radius, const Eigen::Vector3d& n0, const Eigen::Vector3d& tangent, double distance,
                       const WalkLimits& limits)
 {
-  const Eigen::Vector3d n0 = start.normalized();
-  const Eigen::Vector3d tangent = (direction - n0 * n0.dot(direction)).normalized();
   // n(phi) . c = a cos(phi) + b sin(phi) = rho cos(phi - delta).
   const double a = n0.dot(limits.contact_normal);
   const double b = tangent.dot(limits.contact_normal);
+  const double reach = distance / radius;
+  if (reach <= M_PI && endpointDecides(limits))
+  {
+    // The usual case, without inverse trigonometry: the end is inside the limits, so is the way.
+    const double c = std::cos(reach);
+    const double s = std::sin(reach);
+    const double sign = limits.normal_sign;
+    if (inside(sign * a, limits) && inside(sign * (a * c + b * s), limits))
+    {
+      WalkResult result;
+      result.position = radius * (n0 * c + tangent * s);
+      result.location.face = -1;
+      result.location.point = result.position;
+      result.walked = distance;
+      return result;
+    }
+  }
   WalkStop stop = WalkStop::kDistanceReached;
   const double limit = limitedArc(std::hypot(a, b), std::atan2(b, a), radius, limits, &stop);
   const double walked = std::min(distance, limit);
@@ -88,22 +120,45 @@ WalkResult walkSphere(double radius, const Eigen::Vector3d& start, const Eigen::
                 walked < distance ? stop : WalkStop::kDistanceReached);
 }
 
-// A point of the cylinder walk: on the mantle (angle theta, height z; direction (along the
-// circumference, along z)) or on a cap (top: +1, bottom: -1; point and direction in its plane).
+// The unit tangent at `n0` closest to `direction`.
+Eigen::Vector3d tangentAt(const Eigen::Vector3d& n0, const Eigen::Vector3d& direction)
+{
+  return (direction - n0 * n0.dot(direction)).normalized();
+}
+
+// A point of the cylinder walk: on the mantle (angle theta, with its cosine and sine; height z;
+// direction (along the circumference, along z)) or on a cap (top: +1, bottom: -1; point and
+// direction in its plane).
 struct CylinderState
 {
   int cap = 0;  // 0: mantle
   double theta = 0.0;
+  double cos_theta = 1.0;
+  double sin_theta = 0.0;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector2d along = Eigen::Vector2d::Zero();    // mantle: (circumferential, axial), unit
   Eigen::Vector3d heading = Eigen::Vector3d::Zero();  // cap: unit, z = 0
+
+  void setTheta(double value)
+  {
+    theta = value;
+    cos_theta = std::cos(value);
+    sin_theta = std::sin(value);
+  }
+  Eigen::Vector3d outward() const
+  {
+    return Eigen::Vector3d(cos_theta, sin_theta, 0.0);
+  }
+  Eigen::Vector3d circumferential() const
+  {
+    return Eigen::Vector3d(-sin_theta, cos_theta, 0.0);
+  }
 };
 
-WalkResult walkCylinder(double radius, double half_length, const Eigen::Vector3d& start,
-                        const Eigen::Vector3d& direction, double distance, const WalkLimits& limits)
+// Where a walk from `start` begins: on the surface the contact normal faces (a cap if it is
+// closer to the axis than to the radial plane), `start` projected onto it. Once per contact.
+CylinderState cylinderStart(double radius, double half_length, const Eigen::Vector3d& start, const WalkLimits& limits)
 {
-  // Start on the surface the contact normal faces: a cap if it is closer to the axis than to
-  // the radial plane.
   CylinderState state;
   const double planar = std::hypot(limits.contact_normal.x(), limits.contact_normal.y());
   if (std::abs(limits.contact_normal.z()) >= planar)
@@ -116,16 +171,30 @@ WalkResult walkCylinder(double radius, double half_length, const Eigen::Vector3d
       on_cap.head<2>() *= radius / r;
     }
     state.point = on_cap;
+  }
+  else
+  {
+    state.setTheta(std::atan2(start.y(), start.x()));
+    state.point = Eigen::Vector3d(radius * state.cos_theta, radius * state.sin_theta,
+                                  std::clamp(start.z(), -half_length, half_length));
+  }
+  return state;
+}
+
+// From `state` (cylinderStart) along `direction`, projected onto the start's tangent plane.
+WalkResult walkCylinder(double radius, double half_length, CylinderState state, const Eigen::Vector3d& direction,
+                        double distance, const WalkLimits& limits)
+{
+  if (state.cap != 0)
+  {
     state.heading = Eigen::Vector3d(direction.x(), direction.y(), 0.0).normalized();
   }
   else
   {
-    state.theta = std::atan2(start.y(), start.x());
-    state.point = Eigen::Vector3d(radius * std::cos(state.theta), radius * std::sin(state.theta),
-                                  std::clamp(start.z(), -half_length, half_length));
-    const Eigen::Vector3d circumferential(-std::sin(state.theta), std::cos(state.theta), 0.0);
-    state.along = Eigen::Vector2d(direction.dot(circumferential), direction.z()).normalized();
+    state.along = Eigen::Vector2d(direction.dot(state.circumferential()), direction.z()).normalized();
   }
+  const double sign = limits.normal_sign;
+  const Eigen::Vector2d c_xy = limits.contact_normal.head<2>();
   double walked = 0.0;
   int crossings = 0;
   while (true)
@@ -135,28 +204,47 @@ WalkResult walkCylinder(double radius, double half_length, const Eigen::Vector3d
     {
       // Mantle: theta(s) = theta0 + along.x s / R, z(s) = z0 + along.y s.
       const double turn = state.along.x() / radius;
-      WalkStop limit_stop = WalkStop::kDistanceReached;
-      double limit = kInfinity;
-      if (turn != 0.0)
-      {
-        const double beta = std::atan2(limits.contact_normal.y(), limits.contact_normal.x());
-        // Measured along the turn: u = |turn| s, the normal's angle from beta is
-        // sign(turn) (theta - beta).
-        const double from = std::remainder(state.theta - beta, 2.0 * M_PI);
-        limit = limitedArc(planar, turn > 0.0 ? -from : from, 1.0 / std::abs(turn), limits, &limit_stop);
-      }
-      else if (blockedBy(Eigen::Vector3d(std::cos(state.theta), std::sin(state.theta), 0.0), limits) !=
-               WalkStop::kDistanceReached)
-      {
-        limit = 0.0;
-        limit_stop = blockedBy(Eigen::Vector3d(std::cos(state.theta), std::sin(state.theta), 0.0), limits);
-      }
       const double to_rim = state.along.y() > 0.0   ? (half_length - state.point.z()) / state.along.y()
                             : state.along.y() < 0.0 ? (-half_length - state.point.z()) / state.along.y()
                                                     : kInfinity;
-      const double step = std::min({remaining, limit, std::max(0.0, to_rim)});
-      state.theta += turn * step;
-      state.point = Eigen::Vector3d(radius * std::cos(state.theta), radius * std::sin(state.theta),
+      const double candidate = std::min(remaining, std::max(0.0, to_rim));
+      // The end of this stretch, by angle addition (one sine and cosine).
+      const double delta = turn * candidate;
+      const double cos_delta = std::cos(delta);
+      const double sin_delta = std::sin(delta);
+      const double cos_end = state.cos_theta * cos_delta - state.sin_theta * sin_delta;
+      const double sin_end = state.sin_theta * cos_delta + state.cos_theta * sin_delta;
+      WalkStop limit_stop = WalkStop::kDistanceReached;
+      double limit = kInfinity;
+      const bool decided = std::abs(delta) <= M_PI && endpointDecides(limits) &&
+                           inside(sign * (c_xy.x() * state.cos_theta + c_xy.y() * state.sin_theta), limits) &&
+                           inside(sign * (c_xy.x() * cos_end + c_xy.y() * sin_end), limits);
+      if (decided)
+      {
+        // The end of this stretch is inside the limits, so is the way: no limit before it.
+        state.theta += delta;
+        state.cos_theta = cos_end;
+        state.sin_theta = sin_end;
+      }
+      else
+      {
+        if (turn != 0.0)
+        {
+          const double beta = std::atan2(c_xy.y(), c_xy.x());
+          // Measured along the turn: u = |turn| s, the normal's angle from beta is
+          // sign(turn) (theta - beta).
+          const double from = std::remainder(state.theta - beta, 2.0 * M_PI);
+          limit = limitedArc(c_xy.norm(), turn > 0.0 ? -from : from, 1.0 / std::abs(turn), limits, &limit_stop);
+        }
+        else if (blockedBy(state.outward(), limits) != WalkStop::kDistanceReached)
+        {
+          limit = 0.0;
+          limit_stop = blockedBy(state.outward(), limits);
+        }
+        state.setTheta(state.theta + turn * std::min(candidate, limit));
+      }
+      const double step = std::min(candidate, limit);
+      state.point = Eigen::Vector3d(radius * state.cos_theta, radius * state.sin_theta,
                                     std::clamp(state.point.z() + state.along.y() * step, -half_length, half_length));
       walked += step;
       if (step >= remaining)
@@ -175,9 +263,7 @@ WalkResult walkCylinder(double radius, double half_length, const Eigen::Vector3d
         return finish(state.point, walked, crossings,
                       blocked != WalkStop::kDistanceReached ? blocked : WalkStop::kCrossingCap);
       }
-      const Eigen::Vector3d outward(std::cos(state.theta), std::sin(state.theta), 0.0);
-      const Eigen::Vector3d circumferential(-std::sin(state.theta), std::cos(state.theta), 0.0);
-      state.heading = state.along.x() * circumferential - std::abs(state.along.y()) * outward;
+      state.heading = state.along.x() * state.circumferential() - std::abs(state.along.y()) * state.outward();
       state.cap = cap;
       ++crossings;
     }
@@ -196,19 +282,17 @@ WalkResult walkCylinder(double radius, double half_length, const Eigen::Vector3d
         return finish(state.point, distance, crossings, WalkStop::kDistanceReached);
       }
       // The rim: onto the mantle, going away from the cap.
-      state.theta = std::atan2(state.point.y(), state.point.x());
-      const Eigen::Vector3d outward(std::cos(state.theta), std::sin(state.theta), 0.0);
-      const WalkStop blocked = blockedBy(outward, limits);
+      state.setTheta(std::atan2(state.point.y(), state.point.x()));
+      const WalkStop blocked = blockedBy(state.outward(), limits);
       if (blocked != WalkStop::kDistanceReached || crossings >= kMaxRims)
       {
         return finish(state.point, walked, crossings,
                       blocked != WalkStop::kDistanceReached ? blocked : WalkStop::kCrossingCap);
       }
-      const Eigen::Vector3d circumferential(-std::sin(state.theta), std::cos(state.theta), 0.0);
-      state.along =
-          Eigen::Vector2d(state.heading.dot(circumferential), -state.cap * std::max(0.0, state.heading.dot(outward)))
-              .normalized();
-      state.point = Eigen::Vector3d(radius * outward.x(), radius * outward.y(), state.cap * half_length);
+      state.along = Eigen::Vector2d(state.heading.dot(state.circumferential()),
+                                    -state.cap * std::max(0.0, state.heading.dot(state.outward())))
+                        .normalized();
+      state.point = Eigen::Vector3d(radius * state.cos_theta, radius * state.sin_theta, state.cap * half_length);
       state.cap = 0;
       ++crossings;
     }
@@ -228,9 +312,12 @@ WalkResult walkPrimitive(const PrimitiveSurface& surface, const Eigen::Vector3d&
   }
   if (surface.kind == PrimitiveSurface::Kind::kSphere)
   {
-    return walkSphere(surface.radius, surface.radius * start.normalized(), direction, std::max(0.0, distance), limits);
+    const Eigen::Vector3d n0 = start.normalized();
+    return walkSphere(surface.radius, n0, tangentAt(n0, direction), std::max(0.0, distance), limits);
   }
-  return walkCylinder(surface.radius, 0.5 * surface.length, start, direction, std::max(0.0, distance), limits);
+  const double half_length = 0.5 * surface.length;
+  return walkCylinder(surface.radius, half_length, cylinderStart(surface.radius, half_length, start, limits), direction,
+                      std::max(0.0, distance), limits);
 }
 
 void computeContactArea(const PrimitiveSurface& surface, const ContactQuery& query, const ContactParams& params,
@@ -253,13 +340,23 @@ void computeContactArea(const PrimitiveSurface& surface, const ContactQuery& que
   out->radius = contactRadius(query.coupling, normal, params);
   out->first_tangent = transportTangent(query.reference_tangent, normal);
   const WalkLimits limits = makeWalkLimits(params, normal, 1.0);
+  const bool sphere = surface.kind == PrimitiveSurface::Kind::kSphere;
+  const Eigen::Vector3d n0 = query.location.point.normalized();
+  if (sphere && !n0.allFinite())
+  {
+    return;
+  }
+  const double half_length = 0.5 * surface.length;
+  const CylinderState cylinder =
+      sphere ? CylinderState() : cylinderStart(surface.radius, half_length, query.location.point, limits);
   const int n = params.sub_god_objects;
   for (int i = 0; i < n; ++i)
   {
     SubGodObject& sgo = out->sub_god_objects[i];
     sgo.radial = radialVector(normal, out->first_tangent, i, n);
     sgo.target_distance = radialDistance(out->radius, query.coupling, sgo.radial, params);
-    sgo.walk = walkPrimitive(surface, query.location.point, sgo.radial, sgo.target_distance, limits);
+    sgo.walk = sphere ? walkSphere(surface.radius, n0, tangentAt(n0, sgo.radial), sgo.target_distance, limits)
+                      : walkCylinder(surface.radius, half_length, cylinder, sgo.radial, sgo.target_distance, limits);
     sgo.position = sgo.walk.position;
     if (!sgo.dropped())
     {
