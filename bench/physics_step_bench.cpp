@@ -8,6 +8,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <memory>
 
 namespace god_finger
@@ -29,8 +30,10 @@ const Layout kModels[] = {{ContactModel::kGodObject, PadSolver::kConstraint, "go
                           {ContactModel::kGodFinger, PadSolver::kPoints, "god_finger/points"}};
 const Scenario kScenarios[] = {Scenario::kSlide, Scenario::kLiftOne, Scenario::kLiftTwo, Scenario::kPinchCylinder};
 
-// Runs `fingers` through `world` for `duration` (s); returns the steps taken.
-long runScript(GodFingerWorld* world, const std::vector<WaypointPath>& fingers, double duration)
+// Runs `fingers` through `world` for `duration` (s); returns the steps taken and adds the
+// solver's iterations and rows of every step to `iterations` and `rows`.
+long runScript(GodFingerWorld* world, const std::vector<WaypointPath>& fingers, double duration, double* iterations,
+               double* rows)
 {
   const double dt = world->params().time_step;
   const long steps = std::lround(duration / dt);
@@ -41,6 +44,8 @@ long runScript(GodFingerWorld* world, const std::vector<WaypointPath>& fingers, 
       world->setInterfaceTarget(static_cast<int>(f), fingers[f].at((i + 1) * dt));
     }
     world->step();
+    *iterations += world->solverIterationsUsed();
+    *rows += world->solverContactRows();
   }
   return steps;
 }
@@ -49,6 +54,8 @@ void runWorlds(benchmark::State& state, const SceneDescription& scene, const Wor
                const std::vector<WaypointPath>& fingers, double duration)
 {
   long steps = 0;
+  double iterations = 0.0;
+  double rows = 0.0;
   for (auto _ : state)
   {
     state.PauseTiming();
@@ -57,13 +64,18 @@ void runWorlds(benchmark::State& state, const SceneDescription& scene, const Wor
     {
       world->addInterface(finger.at(0.0));
     }
+    iterations = 0.0;
+    rows = 0.0;
     state.ResumeTiming();
-    steps = runScript(world.get(), fingers, duration);
+    steps = runScript(world.get(), fingers, duration, &iterations, &rows);
     state.PauseTiming();
     world.reset();
     state.ResumeTiming();
   }
   state.counters["steps"] = static_cast<double>(steps);
+  // Per step, of the last run: solver iterations used and contact rows.
+  state.counters["iterations"] = iterations / std::max(1L, steps);
+  state.counters["rows"] = rows / std::max(1L, steps);
 }
 
 // The paper's scenarios as the experiments run them (pinch cut to 6 s: approach, lift, hold).

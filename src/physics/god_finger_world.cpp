@@ -149,6 +149,9 @@ struct GodFingerWorld::Impl
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
     world->setGravity(toBullet(params.gravity));
     world->getSolverInfo().m_numIterations = params.solver_iterations;
+    // Bullet stops iterating once an iteration's largest velocity correction (squared) is below
+    // this.
+    world->getSolverInfo().m_leastSquaresResidualThreshold = params.solver_tolerance * params.solver_tolerance;
     // Two friction directions per point: an area resists twisting only if each of its points
     // resists sliding in every tangential direction (Bullet's default is one direction, along
     // the sliding velocity).
@@ -592,6 +595,11 @@ int GodFingerWorld::solverContactPoints() const
 int GodFingerWorld::solverContactRows() const
 {
   return impl_->solver->rows();
+}
+
+int GodFingerWorld::solverIterationsUsed() const
+{
+  return impl_->solver->iterationsUsed();
 }
 
 int GodFingerWorld::solverProxyContactPoints() const

@@ -58,6 +58,12 @@ class SupportPassSolver : public btSequentialImpulseConstraintSolver
   {
     return rows_;
   }
+  // Iterations the last solve ran (solver_iterations at most; fewer once within
+  // solver_tolerance).
+  int iterationsUsed() const
+  {
+    return m_analyticsData.m_numIterationsUsed;
+  }
   // This step's pads (owned by the sub-god-object injector), or none.
   void setPadRows(std::vector<PadRows>* pads)
   {

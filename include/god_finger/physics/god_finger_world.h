@@ -125,6 +125,9 @@ class GodFingerWorld
   int solverProxyContactPoints() const;
   // Contact rows (normal, friction, torsional) the solver solved in the last step, all pairs.
   int solverContactRows() const;
+  // Sequential-impulse iterations the last step ran (WorldParams::solver_tolerance may stop
+  // them before solver_iterations).
+  int solverIterationsUsed() const;
   // Deepest penetration (m, >= 0) among all contacts found in the last step, before the solver.
   double deepestPenetration() const;
   double time() const;

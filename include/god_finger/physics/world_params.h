@@ -64,6 +64,10 @@ struct WorldParams
   // normal when they are too few (README, "Solver iterations"): 30 gives 0.086 rad in the 21.5 s
   // after the pinch_cylinder lift, 50 gives 0.010 rad, 60 gives 0.0035 rad.
   int solver_iterations = 60;
+  // The iterations stop early once an iteration corrects no row's velocity by more than this
+  // (m/s): 10 um/s, 10 nm of drift per 1 ms step. It halves the step of every model and changes
+  // no scenario's outcome (bench/REPORT.md, "Physics step"); 0 runs every iteration.
+  double solver_tolerance = 1e-5;
   // Passes after them that hold an object resting on something static while a proxy presses it
   // (src/physics/support_pass_solver.h): without them an object 1000 times lighter than the
   // proxy sank 7 mm into its support. 0: Bullet's solver alone.
