@@ -7,7 +7,7 @@
 // length (slide 3.3 s, lift_one 4 s, pinch_cylinder 25 s: the scripts of experiment.cpp, so that
 // the metrics are those of runExperiment), building the world excluded. Counters: `steps` (time
 // per step = run time / steps, scripts/bench_report) and the scenario's metrics, computed the
-// same way for every system (MetricRecorder below, from experiment.cpp's).
+// same way for every system (physics/scenario_metrics.h, as runExperiment computes them).
 //
 // Units SI (m, kg, s, N, rad), world frame z up (REP-103), as the scene descriptions.
 //
@@ -49,6 +49,7 @@
 #include "god_finger/core/virtual_coupling.h"
 #include "god_finger/physics/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/physics/scenario_metrics.h"
 
 #include <benchmark/benchmark.h>
 #include <mujoco/mujoco.h>
@@ -70,141 +71,17 @@ namespace
 const Scenario kScenarios[] = {Scenario::kSlide, Scenario::kLiftOne, Scenario::kLiftTwo, Scenario::kPinchCylinder};
 const ContactModel kModels[] = {ContactModel::kGodObject, ContactModel::kGodFinger, ContactModel::kSoftFinger};
 
-// The script times experiment.cpp keeps to itself (its Script: lift_end, lift_height), per
-// scenario: slideScript, liftScript (not fast), pinchScript.
-struct ScriptTimes
+// The scenario's metrics (physics/scenario_metrics.h, as runExperiment computes them) over the
+// object's states after each step.
+std::map<std::string, double> metricsOf(Scenario scenario, const ScenarioSetup& setup, double dt,
+                                        const BodyState& initial, const std::vector<BodyState>& samples)
 {
-  double lift_end = 0.0;     // s: metrics "after the lift" start here
-  double lift_height = 0.0;  // m, commanded
-};
-
-ScriptTimes scriptTimes(Scenario scenario)
-{
-  switch (scenario)
-  {
-    case Scenario::kSlide:
-      return {0.8, 0.0};
-    case Scenario::kLiftOne:
-    case Scenario::kLiftTwo:
-      return {2.5, 0.1};
-    case Scenario::kPinchCylinder:
-      return {3.5, 0.1};
-  }
-  return {};
-}
-
-// The watched object at the end of a step: what experiment.cpp's MetricRecorder reads of a
-// BodyState.
-struct ObjectSample
-{
-  Eigen::Vector3d center_of_mass = Eigen::Vector3d::Zero();    // m, world
-  Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();   // link frame in world
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world
-  Eigen::Vector3d net_force = Eigen::Vector3d::Zero();         // N: m dv/dt over the step, gravity included
-};
-
-// experiment.cpp's MetricRecorder (anonymous there), reimplemented line for line on
-// ObjectSample so that every system's metrics come from the same code. One difference, for
-// runs cut shorter than the script: the fz window is the last 10 s of the run (the script's
-// last 10 s in experiment.cpp; the same when the run is the whole script, as here).
-std::map<std::string, double> scenarioMetrics(Scenario scenario, double object_radius, double dt,
-                                              const ObjectSample& initial, const std::vector<ObjectSample>& samples)
-{
-  const ScriptTimes script = scriptTimes(scenario);
-  const double run_end = samples.size() * dt;
-  double rolled = 0.0;
-  double held = 0.0;
-  double max_tilt = 0.0;
-  bool have_lift_pose = false;
-  Eigen::Matrix3d lift_pose = Eigen::Matrix3d::Identity();
-  double max_rotation = 0.0;
-  double max_spin = 0.0;
-  double fz_min = INFINITY;
-  double fz_max = -INFINITY;
+  ScenarioMetrics metrics(scenario, setup.times, initial, setup.scene.bodies[setup.object]);
   for (std::size_t i = 0; i < samples.size(); ++i)
   {
-    const ObjectSample& state = samples[i];
-    const double time = (i + 1) * dt;
-    const double height = state.center_of_mass.z() - initial.center_of_mass.z();
-    const bool lifted = height > 0.5 * script.lift_height;
-    switch (scenario)
-    {
-      case Scenario::kSlide:
-        rolled += std::hypot(state.angular_velocity.x(), state.angular_velocity.y()) * dt;
-        break;
-      case Scenario::kLiftOne:
-      case Scenario::kLiftTwo:
-      {
-        const Eigen::Vector3d up = state.orientation.col(2);
-        max_tilt = std::max(max_tilt, std::acos(std::min(1.0, std::max(-1.0, up.z()))));
-        if (time >= script.lift_end && lifted)
-        {
-          held += dt;
-        }
-        break;
-      }
-      case Scenario::kPinchCylinder:
-        if (time >= script.lift_end)
-        {
-          if (lifted)
-          {
-            held += dt;
-          }
-          if (!have_lift_pose)
-          {
-            lift_pose = state.orientation;
-            have_lift_pose = true;
-          }
-          // The contact normal is the cylinder's axis (x of the link frame).
-          const Eigen::Vector3d axis = state.orientation.col(0);
-          const Eigen::AngleAxisd angle_axis(Eigen::Matrix3d(state.orientation * lift_pose.transpose()));
-          max_rotation = std::max(max_rotation, angle_axis.angle() * std::abs(angle_axis.axis().dot(axis)));
-          max_spin = std::max(max_spin, std::abs(state.angular_velocity.dot(axis)));
-          if (time >= run_end - 10.0)
-          {
-            fz_min = std::min(fz_min, state.net_force.z());
-            fz_max = std::max(fz_max, state.net_force.z());
-          }
-        }
-        break;
-    }
+    metrics.add((i + 1) * dt, dt, samples[i]);
   }
-  std::map<std::string, double> result;
-  const ObjectSample& last = samples.empty() ? initial : samples.back();
-  const double height = last.center_of_mass.z() - initial.center_of_mass.z();
-  switch (scenario)
-  {
-    case Scenario::kSlide:
-    {
-      const Eigen::Vector3d moved = last.center_of_mass - initial.center_of_mass;
-      const double translation = std::hypot(moved.x(), moved.y());
-      result["translation_m"] = translation;
-      result["rolled_rad"] = rolled;
-      result["rolling_ratio"] = translation > 0.0 ? rolled * object_radius / translation : 0.0;
-      break;
-    }
-    case Scenario::kLiftOne:
-    case Scenario::kLiftTwo:
-      result["lift_height_m"] = height;
-      result["held_s"] = held;
-      result["max_tilt_rad"] = max_tilt;
-      result["dropped"] = height > 0.5 * script.lift_height ? 0.0 : 1.0;
-      break;
-    case Scenario::kPinchCylinder:
-      result["rotation_about_normal_rad"] = max_rotation;
-      result["angular_velocity_about_normal_max"] = max_spin;
-      result["fz_oscillation_amplitude_N"] = fz_max >= fz_min ? 0.5 * (fz_max - fz_min) : 0.0;
-      result["held_s"] = held;
-      result["lift_height_m"] = height;
-      break;
-  }
-  return result;
-}
-
-// experiment.cpp's objectRadius: the rolling ratio's radius (spheres), else 0.
-double objectRadius(const BodyDescription& body)
-{
-  return body.geometry.kind == GeometryKind::kSphere ? body.geometry.radius : 0.0;
+  return metrics.metrics();
 }
 
 ExperimentOptions scenarioOptions(Scenario scenario, ContactModel model)
@@ -227,11 +104,6 @@ void setMetricCounters(benchmark::State& state, const std::map<std::string, doub
 
 // --- god_finger's worlds (physics_step_bench's BM_ScenarioStep, whole script, metrics) -----
 
-ObjectSample sampleOf(const BodyState& state)
-{
-  return {state.center_of_mass, state.pose.linear(), state.angular_velocity, state.net_force};
-}
-
 void BM_ScenarioStep(benchmark::State& state)
 {
   const Scenario scenario = kScenarios[state.range(0)];
@@ -241,9 +113,9 @@ void BM_ScenarioStep(benchmark::State& state)
   const WorldParams params = scenarioParams(options);
   const double dt = params.time_step;
   const long steps = std::lround(setup.duration / dt);
-  std::vector<ObjectSample> samples;
+  std::vector<BodyState> samples;
   samples.reserve(static_cast<std::size_t>(steps));
-  ObjectSample initial;
+  BodyState initial;
   for (auto _ : state)
   {
     state.PauseTiming();
@@ -252,7 +124,7 @@ void BM_ScenarioStep(benchmark::State& state)
     {
       world->addInterface(finger.at(0.0));
     }
-    initial = sampleOf(world->bodyState(setup.object));
+    initial = world->bodyState(setup.object);
     samples.clear();
     state.ResumeTiming();
     for (long i = 0; i < steps; ++i)
@@ -262,14 +134,13 @@ void BM_ScenarioStep(benchmark::State& state)
         world->setInterfaceTarget(static_cast<int>(f), setup.fingers[f].at((i + 1) * dt));
       }
       world->step();
-      samples.push_back(sampleOf(world->bodyState(setup.object)));
+      samples.push_back(world->bodyState(setup.object));
     }
     state.PauseTiming();
     world.reset();
     state.ResumeTiming();
   }
-  setMetricCounters(
-      state, scenarioMetrics(scenario, objectRadius(setup.scene.bodies[setup.object]), dt, initial, samples), steps);
+  setMetricCounters(state, metricsOf(scenario, setup, dt, initial, samples), steps);
   state.SetLabel(std::string(scenarioName(scenario)) + "/" + contactModelName(model));
 }
 
@@ -436,19 +307,21 @@ ModelPtr loadMujoco(const std::string& xml)
 // derived quantities such as xpos are still the step's start, so they are not read). A free
 // joint's qpos is the body frame (the link frame) in world, its qvel the frame origin's linear
 // velocity (world) and the angular velocity (body frame).
-ObjectSample mujocoSample(const mjModel* model, const mjData* data, int body, Eigen::Vector3d previous_velocity,
-                          double mass, Eigen::Vector3d* com_velocity)
+BodyState mujocoSample(const mjModel* model, const mjData* data, int body, Eigen::Vector3d previous_velocity,
+                       double mass, Eigen::Vector3d* com_velocity)
 {
   const int qpos = model->jnt_qposadr[model->body_jntadr[body]];
   const int dof = model->jnt_dofadr[model->body_jntadr[body]];
   const mjtNum* q = data->qpos + qpos;
   const mjtNum* v = data->qvel + dof;
-  ObjectSample sample;
-  sample.orientation = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
-  const Eigen::Vector3d com_offset = sample.orientation * Eigen::Vector3d(model->body_ipos + 3 * body);
+  BodyState sample;
+  sample.pose.linear() = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
+  sample.pose.translation() = Eigen::Vector3d(q[0], q[1], q[2]);
+  const Eigen::Vector3d com_offset = sample.pose.linear() * Eigen::Vector3d(model->body_ipos + 3 * body);
   sample.center_of_mass = Eigen::Vector3d(q[0], q[1], q[2]) + com_offset;
-  sample.angular_velocity = sample.orientation * Eigen::Vector3d(v[3], v[4], v[5]);
+  sample.angular_velocity = sample.pose.linear() * Eigen::Vector3d(v[3], v[4], v[5]);
   const Eigen::Vector3d velocity = Eigen::Vector3d(v[0], v[1], v[2]) + sample.angular_velocity.cross(com_offset);
+  sample.linear_velocity = velocity;
   sample.net_force = mass * (velocity - previous_velocity) / model->opt.timestep;
   *com_velocity = velocity;
   return sample;
@@ -481,9 +354,9 @@ void BM_MujocoScenarioStep(benchmark::State& state)
   }
   const Eigen::Vector3d gravity_compensation = -params.coupling.proxy_mass * params.gravity;
   std::vector<Eigen::Vector3d> previous_target(fingers);
-  std::vector<ObjectSample> samples;
+  std::vector<BodyState> samples;
   samples.reserve(static_cast<std::size_t>(steps));
-  ObjectSample initial;
+  BodyState initial;
   // Per run, for the profile: contacts, constraint rows and solver iterations (Newton and noslip)
   // summed over steps.
   long contacts = 0;
@@ -527,8 +400,7 @@ void BM_MujocoScenarioStep(benchmark::State& state)
       solver_iterations += data->solver_iter;
     }
   }
-  setMetricCounters(
-      state, scenarioMetrics(scenario, objectRadius(setup.scene.bodies[setup.object]), dt, initial, samples), steps);
+  setMetricCounters(state, metricsOf(scenario, setup, dt, initial, samples), steps);
   state.counters["mean_contacts"] = static_cast<double>(contacts) / steps;
   state.counters["mean_rows"] = static_cast<double>(rows) / steps;
   state.counters["mean_solver_iterations"] = static_cast<double>(solver_iterations) / steps;

@@ -1,4 +1,5 @@
 #include "god_finger/physics/experiment.h"
+#include "god_finger/physics/scenario_metrics.h"
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
@@ -30,6 +31,15 @@ struct Script
   double lift_end = 0.0;     // s
   double lift_height = 0.0;  // m, commanded
 };
+
+ScenarioTimes timesOf(const Script& script)
+{
+  ScenarioTimes times;
+  times.duration = script.duration;
+  times.lift_end = script.lift_end;
+  times.lift_height = script.lift_height;
+  return times;
+}
 
 Eigen::Vector3d xyz(double x, double y, double z)
 {
@@ -142,121 +152,6 @@ bool finite(const BodyState& state)
   return state.pose.matrix().allFinite() && state.linear_velocity.allFinite() && state.angular_velocity.allFinite();
 }
 
-// Per-scenario metrics, accumulated step by step.
-class MetricRecorder
-{
- public:
-  MetricRecorder(Scenario scenario, const Script& script, const BodyState& initial, double object_radius)
-      : scenario_(scenario), script_(script), initial_(initial), object_radius_(object_radius)
-  {
-  }
-
-  void add(double time, double dt, const BodyState& state)
-  {
-    const double height = state.center_of_mass.z() - initial_.center_of_mass.z();
-    const bool lifted = height > 0.5 * script_.lift_height;
-    switch (scenario_)
-    {
-      case Scenario::kSlide:
-      {
-        // Rolling: the angular velocity about horizontal axes, integrated.
-        const Eigen::Vector3d w = state.angular_velocity;
-        rolled_ += std::hypot(w.x(), w.y()) * dt;
-        break;
-      }
-      case Scenario::kLiftOne:
-      case Scenario::kLiftTwo:
-      {
-        const Eigen::Vector3d up = state.pose.linear().col(2);
-        max_tilt_ = std::max(max_tilt_, std::acos(std::min(1.0, std::max(-1.0, up.z()))));
-        if (time >= script_.lift_end && lifted)
-        {
-          held_ += dt;
-        }
-        break;
-      }
-      case Scenario::kPinchCylinder:
-      {
-        if (time >= script_.lift_end)
-        {
-          if (lifted)
-          {
-            held_ += dt;
-          }
-          if (!have_lift_pose_)
-          {
-            lift_pose_ = state.pose.linear();
-            have_lift_pose_ = true;
-          }
-          // The contact normal is the cylinder's axis (x of the link frame).
-          const Eigen::Vector3d axis = state.pose.linear().col(0);
-          const Eigen::Matrix3d relative = state.pose.linear() * lift_pose_.transpose();
-          const Eigen::AngleAxisd angle_axis(relative);
-          const double about_normal = angle_axis.angle() * std::abs(angle_axis.axis().dot(axis));
-          max_rotation_ = std::max(max_rotation_, about_normal);
-          max_spin_ = std::max(max_spin_, std::abs(state.angular_velocity.dot(axis)));
-          if (time >= script_.duration - 10.0)
-          {
-            fz_min_ = std::min(fz_min_, state.net_force.z());
-            fz_max_ = std::max(fz_max_, state.net_force.z());
-          }
-        }
-        break;
-      }
-    }
-    last_ = state;
-  }
-
-  std::map<std::string, double> metrics() const
-  {
-    std::map<std::string, double> result;
-    const double height = last_.center_of_mass.z() - initial_.center_of_mass.z();
-    switch (scenario_)
-    {
-      case Scenario::kSlide:
-      {
-        const Eigen::Vector3d moved = last_.center_of_mass - initial_.center_of_mass;
-        const double translation = std::hypot(moved.x(), moved.y());
-        result["translation_m"] = translation;
-        result["rolled_rad"] = rolled_;
-        result["rolling_ratio"] = translation > 0.0 ? rolled_ * object_radius_ / translation : 0.0;
-        break;
-      }
-      case Scenario::kLiftOne:
-      case Scenario::kLiftTwo:
-        result["lift_height_m"] = height;
-        result["held_s"] = held_;
-        result["max_tilt_rad"] = max_tilt_;
-        result["dropped"] = height > 0.5 * script_.lift_height ? 0.0 : 1.0;
-        break;
-      case Scenario::kPinchCylinder:
-        result["rotation_about_normal_rad"] = max_rotation_;
-        result["angular_velocity_about_normal_max"] = max_spin_;
-        result["fz_oscillation_amplitude_N"] = fz_max_ >= fz_min_ ? 0.5 * (fz_max_ - fz_min_) : 0.0;
-        result["held_s"] = held_;
-        result["lift_height_m"] = height;
-        break;
-    }
-    return result;
-  }
-
- private:
-  Scenario scenario_;
-  const Script& script_;
-  BodyState initial_;
-  BodyState last_;
-  double object_radius_;
-  double rolled_ = 0.0;
-  double held_ = 0.0;
-  double max_tilt_ = 0.0;
-  bool have_lift_pose_ = false;
-  Eigen::Matrix3d lift_pose_ = Eigen::Matrix3d::Identity();
-  double max_rotation_ = 0.0;
-  double max_spin_ = 0.0;
-  double fz_min_ = INFINITY;
-  double fz_max_ = -INFINITY;
-};
-
 class CsvWriter
 {
  public:
@@ -344,11 +239,6 @@ class CsvWriter
   std::string line_;
 };
 
-// A radius of the watched object for the rolling ratio (spheres), else 0.
-double objectRadius(const BodyDescription& body)
-{
-  return body.geometry.kind == GeometryKind::kSphere ? body.geometry.radius : 0.0;
-}
 }  // namespace
 
 const char* scenarioName(Scenario scenario)
@@ -402,6 +292,7 @@ ScenarioSetup loadScenario(const ExperimentOptions& options)
   }
   setup.fingers = script.fingers;
   setup.duration = script.duration;
+  setup.times = timesOf(script);
   return setup;
 }
 
@@ -440,7 +331,7 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   const double duration = options.duration > 0.0 ? options.duration : script.duration;
   const long steps = std::lround(duration / options.time_step);
 
-  MetricRecorder metrics(options.scenario, script, world.bodyState(object), objectRadius(scene.bodies[object]));
+  ScenarioMetrics metrics(options.scenario, timesOf(script), world.bodyState(object), scene.bodies[object]);
   CsvWriter csv(options.csv, world.interfaceCount());
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));

@@ -96,12 +96,22 @@ WorldParams scenarioParams(const ExperimentOptions& options);
 // A scenario's set-up without running it (benchmarks step it themselves): its scene, the
 // watched object, the hand's path per finger (device targets in world, m, against time, s),
 // and its own length (s).
+// A script's times: its own length, when the lift ends (metrics "after the lift" start there)
+// and the height it commands.
+struct ScenarioTimes
+{
+  double duration = 0.0;     // s
+  double lift_end = 0.0;     // s
+  double lift_height = 0.0;  // m (0 for the slide)
+};
+
 struct ScenarioSetup
 {
   SceneDescription scene;
   int object = -1;
   std::vector<WaypointPath> fingers;
   double duration = 0.0;
+  ScenarioTimes times;
 };
 ScenarioSetup loadScenario(const ExperimentOptions& options);
 // Throws InputError on a bad scene or option. The ideal hand: every interface is where the

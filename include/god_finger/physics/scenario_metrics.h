@@ -1,0 +1,52 @@
+// The paper's scenario metrics (README, "Experiments"), accumulated step by step from the
+// watched object's state: the one definition every system measured against them uses (the
+// experiments, the servo loop's runs, the MuJoCo baseline in bench/).
+//
+//  - slide: translation_m, rolled_rad (the angular velocity about horizontal axes, integrated),
+//    rolling_ratio (rolled arc over translation: 1 rolls, 0 slides);
+//  - lift_one, lift_two: lift_height_m, held_s (lifted above half the commanded height after the
+//    lift), max_tilt_rad, dropped;
+//  - pinch_cylinder: rotation_about_normal_rad and angular_velocity_about_normal_max (about the
+//    cylinder's axis, x of its link frame, after the lift), fz_oscillation_amplitude_N (half the
+//    peak-to-peak vertical force on the centre of mass over the script's last 10 s), held_s,
+//    lift_height_m.
+// Units: SI; states in the world frame. Not real-time (a map of results).
+#pragma once
+
+#include "god_finger/physics/experiment.h"
+#include "god_finger/physics/god_finger_world.h"
+
+#include <Eigen/Core>
+#include <map>
+#include <string>
+
+namespace god_finger
+{
+class ScenarioMetrics
+{
+ public:
+  // `initial`: the watched object before the first step; `object`: its description (a
+  // sphere's radius gives the rolling ratio).
+  ScenarioMetrics(Scenario scenario, const ScenarioTimes& times, const BodyState& initial,
+                  const BodyDescription& object);
+  // The object's state at the end of the step that ends at `time` (s), `dt` long.
+  void add(double time, double dt, const BodyState& state);
+  std::map<std::string, double> metrics() const;
+
+ private:
+  Scenario scenario_;
+  ScenarioTimes times_;
+  BodyState initial_;
+  BodyState last_;
+  double object_radius_;
+  double rolled_ = 0.0;
+  double held_ = 0.0;
+  double max_tilt_ = 0.0;
+  bool have_lift_pose_ = false;
+  Eigen::Matrix3d lift_pose_ = Eigen::Matrix3d::Identity();
+  double max_rotation_ = 0.0;
+  double max_spin_ = 0.0;
+  double fz_min_ = INFINITY;
+  double fz_max_ = -INFINITY;
+};
+}  // namespace god_finger
