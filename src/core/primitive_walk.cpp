@@ -22,6 +22,12 @@ constexpr int kMaxRims = 64;
 // (infinite) if the whole circle is allowed. Zero when even the start is not allowed.
 double firstExit(double rho, double delta, double level)
 {
+  if (rho < 0.0)
+  {
+    // -|rho| cos(u - delta) = |rho| cos(u - delta - pi).
+    rho = -rho;
+    delta = std::remainder(delta + M_PI, 2.0 * M_PI);
+  }
   if (!(rho * std::cos(delta) > level))
   {
     return 0.0;
@@ -92,6 +98,11 @@ WalkResult finish(const Eigen::Vector3d& position, double walked, int crossings,
 WalkResult walkSphere(double radius, const Eigen::Vector3d& n0, const Eigen::Vector3d& tangent, double distance,
                       const WalkLimits& limits)
 {
+  if (tangent.isZero())
+  {
+    // No direction along the surface: dropped, as the mesh walk drops a lost direction.
+    return finish(radius * n0, 0.0, 0, WalkStop::kDirectionLost);
+  }
   // n(phi) . c = a cos(phi) + b sin(phi) = rho cos(phi - delta).
   const double a = n0.dot(limits.contact_normal);
   const double b = tangent.dot(limits.contact_normal);
@@ -120,10 +131,12 @@ WalkResult walkSphere(double radius, const Eigen::Vector3d& n0, const Eigen::Vec
                 walked < distance ? stop : WalkStop::kDistanceReached);
 }
 
-// The unit tangent at `n0` closest to `direction`.
+// The unit tangent at `n0` closest to `direction`; zero when `direction` has no tangential part.
 Eigen::Vector3d tangentAt(const Eigen::Vector3d& n0, const Eigen::Vector3d& direction)
 {
-  return (direction - n0 * n0.dot(direction)).normalized();
+  const Eigen::Vector3d tangent = direction - n0 * n0.dot(direction);
+  const double length = tangent.norm();
+  return length > 1e-12 * direction.norm() ? Eigen::Vector3d(tangent / length) : Eigen::Vector3d::Zero();
 }
 
 // A point of the cylinder walk: on the mantle (angle theta, with its cosine and sine; height z;
@@ -174,7 +187,10 @@ CylinderState cylinderStart(double radius, double half_length, const Eigen::Vect
   }
   else
   {
-    state.setTheta(std::atan2(start.y(), start.x()));
+    // On the axis the start's own angle is undefined: the contact normal's is used.
+    const bool on_axis = std::hypot(start.x(), start.y()) < 1e-12 * radius;
+    state.setTheta(on_axis ? std::atan2(limits.contact_normal.y(), limits.contact_normal.x())
+                           : std::atan2(start.y(), start.x()));
     state.point = Eigen::Vector3d(radius * state.cos_theta, radius * state.sin_theta,
                                   std::clamp(start.z(), -half_length, half_length));
   }
@@ -185,13 +201,29 @@ CylinderState cylinderStart(double radius, double half_length, const Eigen::Vect
 WalkResult walkCylinder(double radius, double half_length, CylinderState state, const Eigen::Vector3d& direction,
                         double distance, const WalkLimits& limits)
 {
+  // The start's own surface may be beyond the limits (a contact normal far from it): dropped,
+  // as the mesh walk drops a start face beyond them.
+  const WalkStop start_blocked =
+      blockedBy(state.cap != 0 ? Eigen::Vector3d(0.0, 0.0, state.cap) : state.outward(), limits);
+  if (start_blocked != WalkStop::kDistanceReached)
+  {
+    return finish(state.point, 0.0, 0, start_blocked);
+  }
+  // The direction along the surface; none (a direction along the normal): dropped.
+  const Eigen::Vector2d on_cap(direction.x(), direction.y());
+  const Eigen::Vector2d on_mantle(direction.dot(state.circumferential()), direction.z());
+  const double length = state.cap != 0 ? on_cap.norm() : on_mantle.norm();
+  if (!(length > 1e-12 * direction.norm()))
+  {
+    return finish(state.point, 0.0, 0, WalkStop::kDirectionLost);
+  }
   if (state.cap != 0)
   {
-    state.heading = Eigen::Vector3d(direction.x(), direction.y(), 0.0).normalized();
+    state.heading = Eigen::Vector3d(on_cap.x() / length, on_cap.y() / length, 0.0);
   }
   else
   {
-    state.along = Eigen::Vector2d(direction.dot(state.circumferential()), direction.z()).normalized();
+    state.along = on_mantle / length;
   }
   const double sign = limits.normal_sign;
   const Eigen::Vector2d c_xy = limits.contact_normal.head<2>();

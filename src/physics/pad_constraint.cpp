@@ -1,5 +1,7 @@
 #include "pad_constraint.h"
 
+#include <algorithm>
+
 namespace god_finger
 {
 PadGeometry padGeometry(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const WorldContactArea& area)
@@ -19,15 +21,21 @@ PadGeometry padGeometry(const Eigen::Vector3d& centre, const Eigen::Vector3d& no
     const Eigen::Vector3d offset = area.positions[i] - centre;
     rim[i] = offset - normal * normal.dot(offset);
   }
+  // Signed about the normal: consecutive sub-god-objects turn one way around the centre; a
+  // triangle that turns back (the closing one, when the kept sub-god-objects span less than a
+  // half turn, e.g. at a corner where the others were dropped) would cover the others again.
+  auto triangleArea = [&](int i)
+  {
+    const double signed_area = 0.5 * normal.dot(rim[i].cross(rim[(i + 1) % count]));
+    return std::max(0.0, signed_area);
+  };
   double area_sum = 0.0;
   Eigen::Vector3d moment = Eigen::Vector3d::Zero();
   for (int i = 0; i < count; ++i)
   {
-    const Eigen::Vector3d& u = rim[i];
-    const Eigen::Vector3d& v = rim[(i + 1) % count];
-    const double triangle = 0.5 * std::abs(normal.dot(u.cross(v)));
+    const double triangle = triangleArea(i);
     area_sum += triangle;
-    moment += triangle * (u + v) / 3.0;
+    moment += triangle * (rim[i] + rim[(i + 1) % count]) / 3.0;
   }
   if (!(area_sum > 0.0))
   {
@@ -43,7 +51,7 @@ PadGeometry padGeometry(const Eigen::Vector3d& centre, const Eigen::Vector3d& no
   {
     const Eigen::Vector3d& u = rim[i];
     const Eigen::Vector3d& v = rim[(i + 1) % count];
-    const double triangle = 0.5 * std::abs(normal.dot(u.cross(v)));
+    const double triangle = triangleArea(i);
     const double mean = ((u - cop).norm() + (v - cop).norm()) / 3.0 + cop.norm() / 3.0;
     lever_sum += triangle * mean;
     rim_sum += (u - cop).norm();

@@ -91,7 +91,9 @@ void SubGodObjectInjector::inject(const AreaContact& c, const Proxy& proxy, long
     point.m_combinedContactStiffness1 = contact.m_combinedContactStiffness1;
     point.m_combinedContactDamping1 = contact.m_combinedContactDamping1;
     // Warm start from the same sub-god-object's impulses of the previous step, if it was
-    // there (without it the solver's 30 iterations leave a slow creep, see README).
+    // there. Bullet 3.24 warm-starts the normal row only (setFrictionConstraintImpulse zeroes
+    // the friction rows' since 2019); the lateral impulses still tell the next step whether
+    // this point slipped (anchorIfSticking).
     if (warm.step == step - 1)
     {
       point.m_appliedImpulse = warm.normal;
@@ -201,8 +203,8 @@ void SubGodObjectInjector::recordImpulses(std::vector<Proxy>* proxies, long step
     warm.lateral2 = point.m_appliedImpulseLateral2;
     warm.friction = point.m_combinedFriction;
     point.m_contactPointFlags &= ~(kPadPointFlag | BT_CONTACT_FLAG_FRICTION_ANCHOR);
-    point.m_combinedSpinningFriction = 0.0;
-    point.m_combinedRollingFriction = 0.0;
+    point.m_combinedSpinningFriction = btManifoldResult::calculateCombinedSpinningFriction(rows.body0, rows.body1);
+    point.m_combinedRollingFriction = btManifoldResult::calculateCombinedRollingFriction(rows.body0, rows.body1);
     if (point.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING)
     {
       point.m_combinedContactStiffness1 = btManifoldResult::calculateCombinedContactStiffness(rows.body0, rows.body1);

@@ -24,6 +24,15 @@ bool isDynamicObject(const btSolverBody& body)
 {
   return !isStatic(body) && !isProxy(body);
 }
+
+// A torsional row's bound for its contact's normal impulse, as Bullet's iterations set it
+// (btSequentialImpulseConstraintSolver::solveSingleIteration: coefficient x normal impulse,
+// capped at the coefficient; zero while the contact does not push).
+btScalar torsionalBound(const btSolverConstraint& row, const btSolverConstraint& contact)
+{
+  const btScalar normal = contact.m_appliedImpulse;
+  return normal > 0.0 ? std::min(row.m_friction * normal, row.m_friction) : btScalar(0.0);
+}
 }  // namespace
 
 btScalar SupportPassSolver::solveGroup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
@@ -64,18 +73,23 @@ void SupportPassSolver::convertContacts(btPersistentManifold** manifolds, int nu
                                         const btContactSolverInfo& info)
 {
   btSequentialImpulseConstraintSolver::convertContacts(manifolds, num_manifolds, info);
-  rows_ += m_tmpSolverContactConstraintPool.size() + m_tmpSolverContactFrictionConstraintPool.size() +
-           m_tmpSolverContactRollingFrictionConstraintPool.size();
-  for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j)
+  btAlignedObjectArray<btSolverConstraint>& torsional = m_tmpSolverContactRollingFrictionConstraintPool;
+  for (int j = 0; j < torsional.size(); ++j)
   {
-    btSolverConstraint& row = m_tmpSolverContactRollingFrictionConstraintPool[j];
-    if (!std::isfinite(row.m_jacDiagABInv))
+    if (!std::isfinite(torsional[j].m_jacDiagABInv))
     {
-      // Neither body can turn (a proxy on a static object): nothing to solve.
-      row.m_jacDiagABInv = 0.0;
-      row.m_rhs = 0.0;
-      continue;
+      // Neither body can turn (a proxy on a static object): no row. (Kept with a zero
+      // effective mass, Bullet's row solve would return 0 / 0 as its residual and the
+      // iterations would never stop early.) Nothing indexes this pool.
+      torsional.swap(j, torsional.size() - 1);
+      torsional.pop_back();
+      --j;
     }
+  }
+  rows_ += m_tmpSolverContactConstraintPool.size() + m_tmpSolverContactFrictionConstraintPool.size() + torsional.size();
+  for (int j = 0; j < torsional.size(); ++j)
+  {
+    btSolverConstraint& row = torsional[j];
     const btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
     const btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
     // This step's external torques, which Bullet leaves out of these rows' velocity.
@@ -91,12 +105,11 @@ void SupportPassSolver::convertContacts(btPersistentManifold** manifolds, int nu
     const btVector3& axis = row.m_relpos2CrossNormal;
     const double turned = toBullet(pad->turn_since_anchor).dot(axis);
     row.m_rhs -= turned * info.m_frictionERP / info.m_timeStep * row.m_jacDiagABInv;
-    // Warm start inside this step's bound (the normal row's warm impulse times the row's
-    // coefficient, as the iterations will bound it).
+    // Warm start inside this step's bound (from the normal row's warm impulse, as the
+    // iterations will bound it).
     if (info.m_solverMode & SOLVER_USE_WARMSTARTING)
     {
-      const btScalar normal = m_tmpSolverContactConstraintPool[row.m_frictionIndex].m_appliedImpulse;
-      const btScalar bound = std::max<btScalar>(0.0, row.m_friction * normal);
+      const btScalar bound = torsionalBound(row, m_tmpSolverContactConstraintPool[row.m_frictionIndex]);
       const btScalar warm =
           btClamped<btScalar>(toBullet(pad->warm_torque_impulse).dot(axis) * info.m_warmstartingFactor, -bound, bound);
       row.m_appliedImpulse = warm;
@@ -113,16 +126,29 @@ btScalar SupportPassSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bo
 {
   for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j)
   {
-    const btSolverConstraint& row = m_tmpSolverContactRollingFrictionConstraintPool[j];
+    btSolverConstraint& row = m_tmpSolverContactRollingFrictionConstraintPool[j];
     PadRows* pad = padOf(row);
     if (pad == nullptr)
     {
       continue;
     }
+    // Within the bound of the final normal impulse (after the support passes): Bullet solves a
+    // torsional row only while its contact pushes, so a warm-started impulse would otherwise
+    // stay on a contact that let go.
+    const btScalar bound = torsionalBound(row, m_tmpSolverContactConstraintPool[row.m_frictionIndex]);
+    const btScalar clamped = btClamped<btScalar>(row.m_appliedImpulse, -bound, bound);
+    if (clamped != row.m_appliedImpulse)
+    {
+      const btScalar change = clamped - row.m_appliedImpulse;
+      btSolverBody& body_a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+      btSolverBody& body_b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+      body_a.internalApplyImpulse(row.m_contactNormal1 * body_a.internalGetInvMass(), row.m_angularComponentA, change);
+      body_b.internalApplyImpulse(row.m_contactNormal2 * body_b.internalGetInvMass(), row.m_angularComponentB, change);
+      row.m_appliedImpulse = clamped;
+    }
     pad->state->torque_impulse += toEigen(row.m_relpos2CrossNormal) * row.m_appliedImpulse;
-    // At its bound (the last iteration's): the pad slipped about this axis.
-    const btScalar bound = row.m_upperLimit;
-    if (bound > 0.0 && std::abs(row.m_appliedImpulse) >= 0.999 * bound)
+    // At its bound: the pad slipped about this axis (or let go).
+    if (!(bound > 0.0) || std::abs(row.m_appliedImpulse) >= 0.999 * bound)
     {
       pad->state->twist_slipped = true;
     }

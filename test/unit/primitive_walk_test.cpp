@@ -146,6 +146,36 @@ TEST(PrimitiveWalk, TheMeshWalkConvergesToTheExactWalk)
   EXPECT_LT(previous, 2e-5);
 }
 
+TEST(PrimitiveWalk, DegenerateStartsAreDroppedNotWalked)
+{
+  const PrimitiveSurface sphere{PrimitiveSurface::Kind::kSphere, 0.05, 0.0};
+  const PrimitiveSurface cylinder{PrimitiveSurface::Kind::kCylinder, 0.02, 0.1};
+  const Eigen::Vector3d top(0.0, 0.0, 0.05);
+  // A direction along the normal has no way along the surface.
+  const WalkResult along_normal =
+      walkPrimitive(sphere, top, Eigen::Vector3d::UnitZ(), 0.01, limitsFor(Eigen::Vector3d::UnitZ()));
+  EXPECT_EQ(along_normal.stop, WalkStop::kDropped);
+  EXPECT_NEAR(along_normal.position.norm(), 0.05, 1e-15);
+  EXPECT_EQ(walkPrimitive(cylinder, Eigen::Vector3d(0.02, 0.0, 0.0), Eigen::Vector3d::UnitX(), 0.01,
+                          limitsFor(Eigen::Vector3d::UnitX()))
+                .stop,
+            WalkStop::kDropped);
+  // A contact normal 35 degrees from the axis starts on the cap, which lies outside a friction
+  // cone of atan(0.5) = 26.6 degrees: dropped, as on the mantle and on meshes.
+  const Eigen::Vector3d tilted(std::sin(35.0 * M_PI / 180.0), 0.0, std::cos(35.0 * M_PI / 180.0));
+  EXPECT_EQ(walkPrimitive(cylinder, Eigen::Vector3d(0.0, 0.0, 0.05), Eigen::Vector3d::UnitY(), 0.01,
+                          limitsFor(tilted, M_PI / 3.0, 0.5))
+                .stop,
+            WalkStop::kDropped);
+  // A surface touched from inside (normal_sign -1) keeps its limits: 60 degrees.
+  ContactParams params;
+  params.friction = INFINITY;
+  WalkLimits inside = makeWalkLimits(params, -Eigen::Vector3d::UnitZ(), -1.0);
+  const WalkResult from_inside = walkPrimitive(sphere, top, Eigen::Vector3d::UnitX(), 1.0, inside);
+  EXPECT_EQ(from_inside.stop, WalkStop::kAngleLimit);
+  EXPECT_NEAR(from_inside.walked, 0.05 * M_PI / 3.0, 1e-12);
+}
+
 TEST(PrimitiveWalk, BadInputIsRefused)
 {
   const PrimitiveSurface sphere{PrimitiveSurface::Kind::kSphere, 0.04, 0.0};
