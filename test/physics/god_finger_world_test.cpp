@@ -262,6 +262,57 @@ TEST(GodFingerWorld, ThePadConstraintIsSixRowsPerFinger)
   EXPECT_EQ(rows(ContactModel::kGodFinger, PadSolver::kConstraint) - point, 3);
 }
 
+// A pad that held a twist (warm-started torsional rows, an orientation anchor pulling the box
+// back) lets go of it without a kick when the twist ends and the finger lifts off.
+TEST(GodFingerWorld, APadThatHeldATwistLetsGoWithoutAKick)
+{
+  BodyDescription table;
+  table.name = "table";
+  table.is_static = true;
+  table.geometry.kind = GeometryKind::kBox;
+  table.geometry.size = Eigen::Vector3d(1.0, 1.0, 0.05);
+  table.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.025);
+  table.material.friction = 0.0;
+  BodyDescription box;
+  box.name = "box";
+  box.geometry.kind = GeometryKind::kBox;
+  box.geometry.size = Eigen::Vector3d(0.1, 0.1, 0.02);
+  box.mass = 0.2;
+  box.inertia = Eigen::Vector3d(1.7e-4, 1.7e-4, 3.3e-4).asDiagonal();
+  box.pose.translation() = Eigen::Vector3d(0.0, 0.0, 0.01);
+  box.material.friction = 0.8;
+  SceneDescription scene;
+  scene.name = "twist";
+  scene.bodies = {table, box};
+  WorldParams params;
+  GodFingerWorld world(scene, params);
+  const double rest = 0.02 + params.coupling.proxy_radius;
+  const int finger = world.addInterface(Eigen::Vector3d(0.0, 0.0, rest));
+  world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, rest - 0.005));  // 2 N
+  run(&world, 0.5);
+  // 80 % of the uniform disk's (2/3) mu N a, held 0.5 s, then the hand goes up 1 cm per step.
+  const InterfaceState& state = world.interfaceState(finger);
+  ASSERT_EQ(state.contact_count, 1);
+  const double torque = 0.8 * 2.0 / 3.0 * 0.8 * state.user_force.norm() * state.contacts[0].radius;
+  for (int i = 0; i < 500; ++i)
+  {
+    world.applyBodyWrench(1, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, torque));
+    world.step();
+  }
+  EXPECT_LT(std::abs(world.bodyState(1).angular_velocity.z()), 1e-6);
+  double fastest = 0.0;
+  for (int i = 0; i < 200; ++i)
+  {
+    world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, rest + 0.01 * (i + 1)));
+    world.step();
+    fastest = std::max(fastest, std::abs(world.bodyState(1).angular_velocity.z()));
+  }
+  std::printf("[ let go ] held %.4f N m; fastest turn after %.3g rad/s\n", torque, fastest);
+  EXPECT_EQ(world.interfaceState(finger).contact_count, 0);
+  // The held impulse would turn the box at 0.8 torque dt / I = 0.01-0.02 rad/s.
+  EXPECT_LT(fastest, 1e-3);
+}
+
 // A ball on a table, pushed by a finger along a fixed script.
 std::vector<double> ballTrajectory(GodFingerWorld* world, int finger)
 {
