@@ -14,16 +14,21 @@ double contactRadius(const Eigen::Vector3d& coupling, const Eigen::Vector3d& nor
   return params.max_radius * -std::expm1(-compression / params.distance_constant);
 }
 
+RadialDistances::RadialDistances(double radius_in, const Eigen::Vector3d& coupling, const ContactParams& params)
+    : radius(radius_in)
+{
+  // alpha^(-(v/|v|) . r_i) = exp(-ln(alpha) (v/|v|) . r_i); the exponent is 0 when |v| = 0.
+  const double length = coupling.norm();
+  if (length > 0.0)
+  {
+    k = coupling * (-std::log(params.alpha) / length);
+  }
+}
+
 double radialDistance(double radius, const Eigen::Vector3d& coupling, const Eigen::Vector3d& radial,
                       const ContactParams& params)
 {
-  const double length = coupling.norm();
-  if (!(length > 0.0))
-  {
-    return radius;
-  }
-  const double exponent = -coupling.dot(radial) / length;
-  return radius * std::pow(params.alpha, exponent);
+  return RadialDistances(radius, coupling, params)(radial);
 }
 
 void computeContactArea(const TriangleMesh& mesh, const ContactQuery& query, const ContactParams& params,
@@ -50,12 +55,13 @@ void computeContactArea(const TriangleMesh& mesh, const ContactQuery& query, con
   const double sign = mesh.normals()[location.face].dot(normal) < 0.0 ? -1.0 : 1.0;
   const WalkLimits limits = makeWalkLimits(params, normal, sign);
 
+  const RadialDistances distances(out->radius, query.coupling, params);
   const int n = params.sub_god_objects;
   for (int i = 0; i < n; ++i)
   {
     SubGodObject& sgo = out->sub_god_objects[i];
     sgo.radial = radialVector(normal, out->first_tangent, i, n);
-    sgo.target_distance = radialDistance(out->radius, query.coupling, sgo.radial, params);
+    sgo.target_distance = distances(sgo.radial);
     SurfaceLocation start;
     Eigen::Vector3d direction;
     WalkStop stop = WalkStop::kDropped;

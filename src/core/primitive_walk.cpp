@@ -381,12 +381,13 @@ void computeContactArea(const PrimitiveSurface& surface, const ContactQuery& que
   const double half_length = 0.5 * surface.length;
   const CylinderState cylinder =
       sphere ? CylinderState() : cylinderStart(surface.radius, half_length, query.location.point, limits);
+  const RadialDistances distances(out->radius, query.coupling, params);
   const int n = params.sub_god_objects;
   for (int i = 0; i < n; ++i)
   {
     SubGodObject& sgo = out->sub_god_objects[i];
     sgo.radial = radialVector(normal, out->first_tangent, i, n);
-    sgo.target_distance = radialDistance(out->radius, query.coupling, sgo.radial, params);
+    sgo.target_distance = distances(sgo.radial);
     sgo.walk = sphere ? walkSphere(surface.radius, n0, tangentAt(n0, sgo.radial), sgo.target_distance, limits)
                       : walkCylinder(surface.radius, half_length, cylinder, sgo.radial, sgo.target_distance, limits);
     sgo.position = sgo.walk.position;

@@ -22,6 +22,7 @@
 #include "god_finger/core/surface_walk.h"
 
 #include <array>
+#include <cmath>
 
 namespace god_finger
 {
@@ -67,6 +68,18 @@ double contactRadius(const Eigen::Vector3d& coupling, const Eigen::Vector3d& nor
 // Eq. 2 for one unit radial vector.
 double radialDistance(double radius, const Eigen::Vector3d& coupling, const Eigen::Vector3d& radial,
                       const ContactParams& params);
+// Eq. 2 prepared once per contact area: d_i = r exp(k . r_i) with k = -ln(alpha) v / |v| (one
+// exp per sub-god-object instead of a norm and a pow). radialDistance is this.
+struct RadialDistances
+{
+  double radius = 0.0;
+  Eigen::Vector3d k = Eigen::Vector3d::Zero();
+  RadialDistances(double radius, const Eigen::Vector3d& coupling, const ContactParams& params);
+  double operator()(const Eigen::Vector3d& radial) const
+  {
+    return radius * std::exp(k.dot(radial));
+  }
+};
 
 // The whole method for one contact. `params` must be valid (validate()); `out` is
 // overwritten. Never allocates, never throws.
