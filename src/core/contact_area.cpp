@@ -31,27 +31,37 @@ double radialDistance(double radius, const Eigen::Vector3d& coupling, const Eige
   return RadialDistances(radius, coupling, params)(radial);
 }
 
-void computeContactArea(const TriangleMesh& mesh, const ContactQuery& query, const ContactParams& params,
-                        ContactAreaResult* out)
+bool beginContactArea(const ContactQuery& query, const ContactParams& params, ContactAreaResult* out)
 {
   out->valid = false;
   out->count = 0;
   out->active = 0;
   out->radius = 0.0;
-  const SurfaceLocation& location = query.location;
   const double normal_length = query.normal.norm();
-  if (location.face < 0 || location.face >= mesh.triangleCount() || !location.barycentric.allFinite() ||
-      !location.point.allFinite() || !std::isfinite(normal_length) || normal_length < 1e-9 ||
+  if (!query.location.point.allFinite() || !std::isfinite(normal_length) || normal_length < 1e-9 ||
       !query.coupling.allFinite() || !std::isfinite(query.depth))
   {
+    return false;
+  }
+  out->point = query.location.point;
+  out->normal = query.normal / normal_length;
+  out->depth = query.depth;
+  out->radius = contactRadius(query.coupling, out->normal, params);
+  out->first_tangent = transportTangent(query.reference_tangent, out->normal);
+  return true;
+}
+
+void computeContactArea(const TriangleMesh& mesh, const ContactQuery& query, const ContactParams& params,
+                        ContactAreaResult* out)
+{
+  const SurfaceLocation& location = query.location;
+  const bool on_mesh = location.face >= 0 && location.face < mesh.triangleCount() && location.barycentric.allFinite();
+  if (!beginContactArea(query, params, out) || !on_mesh)
+  {
+    out->radius = 0.0;
     return;
   }
-  const Eigen::Vector3d normal = query.normal / normal_length;
-  out->point = location.point;
-  out->normal = normal;
-  out->depth = query.depth;
-  out->radius = contactRadius(query.coupling, normal, params);
-  out->first_tangent = transportTangent(query.reference_tangent, normal);
+  const Eigen::Vector3d& normal = out->normal;
   const double sign = mesh.normals()[location.face].dot(normal) < 0.0 ? -1.0 : 1.0;
   const WalkLimits limits = makeWalkLimits(params, normal, sign);
 

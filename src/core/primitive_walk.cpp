@@ -355,22 +355,12 @@ WalkResult walkPrimitive(const PrimitiveSurface& surface, const Eigen::Vector3d&
 void computeContactArea(const PrimitiveSurface& surface, const ContactQuery& query, const ContactParams& params,
                         ContactAreaResult* out)
 {
-  out->valid = false;
-  out->count = 0;
-  out->active = 0;
-  out->radius = 0.0;
-  const double normal_length = query.normal.norm();
-  if (!query.location.point.allFinite() || !std::isfinite(normal_length) || normal_length < 1e-9 ||
-      !query.coupling.allFinite() || !std::isfinite(query.depth) || !(surface.radius > 0.0))
+  if (!beginContactArea(query, params, out) || !(surface.radius > 0.0))
   {
+    out->radius = 0.0;
     return;
   }
-  const Eigen::Vector3d normal = query.normal / normal_length;
-  out->point = query.location.point;
-  out->normal = normal;
-  out->depth = query.depth;
-  out->radius = contactRadius(query.coupling, normal, params);
-  out->first_tangent = transportTangent(query.reference_tangent, normal);
+  const Eigen::Vector3d& normal = out->normal;
   const WalkLimits limits = makeWalkLimits(params, normal, 1.0);
   const bool sphere = surface.kind == PrimitiveSurface::Kind::kSphere;
   const Eigen::Vector3d n0 = query.location.point.normalized();

@@ -81,6 +81,12 @@ struct RadialDistances
   }
 };
 
+// What computing a contact area begins with on any surface: clears `out`; false (and `out`
+// invalid and empty) on a non-finite point, coupling or depth or a normal shorter than 1e-9;
+// else sets its point, unit normal, depth, radius (Eq. 1) and first tangent. Used by both
+// computeContactArea overloads (this one and core/primitive_walk.h's).
+bool beginContactArea(const ContactQuery& query, const ContactParams& params, ContactAreaResult* out);
+
 // The whole method for one contact. `params` must be valid (validate()); `out` is
 // overwritten. Never allocates, never throws.
 void computeContactArea(const TriangleMesh& mesh, const ContactQuery& query, const ContactParams& params,
