@@ -20,25 +20,12 @@ namespace god_finger
 {
 namespace
 {
-struct Layout
-{
-  const char* name;
-  ContactModel model;
-  PadSolver pad_solver;
-};
-
-constexpr Layout kLayouts[] = {
-    {"god_object", ContactModel::kGodObject, PadSolver::kConstraint},
-    {"soft_finger", ContactModel::kSoftFinger, PadSolver::kConstraint},
-    {"god_finger", ContactModel::kGodFinger, PadSolver::kConstraint},
-    {"god_finger/points", ContactModel::kGodFinger, PadSolver::kPoints},
-};
 
 void capacities()
 {
   for (const PadLoad load : {PadLoad::kTwist, PadLoad::kTilt})
   {
-    for (const Layout& layout : kLayouts)
+    for (const PadLayout& layout : kPadLayouts)
     {
       for (const double normal_force : {0.5, 1.0, 2.0, 3.0, 4.0, 5.0})
       {
@@ -65,7 +52,7 @@ void capacities()
 
 void creep(const std::string& scenes_dir)
 {
-  for (const Layout& layout : {kLayouts[2], kLayouts[3]})
+  for (const PadLayout& layout : {kPadLayouts[2], kPadLayouts[3]})
   {
     for (const int iterations : {10, 20, 30, 60, 120})
     {

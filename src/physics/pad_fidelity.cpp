@@ -12,7 +12,9 @@ namespace
 constexpr double kSettle = 0.5;  // s before any torque
 constexpr double kBoxHeight = 0.02;
 
-SceneDescription padScene(PadLoad load, double friction)
+}  // namespace
+
+SceneDescription padLoadScene(PadLoad load, double friction)
 {
   BodyDescription table;
   table.name = "table";
@@ -41,6 +43,8 @@ SceneDescription padScene(PadLoad load, double friction)
   return scene;
 }
 
+namespace
+{
 // The box's turn about the load's axis (z for a twist, x for a tilt).
 double turn(PadLoad load, const BodyState& state)
 {
@@ -59,7 +63,7 @@ PadLoadMeasurement run(const PadLoadSetup& setup, double duration, double torque
   {
     params.gravity.setZero();
   }
-  GodFingerWorld world(padScene(setup.load, setup.friction), params);
+  GodFingerWorld world(padLoadScene(setup.load, setup.friction), params);
   const int box = tilt ? 0 : 1;
   const double radius = params.coupling.proxy_radius;
   const double rest = kBoxHeight + radius;

@@ -4,6 +4,7 @@
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
+#include "god_finger/physics/pad_fidelity.h"
 #include "god_finger/physics/urdf_scene.h"
 
 #include <gtest/gtest.h>
@@ -231,22 +232,7 @@ TEST(GodFingerWorld, ThePadConstraintIsSixRowsPerFinger)
 {
   auto rows = [](ContactModel model, PadSolver solver)
   {
-    BodyDescription table;
-    table.name = "table";
-    table.is_static = true;
-    table.geometry.kind = GeometryKind::kBox;
-    table.geometry.size = Eigen::Vector3d(1.0, 1.0, 0.1);
-    table.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.05);
-    BodyDescription box;
-    box.name = "box";
-    box.geometry.kind = GeometryKind::kBox;
-    box.geometry.size = Eigen::Vector3d(0.1, 0.1, 0.02);
-    box.mass = 0.2;
-    box.inertia = Eigen::Matrix3d::Identity() * 2e-4;
-    box.pose.translation() = Eigen::Vector3d(0.0, 0.0, 0.01);
-    SceneDescription scene;
-    scene.name = "press";
-    scene.bodies = {table, box};
+    const SceneDescription scene = padLoadScene(PadLoad::kTwist, 0.8);
     WorldParams params;
     params.model = model;
     params.pad_solver = solver;
@@ -266,24 +252,7 @@ TEST(GodFingerWorld, ThePadConstraintIsSixRowsPerFinger)
 // back) lets go of it without a kick when the twist ends and the finger lifts off.
 TEST(GodFingerWorld, APadThatHeldATwistLetsGoWithoutAKick)
 {
-  BodyDescription table;
-  table.name = "table";
-  table.is_static = true;
-  table.geometry.kind = GeometryKind::kBox;
-  table.geometry.size = Eigen::Vector3d(1.0, 1.0, 0.05);
-  table.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.025);
-  table.material.friction = 0.0;
-  BodyDescription box;
-  box.name = "box";
-  box.geometry.kind = GeometryKind::kBox;
-  box.geometry.size = Eigen::Vector3d(0.1, 0.1, 0.02);
-  box.mass = 0.2;
-  box.inertia = Eigen::Vector3d(1.7e-4, 1.7e-4, 3.3e-4).asDiagonal();
-  box.pose.translation() = Eigen::Vector3d(0.0, 0.0, 0.01);
-  box.material.friction = 0.8;
-  SceneDescription scene;
-  scene.name = "twist";
-  scene.bodies = {table, box};
+  const SceneDescription scene = padLoadScene(PadLoad::kTwist, 0.8);  // a 2 cm box, 0.2 kg
   WorldParams params;
   GodFingerWorld world(scene, params);
   const double rest = 0.02 + params.coupling.proxy_radius;

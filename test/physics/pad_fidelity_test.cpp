@@ -20,21 +20,11 @@ namespace god_finger
 {
 namespace
 {
-struct Layout
-{
-  const char* name;
-  ContactModel model;
-  PadSolver pad_solver;
-};
-
-constexpr Layout kGodObject = {"god_object", ContactModel::kGodObject, PadSolver::kPoints};
-constexpr Layout kSoftFinger = {"soft_finger", ContactModel::kSoftFinger, PadSolver::kPoints};
-constexpr Layout kPoints = {"god_finger/points", ContactModel::kGodFinger, PadSolver::kPoints};
-constexpr Layout kConstraint = {"god_finger/constraint", ContactModel::kGodFinger, PadSolver::kConstraint};
-constexpr Layout kLayouts[] = {kGodObject, kSoftFinger, kPoints, kConstraint};
+// kPadLayouts: god_object, soft_finger, god_finger (pad constraint), god_finger/points.
+constexpr const PadLayout& kPoints = kPadLayouts[3];
 constexpr double kForces[] = {0.5, 2.0, 5.0};
 
-PadLoadSetup setupFor(const Layout& layout, PadLoad load, double normal_force)
+PadLoadSetup setupFor(const PadLayout& layout, PadLoad load, double normal_force)
 {
   PadLoadSetup setup;
   setup.load = load;
@@ -74,7 +64,7 @@ TEST(PadFidelity, EachLayoutHoldsTheTwistItsContactCarries)
 {
   for (const double normal_force : kForces)
   {
-    for (const Layout& layout : kLayouts)
+    for (const PadLayout& layout : kPadLayouts)
     {
       SCOPED_TRACE(std::string(layout.name) + " at " + std::to_string(normal_force) + " N");
       const PadLoadSetup setup = setupFor(layout, PadLoad::kTwist, normal_force);
@@ -139,7 +129,7 @@ TEST(PadFidelity, OnlyTheGodFingerHoldsATilt)
 {
   for (const double normal_force : kForces)
   {
-    for (const Layout& layout : kLayouts)
+    for (const PadLayout& layout : kPadLayouts)
     {
       SCOPED_TRACE(std::string(layout.name) + " at " + std::to_string(normal_force) + " N");
       const PadLoadSetup setup = setupFor(layout, PadLoad::kTilt, normal_force);

@@ -14,6 +14,7 @@
 // Units: SI; rotations in rad about the torque's axis. Not real-time (builds a world).
 #pragma once
 
+#include "god_finger/physics/scene_description.h"
 #include "god_finger/physics/world_params.h"
 
 namespace god_finger
@@ -23,6 +24,26 @@ enum class PadLoad
   kTwist,  // torque about the contact normal
   kTilt,   // torque about a tangent
 };
+
+// The contact layouts the fidelity set-ups compare, in the report's order: a point, Bullet's
+// soft finger, the god-finger with its default pad solver (the pad constraint) and with the
+// paper's points.
+struct PadLayout
+{
+  const char* name;
+  ContactModel model;
+  PadSolver pad_solver;
+};
+inline constexpr PadLayout kPadLayouts[] = {
+    {"god_object", ContactModel::kGodObject, PadSolver::kConstraint},
+    {"soft_finger", ContactModel::kSoftFinger, PadSolver::kConstraint},
+    {"god_finger", ContactModel::kGodFinger, PadSolver::kConstraint},
+    {"god_finger/points", ContactModel::kGodFinger, PadSolver::kPoints},
+};
+
+// The set-up's scene: the box (and, for a twist, the frictionless table under it); the box's
+// friction is `friction`.
+SceneDescription padLoadScene(PadLoad load, double friction);
 
 struct PadLoadSetup
 {
