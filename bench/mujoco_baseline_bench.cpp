@@ -50,6 +50,7 @@
 #include "god_finger/physics/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/physics/scenario_metrics.h"
+#include "scale_scene.h"
 
 #include <benchmark/benchmark.h>
 #include <mujoco/mujoco.h>
@@ -406,6 +407,174 @@ void BM_MujocoScenarioStep(benchmark::State& state)
   state.counters["mean_solver_iterations"] = static_cast<double>(solver_iterations) / steps;
   state.SetLabel(std::string(scenarioName(scenario)) + "/mujoco_condim" + std::to_string(condim));
 }
+
+// --- The scale section (issue 17): boxes on a table, fingers dragging some -------------------
+
+// The (objects, fingers) pairs measured: fingers on the same boxes whatever the clutter.
+const std::pair<int, int> kScaleScenes[] = {{1, 1}, {10, 2}, {100, 1}, {100, 2}, {100, 10}, {1000, 2}};
+
+void setScaleCounters(benchmark::State& state, scale::StepTimes* times, long steps, double iterations)
+{
+  state.counters["steps"] = static_cast<double>(steps);
+  state.counters["p50_us"] = times->percentile(0.5);
+  state.counters["p99_us"] = times->percentile(0.99);
+  state.counters["mean_solver_iterations"] = iterations / std::max(1L, steps);
+}
+
+// range(0): index into kScaleScenes; range(1): kModels' index (god_object, god_finger,
+// soft_finger), with the world's defaults (sleeping on).
+void BM_ScaleStep(benchmark::State& state)
+{
+  const auto [objects, finger_count] = kScaleScenes[state.range(0)];
+  const ContactModel model = kModels[state.range(1)];
+  const SceneDescription scene = scale::scene(objects);
+  const std::vector<WaypointPath> fingers = scale::fingers(finger_count, objects);
+  WorldParams params = scenarioParams(scenarioOptions(Scenario::kSlide, model));
+  const double dt = params.time_step;
+  const long steps = std::lround(scale::kDuration / dt);
+  scale::StepTimes times;
+  times.us.reserve(static_cast<std::size_t>(steps));
+  double iterations = 0.0;
+  for (auto _ : state)
+  {
+    state.PauseTiming();
+    auto world = std::make_unique<GodFingerWorld>(scene, params);
+    for (const WaypointPath& finger : fingers)
+    {
+      world->addInterface(finger.at(0.0));
+    }
+    times.us.clear();
+    iterations = 0.0;
+    state.ResumeTiming();
+    for (long i = 0; i < steps; ++i)
+    {
+      const scale::Clock::time_point begin = scale::Clock::now();
+      for (std::size_t f = 0; f < fingers.size(); ++f)
+      {
+        world->setInterfaceTarget(static_cast<int>(f), fingers[f].at((i + 1) * dt));
+      }
+      world->step();
+      times.us.push_back(scale::microseconds(begin, scale::Clock::now()));
+      iterations += world->solverIterationsUsed();
+    }
+    state.PauseTiming();
+    world.reset();
+    state.ResumeTiming();
+  }
+  setScaleCounters(state, &times, steps, iterations);
+  state.SetLabel("scale/" + std::to_string(objects) + "x" + std::to_string(finger_count) + "/" +
+                 contactModelName(model));
+}
+
+// The same scene in MuJoCo, finger contacts condim 4. Collisions are MuJoCo's own (contype and
+// conaffinity; explicit pairs would be quadratic in the objects): boxes and table collide with
+// everything, proxies with boxes only. Friction combines by maximum, hence friction 1 on every
+// body; the proxies' geoms carry condim 4 and the pad's torsional friction (2/3) mu a.
+std::string mujocoScaleXml(const SceneDescription& scene, const std::vector<WaypointPath>& fingers,
+                           const WorldParams& params)
+{
+  std::ostringstream xml;
+  xml << "<mujoco model=\"" << scene.name << "\">\n"
+      << "<compiler angle=\"radian\" inertiafromgeom=\"false\" boundmass=\"0\" boundinertia=\"0\"/>\n"
+      << "<option timestep=\"" << number(params.time_step) << "\" gravity=\"" << vec(params.gravity)
+      << "\" integrator=\"Euler\" solver=\"Newton\" iterations=\"100\" tolerance=\"1e-8\" cone=\"elliptic\""
+      << " impratio=\"10\" noslip_iterations=\"3\"/>\n"
+      << "<size nconmax=\"20000\" njmax=\"60000\"/>\n"
+      << "<default><geom contype=\"1\" conaffinity=\"3\" condim=\"3\" friction=\"" << number(scale::kFriction)
+      << " 0 0\"/></default>\n<worldbody>\n";
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+  {
+    const BodyDescription& body = scene.bodies[i];
+    const std::string size = vec(0.5 * body.geometry.size);
+    if (body.is_static)
+    {
+      xml << "<geom type=\"box\" size=\"" << size << "\" pos=\"" << vec(body.pose.translation()) << "\"/>\n";
+      continue;
+    }
+    const Eigen::Matrix3d& I = body.inertia;
+    xml << "<body pos=\"" << vec(body.pose.translation()) << "\">\n<freejoint/>\n<inertial pos=\"0 0 0\" mass=\""
+        << number(body.mass) << "\" diaginertia=\"" << number(I(0, 0)) << " " << number(I(1, 1)) << " "
+        << number(I(2, 2)) << "\"/>\n<geom type=\"box\" size=\"" << size << "\"/>\n</body>\n";
+  }
+  const double r = params.coupling.proxy_radius;
+  const double m = params.coupling.proxy_mass;
+  const FingerFriction finger;
+  for (std::size_t f = 0; f < fingers.size(); ++f)
+  {
+    xml << "<body name=\"p" << f << "\" pos=\"" << vec(fingers[f].at(0.0)) << "\">\n"
+        << "<joint name=\"p" << f << "x\" type=\"slide\" axis=\"1 0 0\"/>\n"
+        << "<joint name=\"p" << f << "y\" type=\"slide\" axis=\"0 1 0\"/>\n"
+        << "<joint name=\"p" << f << "z\" type=\"slide\" axis=\"0 0 1\"/>\n"
+        << "<inertial pos=\"0 0 0\" mass=\"" << number(m) << "\" diaginertia=\""
+        << vec(Eigen::Vector3d::Constant(0.4 * m * r * r)) << "\"/>\n"
+        << "<geom type=\"sphere\" size=\"" << number(r) << "\" contype=\"2\" conaffinity=\"0\" condim=\"4\" friction=\""
+        << number(scale::kFriction) << " " << number(finger.torsional_per_mu * scale::kFriction) << " 0\"/>\n</body>\n";
+  }
+  xml << "</worldbody>\n</mujoco>\n";
+  return xml.str();
+}
+
+void BM_MujocoScaleStep(benchmark::State& state)
+{
+  const auto [objects, finger_count] = kScaleScenes[state.range(0)];
+  const SceneDescription scene = scale::scene(objects);
+  const std::vector<WaypointPath> fingers = scale::fingers(finger_count, objects);
+  const WorldParams params = scenarioParams(scenarioOptions(Scenario::kSlide, ContactModel::kGodFinger));
+  const ModelPtr model = loadMujoco(mujocoScaleXml(scene, fingers, params));
+  const DataPtr data(mj_makeData(model.get()));
+  const double dt = params.time_step;
+  const long steps = std::lround(scale::kDuration / dt);
+  std::vector<int> proxy_dof(finger_count);
+  std::vector<int> proxy_qpos(finger_count);
+  for (int f = 0; f < finger_count; ++f)
+  {
+    const int joint = mj_name2id(model.get(), mjOBJ_JOINT, ("p" + std::to_string(f) + "x").c_str());
+    proxy_dof[f] = model->jnt_dofadr[joint];
+    proxy_qpos[f] = model->jnt_qposadr[joint];
+  }
+  const Eigen::Vector3d gravity_compensation = -params.coupling.proxy_mass * params.gravity;
+  std::vector<Eigen::Vector3d> previous_target(finger_count);
+  scale::StepTimes times;
+  times.us.reserve(static_cast<std::size_t>(steps));
+  double iterations = 0.0;
+  for (auto _ : state)
+  {
+    state.PauseTiming();
+    mj_resetData(model.get(), data.get());
+    for (int f = 0; f < finger_count; ++f)
+    {
+      previous_target[f] = fingers[f].at(0.0);
+    }
+    times.us.clear();
+    iterations = 0.0;
+    state.ResumeTiming();
+    for (long i = 0; i < steps; ++i)
+    {
+      const scale::Clock::time_point begin = scale::Clock::now();
+      for (int f = 0; f < finger_count; ++f)
+      {
+        const Eigen::Vector3d target = fingers[f].at((i + 1) * dt);
+        const int dof = proxy_dof[f];
+        const mjtNum* q = data->qpos + proxy_qpos[f];
+        const Eigen::Vector3d position = fingers[f].at(0.0) + Eigen::Vector3d(q[0], q[1], q[2]);
+        const Eigen::Vector3d velocity(data->qvel[dof], data->qvel[dof + 1], data->qvel[dof + 2]);
+        const Eigen::Vector3d force =
+            couplingForce(params.coupling, target, (target - previous_target[f]) / dt, position, velocity).on_proxy +
+            gravity_compensation;
+        for (int k = 0; k < 3; ++k)
+        {
+          data->qfrc_applied[dof + k] = force[k];
+        }
+        previous_target[f] = target;
+      }
+      mj_step(model.get(), data.get());
+      times.us.push_back(scale::microseconds(begin, scale::Clock::now()));
+      iterations += data->solver_iter;
+    }
+  }
+  setScaleCounters(state, &times, steps, iterations);
+  state.SetLabel("scale/" + std::to_string(objects) + "x" + std::to_string(finger_count) + "/mujoco_condim4");
+}
 }  // namespace
 
 // Scenario indices as kScenarios: 0 slide, 1 lift_one, 3 pinch_cylinder.
@@ -415,6 +584,20 @@ BENCHMARK(BM_ScenarioStep)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
     ->Repetitions(5)
+    ->UseRealTime();
+BENCHMARK(BM_ScaleStep)
+    ->ArgsProduct({{0, 1, 2, 3, 4, 5}, {0, 1, 2}})
+    ->ArgNames({"scene", "model"})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
+    ->UseRealTime();
+BENCHMARK(BM_MujocoScaleStep)
+    ->DenseRange(0, 5)
+    ->ArgNames({"scene"})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3)
     ->UseRealTime();
 BENCHMARK(BM_MujocoScenarioStep)
     ->ArgsProduct({{0, 1, 3}, {3, 4, 6}})

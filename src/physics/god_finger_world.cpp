@@ -10,6 +10,7 @@
 #include "proxy.h"
 #include "sub_god_object_injection.h"
 #include "support_pass_solver.h"
+#include "touching_islands.h"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -24,6 +25,9 @@ namespace
 {
 // Sub-god-objects closer than this to the contact point (m) duplicate it and are not added.
 constexpr double kCoincident = 1e-7;
+// Two touches of one finger on one body whose normals differ by less than this (rad) and whose
+// points are within r_max are one touched region (Impl::coveredByDeeperTouch).
+constexpr double kSameRegionAngle = 20.0 * 3.14159265358979323846 / 180.0;
 
 // The exact walk's surface for a sphere or a cylinder; none for boxes (their 12-triangle walk
 // surface is exact already) and meshes.
@@ -40,18 +44,63 @@ std::optional<PrimitiveSurface> primitiveSurface(const Geometry& geometry)
   return std::nullopt;
 }
 
-// Runs a hook between collision detection and the solver: where sub-god-objects join.
+// Runs a hook between collision detection and the solver (where sub-god-objects join), and
+// decides sleeping with this world's own time (Bullet's is one global, gDeactivationTime).
 class HookedWorld : public btDiscreteDynamicsWorld
 {
  public:
-  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+  HookedWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
+              btCollisionConfiguration* configuration)
+      : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration)
+  {
+    // Islands of touching bodies (touching_islands.h), in Bullet's own storage: the world
+    // destroys and frees its island manager as it made it.
+    m_islandManager->~btSimulationIslandManager();
+    btAlignedFree(m_islandManager);
+    m_islandManager = new (btAlignedAlloc(sizeof(TouchingIslands), 16)) TouchingIslands();
+  }
   std::function<void()> after_collision;
+  double sleep_time = 0.0;  // s, SleepParams::time; 0: bodies carry DISABLE_DEACTIVATION
   void performDiscreteCollisionDetection() override
   {
     btDiscreteDynamicsWorld::performDiscreteCollisionDetection();
     if (after_collision)
     {
       after_collision();
+    }
+  }
+
+ protected:
+  // Bullet's rule (btDiscreteDynamicsWorld::updateActivationState) with sleep_time for
+  // gDeactivationTime: a body slow for longer wants to sleep; its island (simulation island
+  // manager, next step) sleeps when every body in it wants to; a sleeping body keeps zero
+  // velocity.
+  void updateActivationState(btScalar time_step) override
+  {
+    for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i)
+    {
+      btRigidBody* body = m_nonStaticRigidBodies[i];
+      body->updateDeactivation(time_step);
+      const int state = body->getActivationState();
+      if (state == DISABLE_DEACTIVATION || state == DISABLE_SIMULATION)
+      {
+        continue;
+      }
+      const bool wants_sleep =
+          state == ISLAND_SLEEPING || state == WANTS_DEACTIVATION || body->getDeactivationTime() > sleep_time;
+      if (!wants_sleep)
+      {
+        body->setActivationState(ACTIVE_TAG);
+      }
+      else if (state == ACTIVE_TAG)
+      {
+        body->setActivationState(WANTS_DEACTIVATION);
+      }
+      else if (state == ISLAND_SLEEPING)
+      {
+        body->setLinearVelocity(btVector3(0, 0, 0));
+        body->setAngularVelocity(btVector3(0, 0, 0));
+      }
     }
   }
 };
@@ -105,6 +154,23 @@ struct GodFingerWorld::Impl
     }
   }
   ContactAreaResult scratch;
+  // This step's proxy-body touches (the deepest point of each manifold), before merging;
+  // reserved once (kMaxTouches), so that stepping never allocates.
+  struct Touch
+  {
+    btPersistentManifold* manifold = nullptr;
+    int point = 0;
+    bool proxy_is_a = false;
+    int proxy = 0;
+    int body = 0;
+  };
+  static constexpr std::size_t kMaxTouches = 256;
+  std::vector<Touch> touches = []
+  {
+    std::vector<Touch> reserved;
+    reserved.reserve(kMaxTouches);
+    return reserved;
+  }();
   double time = 0.0;
   double deepest_penetration = 0.0;
   long steps = 0;
@@ -157,6 +223,9 @@ struct GodFingerWorld::Impl
     // the sliding velocity).
     world->getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
     world->after_collision = [this]() { injectContactAreas(); };
+    world->sleep_time = params.sleep.time;
+    // Sleeping bodies keep their bounding boxes (static ones never move).
+    world->setForceUpdateAllAabbs(false);
     injector = std::make_unique<SubGodObjectInjector>(dispatcher.get());
     solver->setPadRows(injector->padRows());
     chooseResponse();
@@ -177,7 +246,7 @@ struct GodFingerWorld::Impl
       body.rigid = std::make_unique<btRigidBody>(info);
       body.rigid->setUserIndex(kKindBody);
       body.rigid->setUserIndex2(static_cast<int>(i));
-      body.rigid->setActivationState(DISABLE_DEACTIVATION);
+      prepareSleep(body.rigid.get());
       world->addRigidBody(body.rigid.get(), kBodyGroup, btBroadphaseProxy::AllFilter);
       body.previous_velocity = Eigen::Vector3d::Zero();
       body.net_force = Eigen::Vector3d::Zero();
@@ -185,6 +254,38 @@ struct GodFingerWorld::Impl
     for (std::size_t i = 0; i < proxies.size(); ++i)
     {
       addProxyToWorld(static_cast<int>(i));
+    }
+  }
+
+  // A dynamic body starts with a full sleep timer, less the time a free fall from rest takes to
+  // exceed twice the sleep speed: placed at rest it sleeps within that time (its island with it),
+  // placed in the air it falls.
+  void prepareSleep(btRigidBody* rigid) const
+  {
+    const SleepParams& sleep = params.sleep;
+    if (sleep.time <= 0.0)
+    {
+      rigid->setActivationState(DISABLE_DEACTIVATION);
+      return;
+    }
+    rigid->setSleepingThresholds(sleep.speed, sleep.angular_speed);
+    const double gravity = params.gravity.norm();
+    const double settle = gravity > 0.0 ? 2.0 * sleep.speed / gravity : 0.0;
+    rigid->setDeactivationTime(std::max(0.0, sleep.time - settle));
+  }
+
+  // Wakes every dynamic body (a parameter or model change: what rests under the old contact may
+  // not under the new one), with the timer a body placed at rest starts with: what still rests
+  // sleeps again within a few steps.
+  void wakeAll()
+  {
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      if (!scene.bodies[i].is_static)
+      {
+        bodies[i].rigid->activate(true);
+        prepareSleep(bodies[i].rigid.get());
+      }
     }
   }
 
@@ -207,6 +308,7 @@ struct GodFingerWorld::Impl
   void injectContactAreas()
   {
     injector->release();
+    touches.clear();
     for (Proxy& proxy : proxies)
     {
       proxy.state.contact_count = 0;
@@ -216,6 +318,10 @@ struct GodFingerWorld::Impl
     for (int m = 0; m < manifold_count; ++m)
     {
       btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      if (!manifold->getBody0()->isActive() && !manifold->getBody1()->isActive())
+      {
+        continue;  // a sleeping body on a static or sleeping one: not detected this step
+      }
       for (int p = 0; p < manifold->getNumContacts(); ++p)
       {
         deepest_penetration = std::max(deepest_penetration, -double(manifold->getContactPoint(p).getDistance()));
@@ -245,10 +351,59 @@ struct GodFingerWorld::Impl
       {
         continue;
       }
-      const int proxy_index = (proxy_is_a ? a : b)->getUserIndex2();
-      const int body_index = (proxy_is_a ? b : a)->getUserIndex2();
-      addContactArea(manifold, manifold->getContactPoint(deepest), proxy_is_a, proxy_index, body_index);
+      if (touches.size() < touches.capacity())
+      {
+        touches.push_back({manifold, deepest, proxy_is_a, (proxy_is_a ? a : b)->getUserIndex2(),
+                           (proxy_is_a ? b : a)->getUserIndex2()});
+      }
     }
+    // In the dispatcher's order (a scene where each finger touches each body once is unchanged
+    // bit for bit); a touch that another, deeper touch of the same finger and body covers is
+    // no area of its own, and its manifold leaves the solver for this step.
+    for (std::size_t i = 0; i < touches.size(); ++i)
+    {
+      const Touch& touch = touches[i];
+      btManifoldPoint& contact = touch.manifold->getContactPoint(touch.point);
+      if (coveredByDeeperTouch(i))
+      {
+        touch.manifold->clearManifold();
+        continue;
+      }
+      addContactArea(touch.manifold, contact, touch.proxy_is_a, touch.proxy, touch.body);
+    }
+  }
+
+  // One finger touching one body in several places: a concave body collides as a compound of
+  // hulls (collision_shape.h), and where two hulls meet under the finger each gives a contact at
+  // nearly the same point. A touch is covered (and dropped) when another touch of the same
+  // finger and body is deeper (or as deep and earlier), lies within r_max, and its normal is
+  // within kSameRegionAngle: one pad per touched region, walked on the true surface from the
+  // deepest point. Touches of a true concave corner (normals further apart) each keep theirs.
+  bool coveredByDeeperTouch(std::size_t index) const
+  {
+    const Touch& touch = touches[index];
+    const btManifoldPoint& contact = touch.manifold->getContactPoint(touch.point);
+    const btVector3 point = touch.proxy_is_a ? contact.getPositionWorldOnB() : contact.getPositionWorldOnA();
+    const btVector3 normal = (touch.proxy_is_a ? 1.0 : -1.0) * contact.m_normalWorldOnB;
+    for (std::size_t j = 0; j < touches.size(); ++j)
+    {
+      const Touch& other = touches[j];
+      if (j == index || other.proxy != touch.proxy || other.body != touch.body)
+      {
+        continue;
+      }
+      const btManifoldPoint& deeper = other.manifold->getContactPoint(other.point);
+      const bool is_deeper =
+          deeper.getDistance() < contact.getDistance() || (deeper.getDistance() == contact.getDistance() && j < index);
+      const btVector3 other_point = other.proxy_is_a ? deeper.getPositionWorldOnB() : deeper.getPositionWorldOnA();
+      const btVector3 other_normal = (other.proxy_is_a ? 1.0 : -1.0) * deeper.m_normalWorldOnB;
+      if (is_deeper && (other_point - point).length() <= params.contact.max_radius &&
+          other_normal.dot(normal) >= std::cos(kSameRegionAngle))
+      {
+        return true;
+      }
+    }
+    return false;
   }
 
   void addContactArea(btPersistentManifold* manifold, btManifoldPoint& contact, bool proxy_is_a, int proxy_index,
@@ -489,6 +644,7 @@ void GodFingerWorld::setContactModel(ContactModel model)
   {
     impl_->response->configureProxy(impl_->params, proxy.rigid.get());
   }
+  impl_->wakeAll();
 }
 
 void GodFingerWorld::applyBodyWrench(int body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque)
@@ -507,6 +663,7 @@ void GodFingerWorld::applyBodyWrench(int body, const Eigen::Vector3d& force, con
     return;
   }
   btRigidBody& rigid = *impl_->bodies[body].rigid;
+  rigid.activate(true);
   rigid.applyCentralForce(toBullet(force));
   rigid.applyTorque(toBullet(torque));
 }
@@ -520,6 +677,7 @@ void GodFingerWorld::setContactParams(const ContactParams& params)
 {
   validateOrThrow(params);
   impl_->params.contact = params;
+  impl_->wakeAll();
 }
 
 const WorldParams& GodFingerWorld::params() const
@@ -557,6 +715,7 @@ BodyState GodFingerWorld::bodyState(int body) const
   state.linear_velocity = toEigen(b.rigid->getLinearVelocity());
   state.angular_velocity = toEigen(b.rigid->getAngularVelocity());
   state.net_force = b.net_force;
+  state.asleep = b.rigid->getActivationState() == ISLAND_SLEEPING;
   return state;
 }
 
@@ -585,6 +744,16 @@ const SceneDescription& GodFingerWorld::scene() const
 const TriangleMesh& GodFingerWorld::walkSurface(int body) const
 {
   return *impl_->bodies.at(body).walk;
+}
+
+int GodFingerWorld::awakeBodyCount() const
+{
+  int awake = 0;
+  for (std::size_t i = 0; i < impl_->bodies.size(); ++i)
+  {
+    awake += !impl_->scene.bodies[i].is_static && impl_->bodies[i].rigid->isActive() ? 1 : 0;
+  }
+  return awake;
 }
 
 int GodFingerWorld::solverContactPoints() const

@@ -11,6 +11,9 @@
 //     own (Bullet's manifolds keep at most 4 points and merge close ones);
 //  4. the solver runs; the force on the user is the opposite of the coupling force.
 //
+// Sleeping (WorldParams::sleep): a dynamic body at rest, out of every proxy's reach, falls asleep
+// with its island and costs almost nothing until a proxy or a woken body comes near it.
+//
 // Invariants: proxies never rotate and ignore gravity; every scene body has a walk surface
 // (its mesh, or a tessellation of its primitive fine enough for r_max); the walk runs on the
 // original triangle mesh even where collision uses a convex decomposition.
@@ -59,6 +62,7 @@ struct BodyState
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world
   Eigen::Vector3d net_force =
       Eigen::Vector3d::Zero();  // N on the centre of mass, m dv/dt over the last step (gravity included)
+  bool asleep = false;          // sleeping (WorldParams::sleep): not simulated until woken
 };
 
 // Everything an observer shows of a world at one step (markers, TF, contact-area messages),
@@ -118,6 +122,8 @@ class GodFingerWorld
   // the body or interface count (so a snapshot buffer filled once never allocates again).
   void snapshot(WorldSnapshot* out) const;
   const TriangleMesh& walkSurface(int body) const;
+  // Dynamic bodies awake now (simulated in the next step); static bodies never count.
+  int awakeBodyCount() const;
   // Contact points the solver received in the last step, all pairs (test hook for the
   // Bullet manifold limits).
   int solverContactPoints() const;

@@ -57,6 +57,21 @@ std::string padSolverNames();  // "points, constraint"
 // False (and `solver` unchanged) if `text` names none.
 bool parsePadSolver(const std::string& text, PadSolver* solver);
 
+// Sleeping (Bullet's deactivation, with our own time): a dynamic body slower than `speed` and
+// `angular_speed` for `time` falls asleep with its island (the bodies whose bounding boxes
+// overlap, through dynamic bodies). A sleeping body costs no collision detection with other
+// sleeping or static bodies and no solver rows; it keeps its pose and has zero velocity. It wakes
+// when a proxy or a woken body comes within Bullet's contact margin (2 cm) of its bounding box,
+// when a wrench is applied to it, and on a reset or a change of contact model or parameters.
+// Bodies placed at rest start falling asleep at once: their timer starts full, less the time a
+// free fall takes to exceed `speed` twice over, so a body placed in the air falls.
+struct SleepParams
+{
+  double time = 0.5;           // s, 0: no body ever sleeps
+  double speed = 0.01;         // m/s, of the centre of mass
+  double angular_speed = 0.1;  // rad/s
+};
+
 struct WorldParams
 {
   double time_step = 1e-3;  // s, range [1e-5, 0.1]: the servo loop's period (its `rate`)
@@ -79,13 +94,14 @@ struct WorldParams
   CouplingParams coupling;
   SoftFingerParams soft_finger;
   FingerPadParams pad;
+  SleepParams sleep;
   // Largest edge of the walk surface of a sphere or cylinder, as a fraction of r_max: the
   // tessellation is refined until its edges are no longer (capped at 81920 triangles).
   double walk_edge_per_max_radius = 0.5;
 };
 
 // Every parameter of WorldParams that is read by name: model, solver_iterations, the contact
-// table's rows, proxy_mass, proxy_radius, the soft finger's, the pad's and
+// table's rows, proxy_mass, proxy_radius, the soft finger's, the pad's, sleeping's and
 // walk_edge_per_max_radius. (time_step comes from the loop's rate, gravity from the scene; the
 // coupling profile comes per interface from its device, deviceProfileTable().)
 const ParameterTable<WorldParams>& worldParameterTable();
