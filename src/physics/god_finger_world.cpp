@@ -71,6 +71,21 @@ class HookedWorld : public btDiscreteDynamicsWorld
   }
 
  protected:
+  // Bullet's, for awake bodies only: Bullet predicts every dynamic body's motion each step, and
+  // for a sleeping body (zero velocity) that was a fifth of a 1000-box table's step.
+  void predictUnconstraintMotion(btScalar time_step) override
+  {
+    for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i)
+    {
+      btRigidBody* body = m_nonStaticRigidBodies[i];
+      if (body->isActive() && !body->isStaticOrKinematicObject())
+      {
+        body->applyDamping(time_step);
+        body->predictIntegratedTransform(time_step, body->getInterpolationWorldTransform());
+      }
+    }
+  }
+
   // Bullet's rule (btDiscreteDynamicsWorld::updateActivationState) with sleep_time for
   // gDeactivationTime: a body slow for longer wants to sleep; its island (simulation island
   // manager, next step) sleeps when every body in it wants to; a sleeping body keeps zero
@@ -206,10 +221,24 @@ struct GodFingerWorld::Impl
     }
   }
 
+  // Bullet's near callback, with the test that skips a pair of sleeping (or static) bodies first:
+  // a resting table of 1000 boxes has 1000 such pairs, visited every step.
+  static void nearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info)
+  {
+    const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+    const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+    if (!a->isActive() && !b->isActive())
+    {
+      return;
+    }
+    btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
+  }
+
   void buildWorld()
   {
     configuration = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
+    dispatcher->setNearCallback(&Impl::nearCallback);
     broadphase = std::make_unique<btDbvtBroadphase>();
     solver = std::make_unique<SupportPassSolver>(params.support_passes);
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
