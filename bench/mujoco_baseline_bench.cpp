@@ -592,7 +592,6 @@ BENCHMARK(BM_ScaleStep)
     ->ArgNames({"scene", "model"})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
-    ->Repetitions(3)
     ->UseRealTime();
 // Not the 1000-object scene: MuJoCo 2.2 sizes dense constraint matrices as njmax^2, and 1000
 // resting boxes need about 12,000 rows (1.2 GB for one of them): mj_makeData fails.
@@ -601,7 +600,6 @@ BENCHMARK(BM_MujocoScaleStep)
     ->ArgNames({"scene"})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1)
-    ->Repetitions(3)
     ->UseRealTime();
 BENCHMARK(BM_MujocoScenarioStep)
     ->ArgsProduct({{0, 1, 3}, {3, 4, 6}})
