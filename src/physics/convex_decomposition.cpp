@@ -130,18 +130,15 @@ std::string decompositionKey(const TriangleMesh& mesh)
   return hex(hash.fnv) + hex(hash.mix);
 }
 
-ConvexDecomposition decomposeConcaveMesh(const TriangleMesh& mesh, const std::string& label)
+ConvexDecomposition decomposeConcaveMesh(const TriangleMesh& mesh, const std::string& label, const std::string& note)
 {
   const double tolerance = kSimplificationTolerance * mesh.boundingBoxDiagonal();
-  SimplifiedMesh simplified = simplifyMesh(
-      mesh, kSimplifyAbove < mesh.triangleCount() ? kDecompositionTriangles : mesh.triangleCount(), tolerance);
+  SimplifiedMesh simplified = simplifyMesh(mesh, kDecompositionTriangles, tolerance);
   const int triangles = static_cast<int>(simplified.soup.triangles.size());
   if (triangles >= kAnnounceAbove)
   {
-    const std::string directory = hullCacheDirectory();
     std::cerr << "god_finger: decomposing " << label << ": " << mesh.triangleCount() << " -> " << triangles
-              << " triangles (first load; "
-              << (directory.empty() ? std::string("no cache folder") : "cached in " + directory) << ")" << std::endl;
+              << " triangles (" << note << ")" << std::endl;
   }
   ConvexDecomposition result;
   result.hulls = std::make_shared<const HullSet>(runHacd(simplified.soup));
@@ -180,7 +177,8 @@ ConvexDecomposition cachedConvexDecomposition(const TriangleMesh& mesh, const st
   }
   else
   {
-    result = decomposeConcaveMesh(mesh, label);
+    result = decomposeConcaveMesh(
+        mesh, label, directory.empty() ? "first load; no cache folder" : "first load; cached in " + directory);
     if (!result.hulls->empty())
     {
       writeHullCache(directory, key, *result.hulls);
