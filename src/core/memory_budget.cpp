@@ -11,13 +11,13 @@ namespace god_finger
 {
 namespace
 {
-// Measured peaks (README, "Large meshes"), rounded up. Per triangle: TriangleMesh keeps 112 B
-// (corners, normal, neighbours, barycentric gradients, vertex-face table, source index) and
-// SurfaceLocator 32 B; while loading, the polygon and triangle soups, build()'s edge and
-// duplicate tables and the collision shape's copy and tree add about three times that.
-constexpr std::uint64_t kBytesPerTriangle = 600;
+// Fitted to the measured peaks (header comment), rounded up. Per triangle, TriangleMesh keeps
+// 112 B (corners, normal, neighbours, barycentric gradients, vertex-face table, source index)
+// and SurfaceLocator 32 B; while loading, the polygon and triangle soups, build()'s edge and
+// duplicate tables and the collision shape's copy and tree add about twice that.
+constexpr std::uint64_t kBytesPerTriangle = 400;
 // Per vertex: the position in the soups, the mesh and the collision shape's copy, the weld grid.
-constexpr std::uint64_t kBytesPerVertex = 250;
+constexpr std::uint64_t kBytesPerVertex = 100;
 constexpr double kAvailableFraction = 0.8;
 
 // MemAvailable in bytes, 0 when unknown.
@@ -79,16 +79,18 @@ MemoryLimit memoryLimit()
   return limit;
 }
 
-void checkMeshFits(std::uint64_t vertices, std::uint64_t faces)
+void checkMeshFits(std::uint64_t vertices, std::uint64_t faces, std::uint64_t extra_bytes, const std::string& claim)
 {
-  const std::uint64_t needed = estimatedMeshBytes(vertices, faces);
+  const std::uint64_t estimate = estimatedMeshBytes(vertices, faces);
+  const std::uint64_t needed = estimate > UINT64_MAX - extra_bytes ? UINT64_MAX : estimate + extra_bytes;
   const MemoryLimit limit = memoryLimit();
   if (needed > limit.bytes)
   {
-    throw ResourceLimitError("declares " + std::to_string(faces) + " faces and " + std::to_string(vertices) +
-                             " vertices: loading them needs about " + formatBytes(static_cast<double>(needed)) +
-                             ", more than the limit of " + formatBytes(static_cast<double>(limit.bytes)) + " (" +
-                             limit.source + ")");
+    throw ResourceLimitError(
+        (claim.empty() ? "declares " + std::to_string(faces) + " faces and " + std::to_string(vertices) + " vertices"
+                       : claim) +
+        ": loading them needs about " + formatBytes(static_cast<double>(needed)) + ", more than the limit of " +
+        formatBytes(static_cast<double>(limit.bytes)) + " (" + limit.source + ")");
   }
 }
 
