@@ -1,6 +1,7 @@
 #include "god_finger/mesh_io/mesh_loader.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/memory_budget.h"
 #include "god_finger/mesh_io/off_reader.h"
 #include "god_finger/mesh_io/ply_reader.h"
 #include "god_finger/mesh_io/polygon_soup.h"
@@ -10,6 +11,9 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -123,6 +127,39 @@ std::string readWholeFile(const std::string& path)
   return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
 }
 
+// Bytes of a text mesh file (OBJ, ASCII STL, DAE...) per triangle, at the fewest: an OBJ
+// "f 1 2 3" line and half a "v x y z" line. A file's size over this bounds its triangle count
+// before assimp reads it (assimp allocates as it parses, with no limit of its own).
+constexpr std::uint64_t kTextBytesPerTriangle = 24;
+
+// Refuses, before assimp allocates anything, a file too large to load (core/memory_budget.h):
+// a binary STL by the triangle count in its header (84 + 50 n bytes), any other file by its
+// size. assimp's own copy of the mesh (about its file's size again) counts too.
+void checkAssimpFileFits(const std::string& path, const std::string& extension)
+{
+  std::error_code error;
+  const std::uint64_t size = std::filesystem::file_size(path, error);
+  if (error)
+  {
+    return;  // the reader says why
+  }
+  if (extension == "stl" && size >= 84)
+  {
+    char header[84];
+    std::ifstream(path, std::ios::binary).read(header, sizeof(header));
+    std::uint32_t triangles = 0;
+    std::memcpy(&triangles, header + 80, sizeof(triangles));
+    if (std::strncmp(header, "solid", 5) != 0 || size == 84 + 50 * std::uint64_t(triangles))
+    {
+      checkMeshFits(3 * std::uint64_t(triangles), triangles, size);
+      return;
+    }
+  }
+  const std::uint64_t triangles = size / kTextBytesPerTriangle;
+  checkMeshFits(triangles / 2, triangles, 2 * size,
+                "is " + std::to_string(size) + " bytes, up to about " + std::to_string(triangles) + " triangles");
+}
+
 // PLY and OFF through our own readers; everything else through assimp.
 void loadInto(const std::string& path, const Eigen::Vector3d& scale, TriangleSoup* soup)
 {
@@ -130,9 +167,16 @@ void loadInto(const std::string& path, const Eigen::Vector3d& scale, TriangleSou
   if (extension == "ply" || extension == "off")
   {
     PolygonSoup polygons;
+    const std::string bytes = readWholeFile(path);
+    const DeclaredSizeCheck fits = [&bytes](std::uint64_t vertices, std::uint64_t faces)
+    { checkMeshFits(vertices, faces, bytes.size()); };
     try
     {
-      polygons = extension == "ply" ? readPly(readWholeFile(path)) : readOff(readWholeFile(path));
+      polygons = extension == "ply" ? readPly(bytes, fits) : readOff(bytes, fits);
+    }
+    catch (const ResourceLimitError&)
+    {
+      throw;
     }
     catch (const InputError& error)
     {
@@ -142,6 +186,7 @@ void loadInto(const std::string& path, const Eigen::Vector3d& scale, TriangleSou
     appendTriangulated(polygons, soup);
     return;
   }
+  checkAssimpFileFits(path, extension);
   Assimp::Importer importer;
   // No post-processing (see collect()); no welding here either: TriangleMesh::build welds and
   // reports it, and the file's triangle order is kept.
@@ -173,6 +218,10 @@ TriangleSoup loadTriangleSoup(const std::string& path, const Eigen::Vector3d& sc
   try
   {
     loadInto(path, scale, &soup);
+  }
+  catch (const ResourceLimitError& error)
+  {
+    throw ResourceLimitError(name + error.what());
   }
   catch (const InputError& error)
   {

@@ -85,7 +85,7 @@ bool endsWith(std::string_view text, std::string_view suffix)
 }
 }  // namespace
 
-PolygonSoup readOff(const std::string& bytes)
+PolygonSoup readOff(const std::string& bytes, const DeclaredSizeCheck& check_size)
 {
   LineReader reader(bytes);
   std::vector<std::string_view> tokens;
@@ -121,6 +121,10 @@ PolygonSoup readOff(const std::string& bytes)
       !parse(tokens[first_count + 1], &face_count) || vertex_count < 0 || face_count < 0)
   {
     throw InputError(reader.where() + "expected the vertex and face counts (two whole numbers >= 0)");
+  }
+  if (check_size)
+  {
+    check_size(static_cast<std::uint64_t>(vertex_count), static_cast<std::uint64_t>(face_count));
   }
   // A vertex line holds at least "x y z" and a line end; a face line at least one number and one.
   const std::uint64_t left = reader.bytesLeft() + 1;

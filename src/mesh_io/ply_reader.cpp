@@ -264,7 +264,7 @@ int findProperty(const Element& element, const std::string& name, bool list)
 }
 }  // namespace
 
-PolygonSoup readPly(const std::string& bytes)
+PolygonSoup readPly(const std::string& bytes, const DeclaredSizeCheck& check_size)
 {
   // --- header ---
   std::vector<Element> elements;
@@ -355,6 +355,18 @@ PolygonSoup readPly(const std::string& bytes)
   if (!has_format)
   {
     throw InputError("PLY header has no format line");
+  }
+
+  if (check_size)
+  {
+    std::uint64_t vertices = 0;
+    std::uint64_t faces = 0;
+    for (const Element& element : elements)
+    {
+      vertices += element.name == "vertex" ? element.count : 0;
+      faces += element.name == "face" ? element.count : 0;
+    }
+    check_size(vertices, faces);
   }
 
   // --- body ---

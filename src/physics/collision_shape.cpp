@@ -1,12 +1,7 @@
 #include "collision_shape.h"
 
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
-#include <HACD/hacdHACD.h>
 #include <LinearMath/btConvexHullComputer.h>
-
-#include <map>
-#include <mutex>
-#include <sstream>
 
 namespace god_finger
 {
@@ -34,78 +29,12 @@ double hullVolume(const std::vector<btScalar>& coordinates)
   return volume;
 }
 
-using HullSet = std::vector<std::vector<btVector3>>;
-
-// HACD decomposition of a closed concave mesh into convex hulls' points.
-HullSet decompose(const TriangleMesh& mesh)
-{
-  std::vector<HACD::Vec3<HACD::Real>> points;
-  std::vector<HACD::Vec3<long>> triangles;
-  points.reserve(mesh.vertexCount());
-  for (const Eigen::Vector3d& v : mesh.vertices())
-  {
-    points.emplace_back(v.x(), v.y(), v.z());
-  }
-  for (const Eigen::Vector3i& t : mesh.triangles())
-  {
-    triangles.emplace_back(t[0], t[1], t[2]);
-  }
-  HACD::HACD hacd;
-  hacd.SetPoints(points.data());
-  hacd.SetNPoints(points.size());
-  hacd.SetTriangles(triangles.data());
-  hacd.SetNTriangles(triangles.size());
-  // Bullet's ConvexDecompositionDemo settings: concavity in HACD's normalised units.
-  hacd.SetCompacityWeight(0.1);
-  hacd.SetVolumeWeight(0.0);
-  hacd.SetNClusters(2);
-  hacd.SetNVerticesPerCH(100);
-  hacd.SetConcavity(100);
-  hacd.SetAddExtraDistPoints(false);
-  hacd.SetAddNeighboursDistPoints(false);
-  hacd.SetAddFacesPoints(false);
-  hacd.Compute();
-  HullSet hulls;
-  for (std::size_t c = 0; c < hacd.GetNClusters(); ++c)
-  {
-    std::vector<HACD::Vec3<HACD::Real>> hull_points(hacd.GetNPointsCH(c));
-    std::vector<HACD::Vec3<long>> hull_triangles(hacd.GetNTrianglesCH(c));
-    hacd.GetCH(c, hull_points.data(), hull_triangles.data());
-    std::vector<btVector3> hull;
-    for (const auto& p : hull_points)
-    {
-      hull.emplace_back(p.X(), p.Y(), p.Z());
-    }
-    if (hull.size() >= 4)
-    {
-      hulls.push_back(hull);
-    }
-  }
-  return hulls;
-}
-
-const HullSet& cachedDecomposition(const Geometry& geometry, const TriangleMesh& mesh)
-{
-  static std::mutex mutex;
-  static std::map<std::string, HullSet> cache;
-  std::ostringstream key;
-  key.precision(17);
-  key << geometry.mesh_path << '|' << geometry.scale.transpose();
-  std::lock_guard<std::mutex> lock(mutex);
-  auto found = cache.find(key.str());
-  if (found == cache.end())
-  {
-    found = cache.emplace(key.str(), decompose(mesh)).first;
-  }
-  return found->second;
-}
-
-std::unique_ptr<btConvexHullShape> hullShape(const std::vector<btVector3>& points, double margin)
+std::unique_ptr<btConvexHullShape> hullShape(const std::vector<Eigen::Vector3d>& points, double margin)
 {
   auto shape = std::make_unique<btConvexHullShape>();
-  for (const btVector3& p : points)
+  for (const Eigen::Vector3d& p : points)
   {
-    shape->addPoint(p, false);
+    shape->addPoint(btVector3(p.x(), p.y(), p.z()), false);
   }
   shape->recalcLocalAabb();
   shape->setMargin(margin);
@@ -186,22 +115,21 @@ std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, con
   const double volume = enclosedVolume(mesh);
   const double hull = hullVolume(coordinates);
   result->exact = false;
-  if (!closed || volume >= 0.995 * hull)
+  const bool convex = !closed || volume >= 0.995 * hull;
+  const ConvexDecomposition decomposition =
+      convex ? ConvexDecomposition() : cachedConvexDecomposition(mesh, "'" + geometry.mesh_path + "'");
+  if (convex || decomposition.hulls->empty())
   {
-    std::vector<btVector3> points;
-    for (const Eigen::Vector3d& v : mesh.vertices())
-    {
-      points.emplace_back(v.x(), v.y(), v.z());
-    }
-    result->exact = closed;
-    auto shape = hullShape(points, margin);
+    result->exact = closed && convex;
+    auto shape = hullShape(mesh.vertices(), margin);
     result->shape = shape.get();
     result->owned.push_back(std::move(shape));
     return result;
   }
-  const HullSet& hulls = cachedDecomposition(geometry, mesh);
+  result->decomposition_source = decomposition.source;
+  const HullSet& hulls = *decomposition.hulls;
   auto compound = std::make_unique<btCompoundShape>();
-  for (const std::vector<btVector3>& points : hulls)
+  for (const std::vector<Eigen::Vector3d>& points : hulls)
   {
     auto part = hullShape(points, margin);
     compound->addChildShape(btTransform::getIdentity(), part.get());

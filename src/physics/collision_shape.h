@@ -1,14 +1,15 @@
 // Bullet collision shapes for scene geometry. Primitives collide as Bullet's primitives. A
 // mesh collides as: its own triangles (btBvhTriangleMeshShape) when the body is static; its
 // convex hull when it is convex (hull volume within 0.5 % of the mesh's); otherwise a convex
-// decomposition by HACD (Bullet's Extras), computed once per file and scale and cached for
-// the life of the process. The walk surface stays the original mesh in every case.
+// decomposition (convex_decomposition.h: simplified first when large, HACD, cached in the
+// process and on disk by content). The walk surface stays the original mesh in every case.
 //
 // Margins: Bullet rounds convex shapes by a collision margin (default 4 cm, far too large for
 // a finger on a 5 cm object): every shape gets `margin` (m), primitives keep their true size.
 #pragma once
 
 #include "god_finger/core/triangle_mesh.h"
+#include "god_finger/physics/convex_decomposition.h"
 #include "god_finger/physics/scene_description.h"
 
 #include <btBulletCollisionCommon.h>
@@ -23,6 +24,8 @@ struct CollisionShape
   btCollisionShape* shape = nullptr;  // the top shape (owned through `owned`)
   int convex_parts = 1;               // hulls in a decomposition, 1 otherwise
   bool exact = true;                  // false when collision uses a hull or a decomposition
+  // Where a decomposition's hulls came from (kComputed when there is none).
+  DecompositionSource decomposition_source = DecompositionSource::kComputed;
   std::vector<std::unique_ptr<btCollisionShape>> owned;
   std::unique_ptr<btTriangleIndexVertexArray> triangle_array;
   std::vector<int> indices;

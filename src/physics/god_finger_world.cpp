@@ -6,6 +6,7 @@
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
+#include "god_finger/physics/scene_budget.h"
 #include "god_finger/physics/walk_surface.h"
 #include "proxy.h"
 #include "sub_god_object_injection.h"
@@ -590,6 +591,7 @@ struct GodFingerWorld::Impl
 GodFingerWorld::GodFingerWorld(const SceneDescription& scene, const WorldParams& params) : impl_(new Impl)
 {
   validateOrThrow(params);
+  checkSceneFits(scene, params.walk_edge_per_max_radius * params.contact.max_radius);
   impl_->params = params;
   impl_->scene = scene;
   impl_->buildBodies();

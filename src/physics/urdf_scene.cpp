@@ -1,6 +1,8 @@
 #include "god_finger/physics/urdf_scene.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/memory_budget.h"
+#include "god_finger/physics/scene_budget.h"
 
 #include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
@@ -310,6 +312,11 @@ class SceneParser
     if (scene.bodies.empty())
     {
       fail("", "no bodies (links with a <collision> joined to the root)");
+    }
+    if (scene.bodies.size() > static_cast<std::size_t>(kMaxBodies))
+    {
+      throw ResourceLimitError("URDF '" + source_ + "': " + std::to_string(scene.bodies.size()) +
+                               " bodies, more than the limit of " + std::to_string(kMaxBodies));
     }
     return scene;
   }

@@ -17,6 +17,22 @@ constexpr int kMaxCylinderSegments = 4096;
 constexpr double kIcosahedronEdge = 1.0514622242382672;
 }  // namespace
 
+int walkSphereSubdivisions(double radius, double max_edge)
+{
+  int subdivisions = 0;
+  while (subdivisions < kMaxIcosphereSubdivisions && radius * kIcosahedronEdge / std::pow(2.0, subdivisions) > max_edge)
+  {
+    ++subdivisions;
+  }
+  return subdivisions;
+}
+
+int walkCylinderSegments(double radius, double max_edge)
+{
+  const double segments = std::ceil(2.0 * M_PI * radius / max_edge);
+  return static_cast<int>(std::clamp(segments, double(kMinCylinderSegments), double(kMaxCylinderSegments)));
+}
+
 TriangleMesh makeWalkSurface(const Geometry& geometry, double max_edge)
 {
   switch (geometry.kind)
@@ -24,22 +40,10 @@ TriangleMesh makeWalkSurface(const Geometry& geometry, double max_edge)
     case GeometryKind::kBox:
       return TriangleMesh::build(makeBox(geometry.size / 2.0));
     case GeometryKind::kSphere:
-    {
-      int subdivisions = 0;
-      while (subdivisions < kMaxIcosphereSubdivisions &&
-             geometry.radius * kIcosahedronEdge / std::pow(2.0, subdivisions) > max_edge)
-      {
-        ++subdivisions;
-      }
-      return TriangleMesh::build(makeIcosphere(geometry.radius, subdivisions));
-    }
+      return TriangleMesh::build(makeIcosphere(geometry.radius, walkSphereSubdivisions(geometry.radius, max_edge)));
     case GeometryKind::kCylinder:
-    {
-      const double segments = std::ceil(2.0 * M_PI * geometry.radius / max_edge);
-      const int count =
-          static_cast<int>(std::clamp(segments, double(kMinCylinderSegments), double(kMaxCylinderSegments)));
-      return TriangleMesh::build(makeCylinder(geometry.radius, geometry.length, count));
-    }
+      return TriangleMesh::build(
+          makeCylinder(geometry.radius, geometry.length, walkCylinderSegments(geometry.radius, max_edge)));
     case GeometryKind::kMesh:
       return loadTriangleMesh(geometry.mesh_path, geometry.scale);
   }

@@ -40,11 +40,11 @@ void expectPyramid(const PolygonSoup& soup)
   }
 }
 
-std::string errorOf(PolygonSoup (*reader)(const std::string&), const std::string& bytes)
+std::string errorOf(PolygonSoup (*reader)(const std::string&, const DeclaredSizeCheck&), const std::string& bytes)
 {
   try
   {
-    reader(bytes);
+    reader(bytes, nullptr);
   }
   catch (const InputError& error)
   {

@@ -6,7 +6,8 @@
 // per line (x y z, anything after them such as normals or colours ignored) and one face per line
 // (n, then n vertex indices, anything after them ignored). '#' starts a comment. 4-D, n-D and
 // binary OFF are refused. Counts are checked against the bytes left before anything is
-// allocated for them. Errors are InputError, one line without the file's name. Not real-time.
+// allocated for them, after `check_size` has seen them. Errors are InputError, one line without
+// the file's name. Not real-time.
 #pragma once
 
 #include "god_finger/mesh_io/polygon_soup.h"
@@ -15,5 +16,5 @@
 
 namespace god_finger
 {
-PolygonSoup readOff(const std::string& bytes);
+PolygonSoup readOff(const std::string& bytes, const DeclaredSizeCheck& check_size = nullptr);
 }  // namespace god_finger

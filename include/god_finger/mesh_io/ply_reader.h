@@ -8,7 +8,8 @@
 // text) are skipped, as other readers do. Every element count and list length is checked
 // against the bytes left in the file before anything is allocated for it, so that a corrupt
 // file costs at most a few times its own size in memory and gives an InputError: one line,
-// without the file's name (the caller adds it). Not real-time.
+// without the file's name (the caller adds it). `check_size` sees the "vertex" and "face"
+// elements' counts right after the header, before any of them is read. Not real-time.
 #pragma once
 
 #include "god_finger/mesh_io/polygon_soup.h"
@@ -17,5 +18,5 @@
 
 namespace god_finger
 {
-PolygonSoup readPly(const std::string& bytes);
+PolygonSoup readPly(const std::string& bytes, const DeclaredSizeCheck& check_size = nullptr);
 }  // namespace god_finger

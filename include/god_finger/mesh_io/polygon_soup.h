@@ -8,6 +8,8 @@
 #include "god_finger/core/triangle_mesh.h"
 
 #include <Eigen/Core>
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace god_finger
@@ -29,6 +31,11 @@ struct PolygonSoup
     face_starts.push_back(corners.size());
   }
 };
+
+// Called by the readers with a file's declared vertex and face counts as soon as they are known,
+// before anything is allocated for them: the place to refuse a file too large for the machine
+// (core/memory_budget.h) by throwing.
+using DeclaredSizeCheck = std::function<void(std::uint64_t vertices, std::uint64_t faces)>;
 
 // The most corners one face may have: ear clipping is quadratic or worse in them, and no
 // modelling tool writes more in one face.

@@ -15,7 +15,8 @@
 //    (NAME found by the PackageResolver given: the ROS layer passes ros::package::getPath;
 //    without one, the folders above the URDF file whose package.xml names NAME).
 //
-// Errors: InputError with one line naming the file, the link and the problem.
+// Errors: InputError with one line naming the file, the link and the problem; a
+// ResourceLimitError (core/memory_budget.h) for more than kMaxBodies bodies (scene_budget.h).
 #pragma once
 
 #include "god_finger/physics/scene_description.h"
