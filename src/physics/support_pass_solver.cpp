@@ -35,6 +35,24 @@ btScalar torsionalBound(const btSolverConstraint& row, const btSolverConstraint&
 }
 }  // namespace
 
+void SupportPassSolver::scaleToLever(btSolverConstraint* row)
+{
+  // Lever L = the row's coefficient (m): torque = L x an impulse bounded by the normal impulse.
+  const btScalar lever = row->m_friction;
+  if (!(lever > 0.0))
+  {
+    return;
+  }
+  row->m_relpos1CrossNormal *= lever;
+  row->m_relpos2CrossNormal *= lever;
+  row->m_angularComponentA *= lever;
+  row->m_angularComponentB *= lever;
+  row->m_jacDiagABInv /= lever * lever;
+  row->m_rhs /= lever;
+  row->m_appliedImpulse /= lever;
+  row->m_friction = 1.0;
+}
+
 btScalar SupportPassSolver::solveGroup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
                                        int num_manifolds, btTypedConstraint** constraints, int num_constraints,
                                        const btContactSolverInfo& info, btIDebugDraw* debug_draw,
@@ -90,6 +108,7 @@ void SupportPassSolver::convertContacts(btPersistentManifold** manifolds, int nu
   for (int j = 0; j < torsional.size(); ++j)
   {
     btSolverConstraint& row = torsional[j];
+    scaleToLever(&row);
     const btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
     const btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
     // This step's external torques, which Bullet leaves out of these rows' velocity.
@@ -110,8 +129,9 @@ void SupportPassSolver::convertContacts(btPersistentManifold** manifolds, int nu
     if (info.m_solverMode & SOLVER_USE_WARMSTARTING)
     {
       const btScalar bound = torsionalBound(row, m_tmpSolverContactConstraintPool[row.m_frictionIndex]);
-      const btScalar warm =
-          btClamped<btScalar>(toBullet(pad->warm_torque_impulse).dot(axis) * info.m_warmstartingFactor, -bound, bound);
+      // The torque impulse about the scaled axis (L u), in the row's units (impulse at the lever L).
+      const btScalar warm = btClamped<btScalar>(
+          toBullet(pad->warm_torque_impulse).dot(axis) / axis.length2() * info.m_warmstartingFactor, -bound, bound);
       row.m_appliedImpulse = warm;
       btSolverBody& body_a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
       btSolverBody& body_b = m_tmpSolverBodyPool[row.m_solverBodyIdB];

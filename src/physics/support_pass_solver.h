@@ -20,6 +20,13 @@
 // warm-started and corrected towards their orientation anchor; their impulses and slips go back
 // to the pads' states after the solve.
 //
+// Every torsional row is solved at its lever (scaleToLever): Bullet measures a row's residual in
+// its own velocity, rad/s for these rows, so the iterations' tolerance (m/s) asked them for 10 um/s
+// read as 10 urad/s, and they ran every iteration (god_finger 54 per step where god_object needs
+// 26). Scaled by the row's coefficient L (m), a row's velocity is L times the angular one (m/s, the
+// speed at the lever) and its impulse is the torque impulse over L, bounded by the normal impulse:
+// the same solution, one tolerance for every row.
+//
 // Units: Bullet's (SI). Counts the contact points it receives (all, and the proxies').
 // Not real-time safe to construct; solving reuses Bullet's pools.
 #pragma once
@@ -81,6 +88,9 @@ class SupportPassSolver : public btSequentialImpulseConstraintSolver
 
  private:
   void supportPass();
+  // Scales a torsional row (coefficient L > 0, m) so that its velocity is L times its angular
+  // velocity (m/s) and its impulse the torque impulse over L (N s); its coefficient becomes 1.
+  static void scaleToLever(btSolverConstraint* row);
   // The pad a torsional row belongs to, or null.
   PadRows* padOf(const btSolverConstraint& row);
   std::vector<PadRows>* pads_ = nullptr;
