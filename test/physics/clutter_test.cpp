@@ -105,6 +105,8 @@ TEST(Clutter, SceneIsAtRestAtLoad)
   }
   double worst_move = 0.0;
   double worst_turn = 0.0;
+  std::string worst_mover;
+  std::string worst_turner;
   for (int body = 0; body < world.bodyCount(); ++body)
   {
     if (scene.bodies[body].is_static)
@@ -116,11 +118,19 @@ TEST(Clutter, SceneIsAtRestAtLoad)
     const double turned = Eigen::AngleAxisd(after.pose.linear() * before[body].pose.linear().transpose()).angle();
     EXPECT_LT(moved, 0.001) << scene.bodies[body].name;
     EXPECT_LT(turned, 0.01) << scene.bodies[body].name;
-    worst_move = std::max(worst_move, moved);
-    worst_turn = std::max(worst_turn, turned);
+    if (moved > worst_move)
+    {
+      worst_move = moved;
+      worst_mover = scene.bodies[body].name;
+    }
+    if (turned > worst_turn)
+    {
+      worst_turn = turned;
+      worst_turner = scene.bodies[body].name;
+    }
   }
-  RecordProperty("worst_move_m", std::to_string(worst_move));
-  RecordProperty("worst_turn_rad", std::to_string(worst_turn));
+  RecordProperty("worst_move_m", worst_mover + " " + std::to_string(worst_move));
+  RecordProperty("worst_turn_rad", worst_turner + " " + std::to_string(worst_turn));
 }
 
 ExperimentResult runClutter(ContactModel model)
