@@ -26,10 +26,13 @@ struct Script
   std::string scene_file;
   std::string object;
   std::vector<WaypointPath> fingers;
-  double duration = 0.0;     // s, default length
-  double lift_start = 0.0;   // s
-  double lift_end = 0.0;     // s
-  double lift_height = 0.0;  // m, commanded
+  double duration = 0.0;                                   // s, default length
+  double lift_start = 0.0;                                 // s
+  double lift_end = 0.0;                                   // s
+  double lift_height = 0.0;                                // m, commanded
+  double carry_end = 0.0;                                  // s, pick and place only
+  double release = 0.0;                                    // s, pick and place only
+  Eigen::Vector3d place_target = Eigen::Vector3d::Zero();  // m, world, pick and place only
 };
 
 ScenarioTimes timesOf(const Script& script)
@@ -38,6 +41,10 @@ ScenarioTimes timesOf(const Script& script)
   times.duration = script.duration;
   times.lift_end = script.lift_end;
   times.lift_height = script.lift_height;
+  times.lift_start = script.lift_start;
+  times.carry_end = script.carry_end;
+  times.release = script.release;
+  times.place_target = script.place_target;
   return times;
 }
 
@@ -131,6 +138,54 @@ Script pinchScript(std::uint64_t seed)
   return script;
 }
 
+// table_clutter.urdf (scripts/make_clutter_scene): pick_box, a 5 cm cube of 100 g, stands on
+// the pile's base (top at z = 0.04), centred at (0, -0.03, 0.065); the pile's other bodies stand
+// 2 cm or more behind it (+y), nothing else within 10 cm on either side along x. Fingers 5 mm
+// under the box's centre close along x from +-0.055 to +-0.018 in 1 s (the proxies stop at
+// +-0.028: 1 cm of coupling stretch, 4 N each), wait 0.5 s, lift 6 cm in 1.5 s, carry 13 cm
+// along -y in 2 s (6.5 cm/s), lower 10.2 cm in 1.5 s (to 2 mm under where the box, carried
+// at its start height plus the lift, touches the table: the box lands, the grip slips or
+// stretches by those 2 mm), wait 0.5 s, open to +-0.055 in 0.5 s, rise 5 cm in 0.5 s and wait
+// until 9 s. Target: the box's centre at (0, -0.16, 0.025). Asymmetry as the pinch's: the
+// fingers 1 mm apart along y (+-0.5 mm), the right one off in z by the jitter.
+Script clutterScript(std::uint64_t seed)
+{
+  const double jitter = seededJitter(seed);
+  const double y0 = -0.03;
+  const double y1 = -0.16;
+  const double z0 = 0.065 - 0.005;  // 5 mm under the box's centre
+  const double lift = 0.06;
+  const double lower = 0.102;
+  Script script;
+  script.scene_file = "table_clutter.urdf";
+  script.object = "pick_box";
+  script.lift_start = 1.5;
+  script.lift_end = 3.0;
+  script.lift_height = lift;
+  script.carry_end = 5.0;
+  script.release = 7.0;
+  script.duration = 9.0;
+  script.place_target = xyz(0.0, y1, 0.025);
+  for (int side : {-1, 1})
+  {
+    const double dy = -0.0005 * side;
+    const double z = z0 + (side > 0 ? jitter : 0.0);
+    const double open = 0.055 * side;
+    const double closed = 0.018 * side;
+    script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(open, y0 + dy, z)},
+                                                      {1.0, xyz(closed, y0 + dy, z)},
+                                                      {script.lift_start, xyz(closed, y0 + dy, z)},
+                                                      {script.lift_end, xyz(closed, y0 + dy, z + lift)},
+                                                      {script.carry_end, xyz(closed, y1 + dy, z + lift)},
+                                                      {6.5, xyz(closed, y1 + dy, z + lift - lower)},
+                                                      {script.release, xyz(closed, y1 + dy, z + lift - lower)},
+                                                      {7.5, xyz(open, y1 + dy, z + lift - lower)},
+                                                      {8.0, xyz(open, y1 + dy, z + lift - lower + 0.05)},
+                                                      {script.duration, xyz(open, y1 + dy, z + lift - lower + 0.05)}});
+  }
+  return script;
+}
+
 Script scriptFor(const ExperimentOptions& options)
 {
   switch (options.scenario)
@@ -143,6 +198,8 @@ Script scriptFor(const ExperimentOptions& options)
       return liftScript(true, options.fast, options.seed);
     case Scenario::kPinchCylinder:
       return pinchScript(options.seed);
+    case Scenario::kClutter:
+      return clutterScript(options.seed);
   }
   return slideScript(options.push_height, options.seed);
 }
@@ -253,13 +310,25 @@ const char* scenarioName(Scenario scenario)
       return "lift_two";
     case Scenario::kPinchCylinder:
       return "pinch_cylinder";
+    case Scenario::kClutter:
+      return "clutter";
   }
   return "?";
 }
 
+std::string scenarioNames(const std::string& separator)
+{
+  std::string names;
+  for (Scenario scenario : kAllScenarios)
+  {
+    names += (names.empty() ? "" : separator) + scenarioName(scenario);
+  }
+  return names;
+}
+
 bool parseScenario(const std::string& text, Scenario* scenario)
 {
-  for (Scenario candidate : {Scenario::kSlide, Scenario::kLiftOne, Scenario::kLiftTwo, Scenario::kPinchCylinder})
+  for (Scenario candidate : kAllScenarios)
   {
     if (text == scenarioName(candidate))
     {
@@ -332,6 +401,20 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   const long steps = std::lround(duration / options.time_step);
 
   ScenarioMetrics metrics(options.scenario, timesOf(script), world.bodyState(object), scene.bodies[object]);
+  // The other dynamic bodies (clutter: the neighbours the pick may disturb).
+  std::vector<int> neighbours;
+  std::vector<Eigen::Vector3d> neighbours_before;
+  if (options.scenario == Scenario::kClutter)
+  {
+    for (int body = 0; body < static_cast<int>(scene.bodies.size()); ++body)
+    {
+      if (body != object && !scene.bodies[body].is_static)
+      {
+        neighbours.push_back(body);
+        neighbours_before.push_back(world.bodyState(body).center_of_mass);
+      }
+    }
+  }
   CsvWriter csv(options.csv, world.interfaceCount());
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));
@@ -359,6 +442,15 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
     }
   }
   csv.close();
+  if (options.scenario == Scenario::kClutter)
+  {
+    std::vector<Eigen::Vector3d> neighbours_after;
+    for (int body : neighbours)
+    {
+      neighbours_after.push_back(world.bodyState(body).center_of_mass);
+    }
+    metrics.setNeighbours(neighbours_before, neighbours_after);
+  }
   result.scenario = scenarioName(options.scenario);
   result.model = contactModelName(options.model);
   result.duration_s = steps * options.time_step;

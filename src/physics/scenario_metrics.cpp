@@ -68,8 +68,42 @@ void ScenarioMetrics::add(double time, double dt, const BodyState& state)
       }
       break;
     }
+    case Scenario::kClutter:
+    {
+      if (time > times_.lift_end + 1e-9 && time <= times_.carry_end + 1e-9)
+      {
+        if (lifted)
+        {
+          held_ += dt;
+        }
+        carry_height_ = height;
+      }
+      if (time >= times_.lift_start && time <= times_.release + 1e-9)
+      {
+        const Eigen::AngleAxisd turn(state.pose.linear() * initial_.pose.linear().transpose());
+        max_turn_ = std::max(max_turn_, std::abs(turn.angle()));
+      }
+      break;
+    }
   }
   last_ = state;
+}
+
+void ScenarioMetrics::setNeighbours(const std::vector<Eigen::Vector3d>& before,
+                                    const std::vector<Eigen::Vector3d>& after)
+{
+  disturbed_ = 0;
+  max_neighbour_displacement_ = 0.0;
+  for (std::size_t i = 0; i < std::min(before.size(), after.size()); ++i)
+  {
+    const double moved = (after[i] - before[i]).norm();
+    // NaN counts as disturbed.
+    if (!(moved <= kDisturbedDistance))
+    {
+      ++disturbed_;
+    }
+    max_neighbour_displacement_ = std::isnan(moved) ? moved : std::max(max_neighbour_displacement_, moved);
+  }
 }
 
 std::map<std::string, double> ScenarioMetrics::metrics() const
@@ -101,6 +135,21 @@ std::map<std::string, double> ScenarioMetrics::metrics() const
       result["held_s"] = held_;
       result["lift_height_m"] = height;
       break;
+    case Scenario::kClutter:
+    {
+      const double carry = times_.carry_end - times_.lift_end;
+      result["held_s"] = held_;
+      result["held"] = held_ >= carry - 1e-6 ? 1.0 : 0.0;
+      result["lift_height_m"] = carry_height_;
+      result["turn_rad"] = max_turn_;
+      result["placed_error_m"] = (last_.center_of_mass - times_.place_target).norm();
+      if (disturbed_ >= 0)
+      {
+        result["disturbed_neighbours"] = disturbed_;
+        result["max_neighbour_displacement_m"] = max_neighbour_displacement_;
+      }
+      break;
+    }
   }
   return result;
 }

@@ -10,18 +10,23 @@ namespace god_finger
 {
 const char* experimentToolUsage()
 {
-  return "usage: god_finger_experiment --scenario slide|lift_one|lift_two|pinch_cylinder\n"
-         "                             --model god_object|god_finger|soft_finger\n"
-         "                             [--duration S] [--dt S] [--csv FILE] [--seed N] [--fast]\n"
-         "                             [--push-height M] [--scenes DIR] [--hand ideal|fake]\n"
-         "                             [--pad-solver points|constraint]\n"
-         "Runs the scenario's scripted hand motion in the physics world and prints one JSON object:\n"
-         "scenario, model, duration_s, steps, step_us_median, step_us_p99, max_penetration_m, nan,\n"
-         "metrics. --duration 0 (default) runs the scenario's own length; --fast lifts ten times\n"
-         "faster (lift scenarios); --push-height is the hand's height above the ball's centre (slide,\n"
-         "default 0.0125 m); --csv writes the time series. --hand ideal (default) puts each interface\n"
-         "where the script says; --hand fake runs the servo loop on simulated time with the fake\n"
-         "device's handle held by the scripted hand, as a ROS session on the servo loop does.\n";
+  static const std::string usage =
+      "usage: god_finger_experiment --scenario " + scenarioNames("|") +
+      "\n"
+      "                             --model god_object|god_finger|soft_finger\n"
+      "                             [--duration S] [--dt S] [--csv FILE] [--seed N] [--fast]\n"
+      "                             [--push-height M] [--scenes DIR] [--hand ideal|fake]\n"
+      "                             [--pad-solver points|constraint]\n"
+      "       god_finger_experiment --list-scenarios\n"
+      "Runs the scenario's scripted hand motion in the physics world and prints one JSON object:\n"
+      "scenario, model, duration_s, steps, step_us_median, step_us_p99, max_penetration_m, nan,\n"
+      "metrics. --duration 0 (default) runs the scenario's own length; --fast lifts ten times\n"
+      "faster (lift scenarios); --push-height is the hand's height above the ball's centre (slide,\n"
+      "default 0.0125 m); --csv writes the time series. --hand ideal (default) puts each interface\n"
+      "where the script says; --hand fake runs the servo loop on simulated time with the fake\n"
+      "device's handle held by the scripted hand, as a ROS session on the servo loop does.\n"
+      "--list-scenarios prints the scenario names, one a line (the one list scripts read).\n";
+  return usage.c_str();
 }
 
 std::string parseExperimentToolOptions(int argc, const char* const* argv, const std::string& default_scenes_dir,
@@ -37,6 +42,11 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
     if (option == "--help" || option == "-h")
     {
       options->help = true;
+      return "";
+    }
+    if (option == "--list-scenarios")
+    {
+      options->list_scenarios = true;
       return "";
     }
     if (option == "--fast")
@@ -59,7 +69,7 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
     {
       if (!parseScenario(value, &experiment.scenario))
       {
-        return "option '--scenario' = '" + value + "' is not one of slide, lift_one, lift_two, pinch_cylinder";
+        return "option '--scenario' = '" + value + "' is not one of " + scenarioNames();
       }
       have_scenario = true;
     }

@@ -21,5 +21,10 @@ int main(int argc, char** argv)
     std::cout << god_finger::experimentToolUsage();
     return 0;
   }
+  if (options.list_scenarios)
+  {
+    std::cout << god_finger::scenarioNames("\n") << "\n";
+    return 0;
+  }
   return god_finger::runExperimentTool(options, std::cout, std::cerr);
 }

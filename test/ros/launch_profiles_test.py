@@ -7,6 +7,7 @@ the haptic node, the physics node and the servo node all read it from
 (ros/interface_parameters.h), and no node may carry a private coupling or force limit of its
 own that would override it."""
 import os
+import subprocess
 import sys
 import unittest
 
@@ -14,19 +15,36 @@ import roslaunch.config
 import rospkg
 import rostest
 import yaml
+from roslib.packages import find_node
 
 PACKAGE = rospkg.RosPack().get_path("god_finger")
 PROFILE_KEYS = ("coupling_stiffness", "coupling_damping", "max_force")
 SIMULATED = {"fake": "fake", "interactive": "fake", "replay": "fake", "falcon": "falcon", "omni": "omni"}
 
 
+def scenarios():
+    """Every scenario, from the one list (experiment.h) through god_finger_experiment; each has
+    its launch, launch/SCENARIO.launch."""
+    tools = find_node("god_finger", "god_finger_experiment")
+    if not tools:
+        raise AssertionError("god_finger_experiment not built")
+    names = subprocess.run([tools[0], "--list-scenarios"], check=True, capture_output=True, text=True).stdout.split()
+    for name in names:
+        if not os.path.exists(os.path.join(PACKAGE, "launch", name + ".launch")):
+            raise AssertionError("scenario %s has no launch/%s.launch" % (name, name))
+    return names
+
+
 def launches():
     """(launch file, roslaunch args) for every shipped launch and device it takes."""
     cases = []
+    scenario_names = scenarios()
     for topology in ("servo", "nodelets", "processes"):
         for device in SIMULATED:
             cases.append(("demo.launch", ["device:=" + device, "topology:=" + topology, "bag:=/tmp/none.bag"]))
-        for scenario in ("slide", "lift_one", "lift_two", "pinch_cylinder"):
+            cases.append(("demo.launch", ["scene:=table_clutter", "device:=" + device, "topology:=" + topology,
+                                          "bag:=/tmp/none.bag"]))
+        for scenario in scenario_names:
             cases.append((scenario + ".launch", ["topology:=" + topology]))
         for device in ("falcon", "omni"):
             cases.append((device + ".launch", ["topology:=" + topology]))

@@ -6,6 +6,8 @@
 //   rolls / slides   (slide: rotation angle against translation / radius, as rolling_ratio)
 //   held / dropped   (lifts: height above the start at the end, tilt)
 //   still / swings   (pinch: rotation about the cylinder's axis after ~after seconds)
+//   placed           (clutter: the object ends within 1 mm of ~target [x, y, z] (m, world), and
+//                     never turned more than 0.02 rad)
 // ~interface names one interface: its device/state is subscribed so that the servo, which
 // waits for a subscriber there (wait_for_subscribers), starts once the test listens.
 #include "god_finger/ros/servo_setup.h"
@@ -19,6 +21,7 @@
 #include <cstdio>
 #include <map>
 #include <mutex>
+#include <vector>
 
 namespace
 {
@@ -125,6 +128,7 @@ TEST(Scenario, ReachesTheOfflineOutcomeAndIsTheOfflineRun)
   bool have_after = false;
   double max_tilt = 0.0;
   double max_turn_about_axis = 0.0;
+  double max_turn = 0.0;  // from the start, about any axis
   for (const auto& entry : poses)
   {
     const double t = entry.first * 1e-9 - t0;
@@ -134,6 +138,7 @@ TEST(Scenario, ReachesTheOfflineOutcomeAndIsTheOfflineRun)
     }
     pose = toEigen(entry.second);
     max_tilt = std::max(max_tilt, std::acos(std::min(1.0, pose.linear()(2, 2))));
+    max_turn = std::max(max_turn, Eigen::AngleAxisd(pose.linear() * start.linear().transpose()).angle());
     if (t >= after)
     {
       if (!have_after)
@@ -195,6 +200,13 @@ TEST(Scenario, ReachesTheOfflineOutcomeAndIsTheOfflineRun)
   else if (expect == "swings")
   {
     EXPECT_GT(max_turn_about_axis, 1.0);
+  }
+  else if (expect == "placed")
+  {
+    std::vector<double> target;
+    ASSERT_TRUE(pnh.getParam("target", target) && target.size() == 3) << "~target must be [x, y, z] (m)";
+    EXPECT_LT((pose.translation() - Eigen::Vector3d(target[0], target[1], target[2])).norm(), 0.001);
+    EXPECT_LT(max_turn, 0.02);
   }
   else
   {

@@ -3,6 +3,7 @@
 #include "tool_run.h"
 
 #include "god_finger/physics/contact_model.h"
+#include "god_finger/physics/experiment.h"
 
 #include <gtest/gtest.h>
 
@@ -103,6 +104,20 @@ TEST(ExperimentTool, FakeHandRunsTheScenarioThroughTheServoLoop)
   const test::ToolRun bad = runTool("--scenario lift_one --model god_finger --hand mouse");
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("option '--hand' = 'mouse' is not one of ideal, fake"), std::string::npos) << bad.err;
+}
+
+// Scripts (scripts/demo, scripts/plot_experiment, the launch test) read the scenarios from the
+// tool; the tool's usage and its error name them all.
+TEST(ExperimentTool, ListsEveryScenarioFromTheOneList)
+{
+  const test::ToolRun run = runTool("--list-scenarios");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, scenarioNames("\n") + "\n");
+  EXPECT_NE(run.out.find("clutter\n"), std::string::npos);
+  EXPECT_NE(runTool("--help").out.find("--scenario " + scenarioNames("|") + "\n"), std::string::npos);
+  const test::ToolRun bad = runTool("--scenario juggle --model god_finger");
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("is not one of " + scenarioNames()), std::string::npos) << bad.err;
 }
 
 TEST(ContactModels, TheCfgAndTheToolsListTheOneListInItsOrder)

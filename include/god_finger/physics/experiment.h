@@ -16,6 +16,15 @@
 //    fz_oscillation_amplitude_N (half the peak-to-peak vertical net force on the centre of
 //    mass, last 10 s), held_s (time after the lift with the object more than half the lift
 //    height above its start; the same in the lift scenarios), lift_height_m.
+//  - kClutter (urdf/scenes/table_clutter.urdf, 108 bodies): two fingers moving along x pinch a
+//    5 cm box (100 g) off the top of a small pile, 5 mm under its centre, lift it 6 cm, carry it
+//    13 cm sideways (-y), set it down on the table, let go and rise; 9 s in all. Metrics:
+//    held (1 if held through the whole carry), held_s (time in the carry with the box more than
+//    half the lift height above its start), lift_height_m (at the end of the carry), turn_rad
+//    (largest rotation of the box from its start, from the lift to the release),
+//    placed_error_m (distance of its centre of mass at the end from the target),
+//    disturbed_neighbours (the other dynamic bodies whose centre of mass ends more than 5 mm
+//    from its start) and max_neighbour_displacement_m.
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
@@ -43,8 +52,14 @@ enum class Scenario
   kLiftOne,
   kLiftTwo,
   kPinchCylinder,
+  kClutter,
 };
+// Every scenario, in the order tools and scripts list them: the one list (scenarioNames()).
+constexpr Scenario kAllScenarios[] = {Scenario::kSlide, Scenario::kLiftOne, Scenario::kLiftTwo,
+                                      Scenario::kPinchCylinder, Scenario::kClutter};
 const char* scenarioName(Scenario scenario);
+// The names of kAllScenarios joined by `separator` ("slide, lift_one, ...").
+std::string scenarioNames(const std::string& separator = ", ");
 bool parseScenario(const std::string& text, Scenario* scenario);
 
 struct ExperimentOptions
@@ -103,6 +118,13 @@ struct ScenarioTimes
   double duration = 0.0;     // s
   double lift_end = 0.0;     // s
   double lift_height = 0.0;  // m (0 for the slide)
+  // A pick and place (clutter): the lift starts, the set-down starts (the carry is
+  // [lift_end, carry_end]), the fingers open; where the object's centre of mass should end
+  // (m, world).
+  double lift_start = 0.0;  // s
+  double carry_end = 0.0;   // s
+  double release = 0.0;     // s
+  Eigen::Vector3d place_target = Eigen::Vector3d::Zero();
 };
 
 struct ScenarioSetup

@@ -9,7 +9,10 @@
 //  - pinch_cylinder: rotation_about_normal_rad and angular_velocity_about_normal_max (about the
 //    cylinder's axis, x of its link frame, after the lift), fz_oscillation_amplitude_N (half the
 //    peak-to-peak vertical force on the centre of mass over the script's last 10 s), held_s,
-//    lift_height_m.
+//    lift_height_m;
+//  - clutter: held, held_s, lift_height_m, turn_rad, placed_error_m (experiment.h), and from
+//    setNeighbours: disturbed_neighbours (moved more than kDisturbedDistance),
+//    max_neighbour_displacement_m.
 // Units: SI; states in the world frame. Not real-time (a map of results).
 #pragma once
 
@@ -19,6 +22,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace god_finger
 {
@@ -31,6 +35,10 @@ class ScenarioMetrics
                   const BodyDescription& object);
   // The object's state at the end of the step that ends at `time` (s), `dt` long.
   void add(double time, double dt, const BodyState& state);
+  // clutter: the other dynamic bodies' centres of mass (m, world) before the first step and
+  // after the last, in the same order.
+  void setNeighbours(const std::vector<Eigen::Vector3d>& before, const std::vector<Eigen::Vector3d>& after);
+  static constexpr double kDisturbedDistance = 0.005;  // m
   std::map<std::string, double> metrics() const;
 
  private:
@@ -48,5 +56,9 @@ class ScenarioMetrics
   double max_spin_ = 0.0;
   double fz_min_ = INFINITY;
   double fz_max_ = -INFINITY;
+  double carry_height_ = 0.0;
+  double max_turn_ = 0.0;
+  int disturbed_ = -1;  // -1: setNeighbours not called
+  double max_neighbour_displacement_ = 0.0;
 };
 }  // namespace god_finger
