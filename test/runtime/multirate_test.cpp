@@ -64,7 +64,7 @@ std::unique_ptr<HapticDevice> stillInTheAir()
 }
 
 // Samples by tick (one interface), and the world's user force after each tick.
-struct Run
+struct Trace
 {
   std::vector<ServoSample> samples;
   std::vector<Eigen::Vector3d> world_user_force;
@@ -73,7 +73,7 @@ struct Run
 };
 
 // `stall_at` < 0: no seam at all (the lockstep loop as it always was).
-Run run(std::unique_ptr<HapticDevice> device, int ticks, long stall_at, int stall_ticks, bool seam = true)
+Trace run(std::unique_ptr<HapticDevice> device, int ticks, long stall_at, int stall_ticks, bool seam = true)
 {
   WorldParams world;
   world.contact.distance_constant = 0.001;
@@ -90,7 +90,7 @@ Run run(std::unique_ptr<HapticDevice> device, int ticks, long stall_at, int stal
   }
   ServoLoop loop(std::make_unique<GodFingerWorld>(loadUrdfScene(kScene), world), std::move(interfaces), params);
   loop.prepare();
-  Run result;
+  Trace result;
   ServoSample sample;
   WorldSnapshot snapshot;
   for (int k = 0; k < ticks; ++k)
@@ -111,7 +111,7 @@ Run run(std::unique_ptr<HapticDevice> device, int ticks, long stall_at, int stal
 }
 
 // Energy received by the device over ticks [first, last) (the convention above).
-double energy(const Run& run, long first, long last)
+double energy(const Trace& run, long first, long last)
 {
   double sum = 0.0;
   for (long k = first; k < last && k + 1 < static_cast<long>(run.samples.size()); ++k)
@@ -120,7 +120,7 @@ double energy(const Run& run, long first, long last)
   }
   return sum;
 }
-double handleEnergy(const Run& run, long first, long last)
+double handleEnergy(const Trace& run, long first, long last)
 {
   double sum = 0.0;
   for (long k = std::max(1L, first); k < last && k < static_cast<long>(run.samples.size()); ++k)
@@ -131,7 +131,7 @@ double handleEnergy(const Run& run, long first, long last)
 }
 
 // The force-step bound of servo_loop.h at tick k (world frame, from the samples).
-double stepBound(const Run& run, long k)
+double stepBound(const Trace& run, long k)
 {
   const double delta = kMaxForce / (kStiffness * ServoLoopParams().recovery_periods);
   const Eigen::Vector3d p0 = run.samples[k - 2].interface_position;
@@ -156,8 +156,8 @@ TEST_P(WallPressStall, TheHandGetsAForceEveryPeriodAndNoEnergy)
 {
   const StallCase stall = GetParam();
   const int ticks = 1300;
-  const Run on_time = run(wallPress(), ticks, -1, 0, false);
-  const Run late = run(wallPress(), ticks, stall.at, stall.ticks);
+  const Trace on_time = run(wallPress(), ticks, -1, 0, false);
+  const Trace late = run(wallPress(), ticks, stall.at, stall.ticks);
   ASSERT_EQ(late.samples.size(), static_cast<std::size_t>(ticks));
   // No tick without a command: one sample per tick, each with a finite command.
   long stale = 0;
@@ -215,28 +215,37 @@ TEST_P(WallPressStall, TheHandGetsAForceEveryPeriodAndNoEnergy)
     largest_on_time_step =
         std::max(largest_on_time_step, (on_time.samples[k].user_force - on_time.samples[k - 1].user_force).norm());
   }
-  // Energy: none to the device during the stall, nor over the stall and its recovery, nor
-  // more than the on-time loop gives over the same ticks (and then the rest of the press).
+  // Energy. While the hand presses (contact onset, press-in, hold) the device receives none,
+  // during the stall nor over the stall and its recovery. While it lets go, the spring gives
+  // back what the hand stored in it, the on-time loop too: then no more than the on-time loop
+  // gives over the same ticks. Over the whole press (relaxed to relaxed) none.
   const long stall_end = stall.at + stall.ticks;
   const double e_stall = energy(late, stall.at, stall_end);
+  const double e_stall_on_time = energy(on_time, stall.at, stall_end);
   const double e_recovery = energy(late, stall.at, recovered_at + 1);
   const double e_on_time = energy(on_time, stall.at, recovered_at + 1);
-  const double e_rest = energy(late, stall.at, ticks);
-  const double e_rest_on_time = energy(on_time, stall.at, ticks);
+  const double e_total = energy(late, 0, ticks);
+  const double e_total_on_time = energy(on_time, 0, ticks);
   const double h_recovery = handleEnergy(late, stall.at, recovered_at + 1);
   const double h_on_time = handleEnergy(on_time, stall.at, recovered_at + 1);
   std::printf(
       "[ measured ] %s stall of %d ms at tick %ld: %ld ticks stale, recovered at +%ld; energy to the device (J): stall "
-      "%.3g, stall+recovery %.3g (on time %.3g), to the end %.3g (on time %.3g); handle's: %.3g (on time %.3g); "
-      "largest force step %.3g N (bound ratio %.3f; on-time run's largest %.3g N); force at stall end %.3f N (on time "
-      "%.3f N)\n",
-      stall.phase, stall.ticks, stall.at, stale, recovered_at - stall_end, e_stall, e_recovery, e_on_time, e_rest,
-      e_rest_on_time, h_recovery, h_on_time, largest_step, largest_ratio, largest_on_time_step,
+      "%.9g (on time %.9g), stall+recovery %.9g (on time %.9g), whole press %.9g (on time %.9g); handle's "
+      "stall+recovery %.9g (on time %.9g); largest force step %.3g N (bound ratio %.3f; on-time run's largest %.3g "
+      "N); force at stall end %.3f N (on time %.3f N)\n",
+      stall.phase, stall.ticks, stall.at, stale, recovered_at - stall_end, e_stall, e_stall_on_time, e_recovery,
+      e_on_time, e_total, e_total_on_time, h_recovery, h_on_time, largest_step, largest_ratio, largest_on_time_step,
       late.samples[stall_end - 1].user_force.norm(), on_time.samples[stall_end - 1].user_force.norm());
-  EXPECT_LE(e_stall, 1e-9);
-  EXPECT_LE(e_recovery, 1e-9);
-  EXPECT_LE(e_recovery, e_on_time + 1e-9);
-  EXPECT_LE(h_recovery, 1e-9);
+  if (std::string(stall.phase) != "release")
+  {
+    EXPECT_LE(e_stall, 1e-9);
+    EXPECT_LE(e_recovery, 1e-9);
+    EXPECT_LE(h_recovery, 1e-9);
+  }
+  EXPECT_LE(e_stall, std::max(0.0, e_stall_on_time) + 1e-9);
+  EXPECT_LE(e_recovery, std::max(0.0, e_on_time) + 1e-9);
+  EXPECT_LE(h_recovery, std::max(0.0, h_on_time) + 1e-9);
+  EXPECT_LE(e_total, 1e-9);
 }
 
 INSTANTIATE_TEST_SUITE_P(Stalls, WallPressStall,
@@ -254,8 +263,8 @@ INSTANTIATE_TEST_SUITE_P(Stalls, WallPressStall,
 
 TEST(Multirate, WithoutAStallTheForcesAreTheStepsBitForBit)
 {
-  const Run plain = run(wallPress(), 1300, -1, 0, false);
-  const Run seam = run(wallPress(), 1300, -1, 0, true);  // the seam, never late
+  const Trace plain = run(wallPress(), 1300, -1, 0, false);
+  const Trace seam = run(wallPress(), 1300, -1, 0, true);  // the seam, never late
   ASSERT_EQ(plain.samples.size(), 1300u);
   ASSERT_EQ(seam.samples.size(), 1300u);
   for (std::size_t k = 0; k < plain.samples.size(); ++k)
@@ -277,7 +286,7 @@ TEST(Multirate, WithoutAStallTheForcesAreTheStepsBitForBit)
 
 TEST(Multirate, AStallInFreeSpaceGivesNoForce)
 {
-  const Run late = run(stillInTheAir(), 300, 100, 20);
+  const Trace late = run(stillInTheAir(), 300, 100, 20);
   long stale = 0;
   for (const ServoSample& sample : late.samples)
   {
