@@ -36,10 +36,14 @@
 //    (what the coupling's stiffness and damping give for the device's own motion plus the
 //    anchor's legal motion; a fixed-anchor rendering never exceeds it, saturation being a
 //    projection). Back to exact when on time, the anchor on the proxy and the step's force
-//    within B_k of the last command. So every change of force while out of exact mode is at
-//    most B_k, and a spring to an anchor that moves only toward the proxy (which the coupling
-//    pulls toward the device) plus damping is passive: the hand receives no energy a perfectly
-//    on-time loop would not give it (test/runtime/multirate_test.cpp measures it).
+//    within B_k of the last command. So every change of force out of exact mode is at most B_k.
+//    Energy: a spring to a fixed anchor plus damping on the device's velocity is passive; the
+//    anchor moves only toward the latest proxy, which the coupling pulls toward the device, so
+//    an anchor move relaxes the spring, except when the scene pushes the proxy away from the
+//    device (a moving body, a reset's proxy pushed out of a surface), energy the on-time loop
+//    gives the hand too, here rate-limited. test/runtime/multirate_test.cpp measures it over
+//    5 and 20 ms stalls: never more energy to the device than the on-time loop gives, none
+//    while the hand presses.
 //
 // Threads and clocks:
 //  - Real time (CLOCK_MONOTONIC, absolute deadlines, so the rate does not drift; a late period
