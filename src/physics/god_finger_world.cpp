@@ -642,6 +642,18 @@ void GodFingerWorld::setInterfaceTarget(int interface, const Eigen::Vector3d& po
   impl_->proxies.at(interface).target = position;
 }
 
+void GodFingerWorld::setInterfaceTarget(int interface, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity)
+{
+  if (!position.allFinite() || !velocity.allFinite())
+  {
+    ++impl_->rejected_targets;
+    return;
+  }
+  auto& proxy = impl_->proxies.at(interface);
+  proxy.target = position;
+  proxy.previous_target = position - velocity * impl_->params.time_step;
+}
+
 void GodFingerWorld::step()
 {
   impl_->step();

@@ -234,6 +234,11 @@ struct ServoNode::Impl
     add("dropped_snapshots", std::to_string(counters.dropped_snapshots.load()));
     add("rejected_readings", std::to_string(counters.rejected_readings.load()));
     add("rejected_forces", std::to_string(counters.rejected_forces.load()));
+    // The multi-rate scheme: interface-ticks whose force the haptic side rendered because the
+    // physics was late, steps taken, and targets the late physics skipped.
+    add("stale_ticks", std::to_string(counters.stale_ticks.load()));
+    add("physics_steps", std::to_string(counters.physics_steps.load()));
+    add("skipped_targets", std::to_string(counters.skipped_targets.load()));
     add("contact_model", contactModelName(static_cast<ContactModel>(counters.model.load())));
     array.status.push_back(status);
     diagnostics_publisher.publish(array);

@@ -48,6 +48,16 @@ const ServoLoopParams& checked(const ServoLoopParams& params)
 }
 }  // namespace
 
+namespace
+{
+// `v` shortened to length `limit` if longer (direction kept).
+Eigen::Vector3d clampedLength(const Eigen::Vector3d& v, double limit)
+{
+  const double length = v.norm();
+  return length > limit ? Eigen::Vector3d(v * (limit / length)) : v;
+}
+}  // namespace
+
 ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInterface> interfaces,
                      const ServoLoopParams& params, Log log)
     : world_(std::move(world)),
@@ -58,9 +68,11 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
       readings_(interfaces_.size()),
       applied_(interfaces_.size(), Eigen::Vector3d::Zero()),
       read_at_(interfaces_.size(), 0.0),
+      render_(interfaces_.size()),
       samples_(static_cast<std::size_t>(params.queue_ticks) * std::max<std::size_t>(1, interfaces_.size())),
       snapshots_(4),
-      commands_(64)
+      commands_(64),
+      hand_commands_(64)
 {
   if (!world_ || interfaces_.empty())
   {
@@ -73,6 +85,14 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
             << params_.rate << " Hz)";
     throw InputError(message.str());
   }
+  if (params_.recovery_periods < 1)
+  {
+    throw InputError("the servo loop's recovery_periods must be at least 1");
+  }
+  if (params_.physics_delay && !params_.simulated_time)
+  {
+    throw InputError("the servo loop's physics_delay test seam works on simulated time only");
+  }
   for (const ServoInterface& interface : interfaces_)
   {
     if (!interface.device)
@@ -81,11 +101,13 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
     }
     guards_.emplace_back(interface.profile.guard);
   }
+  sem_init(&physics_wake_, 0, 0);
 }
 
 ServoLoop::~ServoLoop()
 {
   stop();
+  sem_destroy(&physics_wake_);
 }
 
 void ServoLoop::prepare()
@@ -94,7 +116,11 @@ void ServoLoop::prepare()
   {
     return;
   }
-  for (std::size_t i = 0; i < interfaces_.size(); ++i)
+  const std::size_t n = interfaces_.size();
+  latest_.proxies.resize(n);
+  frame_.targets.resize(n);
+  frame_.velocities.resize(n, Eigen::Vector3d::Zero());
+  for (std::size_t i = 0; i < n; ++i)
   {
     ServoInterface& interface = interfaces_[i];
     interface.device->start();
@@ -105,9 +131,21 @@ void ServoLoop::prepare()
       throw DeviceError("interface '" + interface.name + "': the device's first position is not finite");
     }
     world_->addInterface(start, interface.profile.coupling);
+    couplings_.push_back(world_->coupling(static_cast<int>(i)));
+    Render& render = render_[i];
+    render.target = render.previous_target = render.anchor = start;
+    latest_.proxies[i].proxy_position = start;
+    frame_.targets[i] = start;
+  }
+  seam_frame_ = frame_;
+  seam_result_ = latest_;
+  if (!params_.simulated_time)
+  {
+    targets_box_ = std::make_unique<LatestValue<TargetFrame>>(frame_);
+    results_box_ = std::make_unique<LatestValue<StepResult>>(latest_);
   }
   // Every snapshot slot sized once (the ring has capacity + 1 slots: one push and pop each
-  // moves on by one), so that tick() never allocates for them.
+  // moves on by one), so that neither side ever allocates for them.
   WorldSnapshot sized;
   world_->snapshot(&sized);
   WorldSnapshot drained;
@@ -137,7 +175,8 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   if (why.empty())
   {
     std::lock_guard<std::mutex> lock(post_mutex_);
-    if (!commands_.tryPush(command))
+    SpscQueue<ServoCommand>& queue = command.kind == ServoCommand::Kind::kHandTarget ? hand_commands_ : commands_;
+    if (!queue.tryPush(command))
     {
       why = "the servo loop's command queue is full";
     }
@@ -149,7 +188,17 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   return why.empty();
 }
 
-void ServoLoop::applyCommands()
+void ServoLoop::applyHandTargets()
+{
+  ServoCommand command;
+  while (hand_commands_.tryPop(&command))
+  {
+    ++counters_.commands;
+    interfaces_[command.interface].device->setHandTarget(command.hand_target);
+  }
+}
+
+void ServoLoop::applyWorldCommands()
 {
   ServoCommand command;
   while (commands_.tryPop(&command))
@@ -166,8 +215,7 @@ void ServoLoop::applyCommands()
       case ServoCommand::Kind::kReset:
         world_->resetAtInterfaces();
         break;
-      case ServoCommand::Kind::kHandTarget:
-        interfaces_[command.interface].device->setHandTarget(command.hand_target);
+      case ServoCommand::Kind::kHandTarget:  // never queued here (post() sends them to the haptic side)
         break;
     }
   }
@@ -187,11 +235,9 @@ T* ServoLoop::reserveIn(SpscQueue<T>& queue)
   return slot;
 }
 
-void ServoLoop::tick(double time)
+void ServoLoop::readDevices(double time)
 {
-  const double start = steadySeconds();
-  const double period_us = last_tick_start_ < 0.0 ? 1e6 / params_.rate : 1e6 * (start - last_tick_start_);
-  last_tick_start_ = start;
+  const double dt = 1.0 / params_.rate;
   bool cycle_model = false;
   bool reset = false;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
@@ -205,57 +251,77 @@ void ServoLoop::tick(double time)
     cycle_model = cycle_model || (pressed & 1u);
     reset = reset || (pressed & 2u);
     const Eigen::Vector3d target = interface.mapping.toWorld(readings_[i].position);
-    if (!target.allFinite())
+    Render& render = render_[i];
+    render.previous_target = render.target;
+    if (target.allFinite())
+    {
+      render.target = target;
+    }
+    else
     {
       ++counters_.rejected_readings;
     }
-    world_->setInterfaceTarget(static_cast<int>(i), target);
+    render.previous_velocity = render.velocity;
+    render.velocity = (render.target - render.previous_target) / dt;
+    frame_.targets[i] = target;  // the world rejects (and counts) non-finite ones
+    frame_.velocities[i] = render.velocity;
   }
-  applyCommands();
-  if (cycle_model)
+  cycle_presses_ += cycle_model ? 1 : 0;
+  reset_presses_ += reset ? 1 : 0;
+  frame_.tick = tick_;
+  frame_.read_at = read_at_[0];
+  frame_.cycle_presses = cycle_presses_;
+  frame_.reset_presses = reset_presses_;
+}
+
+void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
+{
+  const bool consecutive = frame.tick == last_frame_tick_ + 1;
+  counters_.skipped_targets += consecutive ? 0 : frame.tick - last_frame_tick_ - 1;
+  for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
-    world_->setContactModel(nextContactModel(world_->contactModel()));
+    if (consecutive)
+    {
+      world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i]);
+    }
+    else
+    {
+      // The skipped ticks' motion is not one step's: the damping takes the device's velocity.
+      world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i], frame.velocities[i]);
+    }
+  }
+  last_frame_tick_ = frame.tick;
+  applyWorldCommands();
+  if (frame.cycle_presses > seen_cycle_presses_)
+  {
+    for (long n = seen_cycle_presses_; n < frame.cycle_presses; ++n)
+    {
+      world_->setContactModel(nextContactModel(world_->contactModel()));
+    }
+    seen_cycle_presses_ = frame.cycle_presses;
     counters_.model = static_cast<int>(world_->contactModel());
   }
-  if (reset)
+  if (frame.reset_presses > seen_reset_presses_)
   {
+    seen_reset_presses_ = frame.reset_presses;
     world_->resetAtInterfaces();
   }
   const double step_start = steadySeconds();
   world_->step();
   const double step_end = steadySeconds();
+  ++counters_.physics_steps;
+  out->tick = frame.tick;
+  out->done_at = step_end;
+  out->step_us = 1e6 * (step_end - step_start);
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
     const InterfaceState& state = world_->interfaceState(static_cast<int>(i));
-    const Eigen::Vector3d force = interfaces_[i].mapping.forceToDevice(state.user_force);
-    if (!guards_[i].command(time, force))
-    {
-      ++counters_.rejected_forces;
-    }
-    const double commanded_at = steadySeconds();
-    ServoSample* sample = reserveIn(samples_);
-    if (!sample)
-    {
-      ++counters_.dropped_samples;
-      continue;
-    }
-    sample->tick = tick_;
-    sample->time = time;
-    sample->interface = static_cast<int>(i);
-    sample->reading = readings_[i];
-    sample->applied_force = applied_[i];
-    sample->commanded_force = guards_[i].output(time);
-    sample->interface_position = state.interface_position;
-    sample->proxy_position = state.proxy_position;
-    sample->user_force = state.user_force;
-    sample->read_at = read_at_[i];
-    sample->period_us = period_us;
-    sample->latency_us = 1e6 * (commanded_at - read_at_[i]);
-    sample->step_us = 1e6 * (step_end - step_start);
-    samples_.commit();
+    out->proxies[i].proxy_position = state.proxy_position;
+    out->proxies[i].user_force = state.user_force;
   }
-  if (tick_ % params_.snapshot_every == 0)
+  if (frame.tick >= next_snapshot_tick_)
   {
+    next_snapshot_tick_ = (frame.tick / params_.snapshot_every + 1) * params_.snapshot_every;
     WorldSnapshot* slot = reserveIn(snapshots_);
     if (slot)
     {
@@ -267,11 +333,219 @@ void ServoLoop::tick(double time)
       ++counters_.dropped_snapshots;
     }
   }
+}
+
+void ServoLoop::physicsInline()
+{
+  if (seam_busy_ && seam_ready_tick_ <= tick_)
+  {
+    // The late step completes now, with the targets it took when it began.
+    stepFrame(seam_frame_, &latest_);
+    seam_busy_ = false;
+  }
+  if (seam_busy_)
+  {
+    return;
+  }
+  const int delay = params_.physics_delay ? params_.physics_delay(tick_) : 0;
+  if (delay <= 0)
+  {
+    stepFrame(frame_, &latest_);
+    return;
+  }
+  seam_frame_ = frame_;
+  seam_ready_tick_ = tick_ + delay;
+  seam_busy_ = true;
+}
+
+void ServoLoop::decide(long tick, double time, double period_us)
+{
+  for (std::size_t i = 0; i < interfaces_.size(); ++i)
+  {
+    Render& render = render_[i];
+    const ProxyResult& proxy = latest_.proxies[i];
+    const long lag = tick - latest_.tick;
+    Eigen::Vector3d force;  // N, world, on the hand
+    if (render.exact && lag == 0)
+    {
+      force = proxy.user_force;
+      render.anchor = proxy.proxy_position;
+      render.stale = false;
+      render.ready_at = latest_.done_at;
+    }
+    else
+    {
+      const CouplingProfile& coupling = couplings_[i];
+      const double delta = coupling.max_force / (coupling.stiffness * params_.recovery_periods);
+      const double bound = coupling.stiffness * ((render.target - render.previous_target).norm() + delta) +
+                           coupling.damping * (render.velocity - render.previous_velocity).norm();
+      const Eigen::Vector3d to_proxy = proxy.proxy_position - render.anchor;
+      if (to_proxy.norm() <= delta)
+      {
+        render.anchor = proxy.proxy_position;
+      }
+      else
+      {
+        render.anchor += clampedLength(to_proxy, delta);
+      }
+      if (lag == 0 && render.anchor == proxy.proxy_position && (proxy.user_force - render.force).norm() <= bound)
+      {
+        force = proxy.user_force;
+        render.exact = true;
+        render.stale = false;
+        render.ready_at = latest_.done_at;
+      }
+      else
+      {
+        // A spring to the anchor, damping on the device's own velocity only, saturated.
+        const CouplingForce spring =
+            couplingForce(coupling, render.target, render.velocity, render.anchor, Eigen::Vector3d::Zero());
+        force = render.force + clampedLength(-spring.on_proxy - render.force, bound);
+        render.exact = false;
+        render.stale = true;
+        render.ready_at = steadySeconds();
+        ++counters_.stale_ticks;
+      }
+    }
+    render.force = force;
+    if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force)))
+    {
+      ++counters_.rejected_forces;
+    }
+    const double commanded_at = steadySeconds();
+    ServoSample* sample = reserveIn(samples_);
+    if (!sample)
+    {
+      ++counters_.dropped_samples;
+      continue;
+    }
+    sample->tick = tick;
+    sample->time = time;
+    sample->interface = static_cast<int>(i);
+    sample->reading = readings_[i];
+    sample->applied_force = applied_[i];
+    sample->commanded_force = guards_[i].output(time);
+    sample->interface_position = render.target;
+    sample->proxy_position = proxy.proxy_position;
+    sample->user_force = force;
+    sample->read_at = read_at_[i];
+    sample->period_us = period_us;
+    sample->latency_us = 1e6 * ((params_.simulated_time ? commanded_at : render.ready_at) - read_at_[i]);
+    sample->step_us = latest_.step_us;
+    sample->stale = render.stale;
+    sample->physics_lag = lag;
+    samples_.commit();
+  }
+}
+
+void ServoLoop::tick(double time)
+{
+  const double start = steadySeconds();
+  const double period_us = last_tick_start_ < 0.0 ? 1e6 / params_.rate : 1e6 * (start - last_tick_start_);
+  last_tick_start_ = start;
+  if (!params_.simulated_time)
+  {
+    // The force for the previous tick's reading, from whatever step completed by now; the
+    // update below applies it. Never waits for the physics.
+    if (pending_)
+    {
+      if (results_box_->take())
+      {
+        latest_.tick = results_box_->front().tick;
+        latest_.done_at = results_box_->front().done_at;
+        latest_.step_us = results_box_->front().step_us;
+        latest_.proxies = results_box_->front().proxies;  // same length: no allocation
+      }
+      decide(tick_ - 1, pending_time_, pending_period_us_);
+      pending_ = false;
+    }
+    readDevices(time);
+    applyHandTargets();
+    targets_box_->back() = frame_;  // same lengths: no allocation
+    targets_box_->publish();
+    sem_post(&physics_wake_);
+    pending_ = true;
+    pending_time_ = time;
+    pending_period_us_ = period_us;
+  }
+  else
+  {
+    readDevices(time);
+    applyHandTargets();
+    physicsInline();
+    decide(tick_, time, period_us);
+  }
   ++tick_;
   ++counters_.ticks;
 }
 
+void ServoLoop::runPhysics()
+{
+  const int priority = params_.realtime_priority > 1 ? params_.realtime_priority - 1 : 0;
+  setRealTimePriority(priority);
+  StepResult* out = nullptr;
+  while (physics_running_)
+  {
+    timespec deadline;
+    clock_gettime(CLOCK_REALTIME, &deadline);
+    deadline.tv_nsec += 20000000;  // 20 ms: looks at physics_running_ at least that often
+    if (deadline.tv_nsec >= 1000000000)
+    {
+      deadline.tv_nsec -= 1000000000;
+      ++deadline.tv_sec;
+    }
+    sem_timedwait(&physics_wake_, &deadline);
+    if (!targets_box_->take())
+    {
+      continue;  // woken for targets already stepped (posts accumulate while a step runs)
+    }
+    try
+    {
+      out = &results_box_->back();
+      stepFrame(targets_box_->front(), out);
+      results_box_->publish();
+    }
+    catch (const std::exception& error)
+    {
+      counters_.failed = true;
+      running_ = false;
+      physics_running_ = false;
+      if (log_)
+      {
+        log_(std::string("servo loop's physics stopped: ") + error.what());
+      }
+      return;
+    }
+  }
+}
+
 void ServoLoop::run()
+{
+  if (!params_.simulated_time)
+  {
+    physics_running_ = true;
+    physics_thread_ = std::thread([this]() { runPhysics(); });
+  }
+  runTicks();
+  if (physics_thread_.joinable())
+  {
+    physics_running_ = false;
+    sem_post(&physics_wake_);
+    physics_thread_.join();
+  }
+  if (pending_)
+  {
+    // The last tick's force (and sample), from the physics as it stopped.
+    if (results_box_->take())
+    {
+      latest_ = results_box_->front();
+    }
+    decide(tick_ - 1, pending_time_, pending_period_us_);
+    pending_ = false;
+  }
+}
+
+void ServoLoop::runTicks()
 {
   // On simulated time nothing is gained by real-time priority, and a loop that runs as fast
   // as it goes must not starve the publishers it waits for.

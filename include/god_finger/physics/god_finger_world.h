@@ -95,6 +95,11 @@ class GodFingerWorld
   // The device's position in the world for the next step; non-finite values are ignored
   // (and counted), the previous target stays.
   void setInterfaceTarget(int interface, const Eigen::Vector3d& position);
+  // As above, with the target's velocity (m/s, world) for the coupling's damping instead of
+  // the difference from the previous target over one step: for a caller that skipped targets
+  // (the servo loop's physics when it runs late), whose difference would put several periods'
+  // motion into one step. Non-finite position or velocity: ignored and counted.
+  void setInterfaceTarget(int interface, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
   // An external force (N, world, at the centre of mass) and torque (N m, world) on a dynamic
   // body during the next step only (a disturbance, a test's load). Ignored for static bodies;
   // InputError for a bad index or non-finite values.

@@ -1,40 +1,87 @@
-// The haptic servo loop: what the hand feels, in one thread, without ROS (CHAI3D's haptic
-// thread, ros_control's real-time/non-real-time split). Every period it
-//   1. applies to every device the force its guard gives now and reads the device;
-//   2. maps each reading into the world (the interface target; non-finite ones are rejected);
-//   3. applies the commands that came in (contact model, contact parameters, reset, hand
-//      targets) and the devices' buttons (0: next contact model, 1: reset);
-//   4. steps the world (the coupling pulls each proxy with its device's profile);
-//   5. commands each device the opposite of its proxy's coupling force, through its guard
-//      (saturation, NaN rejection, watchdog), applied at the next period's update;
-//   6. leaves a sample per interface, and every few periods a world snapshot, in lock-free
-//      queues for the publishers.
+// The haptic servo loop: what the hand feels, without ROS (CHAI3D's haptic thread, ros_control's
+// real-time/non-real-time split), in two rates: the multi-rate scheme of 6-DOF haptic
+// rendering (Ortega, Redon, Coquillart 2007; Knott, Kuhlen 2015). The device's period is
+// sacred, the physics' is not.
 //
-// Clocks: real time (CLOCK_MONOTONIC, absolute deadlines, so the rate does not drift; a late
-// period is an overrun, counted; far behind, the schedule restarts from now) or simulated
-// time (t = tick / rate exactly; paced at real_time_factor times the wall clock, or as fast as
-// it goes with 0). On simulated time the loop is deterministic: the same devices give the same
-// trajectory bit for bit, whatever the machine's load, and it waits for the publishers instead
-// of dropping their samples.
+// The haptic side, every period:
+//   1. commands each device a force (below), through its guard (saturation, NaN rejection,
+//      watchdog), and applies it at this period's update, which reads the device;
+//   2. maps each reading into the world (the interface target; non-finite ones are rejected)
+//      and hands the targets and the buttons' presses (0: next contact model, 1: reset) to the
+//      physics; applies the hand-target commands;
+//   3. leaves a sample per interface in a lock-free queue for the publishers.
+// The physics side, one step per targets it takes (the latest; older ones are skipped when it
+// is late, the skipped motion entering the coupling's damping as the device's velocity):
+// applies the world commands that came in (contact model, contact parameters, reset) and the
+// presses, steps the world (the coupling pulls each proxy with its device's profile) and
+// publishes the intermediate representation of the contact, per interface: the proxy position
+// after the step and the step's coupling reaction (InterfaceState::user_force); every few steps
+// a world snapshot for the publishers.
 //
-// Real-time safety: tick() neither allocates (after prepare()) nor logs, and takes no lock
-// another thread holds (the fake device's hand-target lock is taken only by the loop thread
-// here), except when it applies a reset, which rebuilds the Bullet world (an overrun); the
-// loop thread runs at SCHED_FIFO `realtime_priority` and locks its memory when permitted (a
-// warning through the log callback otherwise). Outputs: samples() and snapshots() (the
-// publisher thread is their one consumer). Inputs: post() (any thread; producers serialise
-// among themselves, never with the loop).
+// The force for the reading of tick k (applied at tick k + 1's update), per interface:
+//  - on time (the last completed step took tick k's targets) and exact: the step's coupling
+//    reaction, bit for bit what a single-rate loop commands;
+//  - late ("stale", physics lag k - j > 0 for the last completed step j): the virtual coupling
+//    rendered on the haptic side against an anchor a, a spring to a fixed point plus damping on
+//    the device's own velocity only (never a stale proxy velocity, which can inject energy):
+//      F = -sat(k_c (p_I - a) + b v_I, max_force)      (CouplingProfile of the interface)
+//    with p_I, v_I the device's target and velocity ((p_I,k - p_I,k-1) / dt) in the world;
+//  - the anchor rule: in exact mode a is the last completed step's proxy position; out of it a
+//    moves toward the last completed step's proxy position by at most
+//      delta = max_force / (k_c recovery_periods)   per period
+//    (so a proxy jump that the catching-up physics makes reaches the hand over at least
+//    recovery_periods periods per max_force of spring), and the commanded force moves toward
+//    the rendering by at most the force-step bound
+//      B_k = k_c (|p_I,k - p_I,k-1| + delta) + b |v_I,k - v_I,k-1|
+//    (what the coupling's stiffness and damping give for the device's own motion plus the
+//    anchor's legal motion; a fixed-anchor rendering never exceeds it, saturation being a
+//    projection). Back to exact when on time, the anchor on the proxy and the step's force
+//    within B_k of the last command. So every change of force out of exact mode is at most B_k.
+//    Energy: a spring to a fixed anchor plus damping on the device's velocity is passive; the
+//    anchor moves only toward the latest proxy, which the coupling pulls toward the device, so
+//    an anchor move relaxes the spring, except when the scene pushes the proxy away from the
+//    device (a moving body, a reset's proxy pushed out of a surface), energy the on-time loop
+//    gives the hand too, here rate-limited. test/runtime/multirate_test.cpp measures it over
+//    5 and 20 ms stalls: never more energy to the device than the on-time loop gives, none
+//    while the hand presses.
+//
+// Threads and clocks:
+//  - Real time (CLOCK_MONOTONIC, absolute deadlines, so the rate does not drift; a late period
+//    is an overrun, counted; far behind, the schedule restarts from now): the haptic thread
+//    (SCHED_FIFO `realtime_priority`) does the device I/O and never waits for the physics; the
+//    physics thread (SCHED_FIFO realtime_priority - 1, normal scheduling when that is 0) steps
+//    when new targets are posted (a POSIX semaphore, whose post is lock-free). Mailboxes:
+//    targets and results are latest-value triple buffers (core/latest_value.h), commands SPSC
+//    queues (world commands to the physics thread, hand targets to the haptic thread). The
+//    force for tick k's reading is decided at the start of tick k + 1, just before the update
+//    that applies it, from whatever step completed by then.
+//  - Simulated time (t = tick / rate exactly; paced at real_time_factor times the wall clock,
+//    or as fast as it goes with 0): one thread, lockstep, the physics never lags; the same
+//    devices give the same trajectory bit for bit, whatever the machine's load, and the loop
+//    waits for the publishers instead of dropping their samples. Its test seam
+//    (ServoLoopParams::physics_delay) makes chosen steps late by whole periods,
+//    deterministically.
+//
+// Real-time safety: tick() neither allocates (after prepare()) nor logs nor takes a lock
+// another thread holds (the fake device's hand-target lock is taken only by the haptic thread);
+// the physics thread allocates only when it applies a reset (it rebuilds the Bullet world), and
+// the haptic thread never waits for it. Both lock their memory when permitted (a warning
+// through the log callback otherwise). Outputs: samples() (haptic thread) and snapshots()
+// (physics thread; the publisher thread is the one consumer of each). Inputs: post() (any
+// thread; producers serialise among themselves, never with the loop).
 //
 // Units: s, m, N; device frame for device quantities, world for the rest.
 #pragma once
 
 #include "god_finger/core/device_profile.h"
+#include "god_finger/core/latest_value.h"
 #include "god_finger/core/parameter_table.h"
 #include "god_finger/core/spsc_queue.h"
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/devices/haptic_device.h"
 #include "god_finger/physics/god_finger_world.h"
 
+#include <semaphore.h>
 #include <atomic>
 #include <functional>
 #include <memory>
@@ -62,6 +109,14 @@ struct ServoLoopParams
   double real_time_factor = 1.0;  // simulated time only; 0: as fast as it goes
   int snapshot_every = 16;        // ticks between world snapshots (16: ~60 Hz)
   int queue_ticks = 2000;         // samples the publishers may lag behind, in ticks
+  // Periods over which the haptic side's anchor may cross the coupling's whole range
+  // (max_force / stiffness) when the physics catches up after being late (>= 1; see above).
+  int recovery_periods = 8;
+  // Test seam, simulated time only (InputError otherwise): how many periods late the step that
+  // takes tick k's targets completes (0: on time; d > 0: its result reaches the haptic side at
+  // tick k + d, and the physics takes no targets meanwhile). Called once per step taken, from
+  // tick(). Empty: every step on time.
+  std::function<int(long tick)> physics_delay;
 };
 // rate, realtime_priority, real_time_factor, snapshot_every, queue_ticks: units, ranges,
 // meanings (the device driver node reads rate and realtime_priority from it too).
@@ -82,8 +137,15 @@ struct ServoSample
   Eigen::Vector3d user_force = Eigen::Vector3d::Zero();          // N, world: the coupling's reaction
   double read_at = 0.0;                                          // s, steadySeconds() when the device was read
   double period_us = 0.0;                                        // since the previous tick began (wall clock)
-  double latency_us = 0.0;  // from this device's reading to its force command (wall clock)
-  double step_us = 0.0;     // the world step (wall clock)
+  // From this device's reading to its force being ready (wall clock): simulated time, the
+  // command; real time, the step's completion when on time, else the haptic side's rendering
+  // (at the next tick's start). Either way the force is applied at the next tick's update.
+  double latency_us = 0.0;
+  double step_us = 0.0;  // the world step whose result gave the force (wall clock)
+  // The force was rendered on the haptic side against the anchor (physics late, or recovering
+  // from it), not the step's coupling reaction; user_force is then that rendering's.
+  bool stale = false;
+  long physics_lag = 0;  // ticks from the targets of the last completed step to this reading (0: on time)
 };
 
 struct ServoCommand
@@ -112,8 +174,11 @@ struct ServoCounters
   std::atomic<long> rejected_readings{0};  // non-finite device positions
   std::atomic<long> rejected_forces{0};    // non-finite forces refused by a guard
   std::atomic<long> commands{0};
+  std::atomic<long> stale_ticks{0};      // interface-ticks whose force came from the anchor
+  std::atomic<long> physics_steps{0};    // steps taken
+  std::atomic<long> skipped_targets{0};  // targets the physics skipped, being late
   std::atomic<int> model{static_cast<int>(ContactModel::kGodFinger)};
-  std::atomic<bool> realtime{false};  // the thread got SCHED_FIFO
+  std::atomic<bool> realtime{false};  // the haptic thread got SCHED_FIFO
   std::atomic<bool> failed{false};    // a device failed; the loop stopped
 };
 
@@ -133,9 +198,12 @@ class ServoLoop
   // Starts the devices (DeviceError), reads each once at time 0 and puts its proxy there.
   // Allocates; call once, before tick() or start().
   void prepare();
-  // One period at loop time `time` (s). Real-time safe. Throws DeviceError from a device.
+  // One period at loop time `time` (s) on the calling thread: the haptic side, and on simulated
+  // time the physics too. Real-time safe. Throws DeviceError from a device. On real time, use
+  // start() (tick() alone would take no physics steps).
   void tick(double time);
-  // Runs prepare() (if not yet done) and the loop in its own thread until stop().
+  // Runs prepare() (if not yet done) and the loop in its own thread (and on real time the
+  // physics in another) until stop().
   void start();
   void stop();
   bool running() const;
@@ -177,8 +245,55 @@ class ServoLoop
   }
 
  private:
-  void applyCommands();
-  void run();
+  // Haptic -> physics: one tick's targets.
+  struct TargetFrame
+  {
+    long tick = -1;
+    double read_at = 0.0;                     // s, steadySeconds() of the first device's reading
+    long cycle_presses = 0;                   // ticks on which button 0 was pressed, since the loop began
+    long reset_presses = 0;                   // same, button 1
+    std::vector<Eigen::Vector3d> targets;     // m, world: the mapped readings (maybe non-finite)
+    std::vector<Eigen::Vector3d> velocities;  // m/s, world: the haptic side's estimate
+  };
+  // Physics -> haptic: the intermediate representation from one completed step.
+  struct ProxyResult
+  {
+    Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world, after the step
+    Eigen::Vector3d user_force = Eigen::Vector3d::Zero();      // N, world: the step's coupling reaction
+  };
+  struct StepResult
+  {
+    long tick = -1;  // the tick whose targets the step took; -1: none yet (proxies at their start)
+    double done_at = 0.0;
+    double step_us = 0.0;
+    std::vector<ProxyResult> proxies;
+  };
+  // The haptic side's state per interface (world frame).
+  struct Render
+  {
+    Eigen::Vector3d target = Eigen::Vector3d::Zero();  // m: the last finite mapped reading
+    Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s: (target - previous_target) / dt
+    Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
+    Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // m
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N on the hand, the last decided
+    bool exact = true;                                 // the force is the step's reaction
+    bool stale = false;                                // the last decision's
+    double ready_at = 0.0;                             // s, wall: when the last decision's force was ready
+  };
+
+  void readDevices(double time);
+  void applyHandTargets();
+  void applyWorldCommands();
+  // Physics side: one step with `frame`'s targets; fills `out`.
+  void stepFrame(const TargetFrame& frame, StepResult* out);
+  // Simulated time: the physics of this tick, lockstep, through the stall seam.
+  void physicsInline();
+  // Haptic side: the force for tick `tick`'s reading (loop time `time`), from latest_.
+  void decide(long tick, double time, double period_us);
+  void run();       // the haptic thread: starts and ends the physics thread on real time
+  void runTicks();  // its loop
+  void runPhysics();
   template <class T>
   T* reserveIn(SpscQueue<T>& queue);
 
@@ -187,19 +302,44 @@ class ServoLoop
   ServoLoopParams params_;
   Log log_;
   std::vector<ForceGuard> guards_;
+  std::vector<CouplingProfile> couplings_;  // the world's, copied for the haptic side
   std::vector<std::uint32_t> buttons_;
   std::vector<DeviceReading> readings_;
   std::vector<Eigen::Vector3d> applied_;
   std::vector<double> read_at_;  // wall-clock seconds of each reading
+  std::vector<Render> render_;
+  long cycle_presses_ = 0;  // haptic side's counts
+  long reset_presses_ = 0;
   SpscQueue<ServoSample> samples_;
   SpscQueue<WorldSnapshot> snapshots_;
-  SpscQueue<ServoCommand> commands_;
-  std::mutex post_mutex_;  // producers of commands only; the loop never takes it
+  SpscQueue<ServoCommand> commands_;       // world commands: consumed by the physics
+  SpscQueue<ServoCommand> hand_commands_;  // hand targets: consumed by the haptic side
+  std::mutex post_mutex_;                  // producers of commands only; the loop never takes it
   ServoCounters counters_;
   std::thread thread_;
+  std::thread physics_thread_;
   std::atomic<bool> running_{false};
+  std::atomic<bool> physics_running_{false};
   bool prepared_ = false;
   long tick_ = 0;
   double last_tick_start_ = -1.0;
+  double pending_time_ = 0.0;       // real time: loop time of the tick whose force is undecided
+  double pending_period_us_ = 0.0;  // and its period
+  bool pending_ = false;
+  // Haptic side's mailboxes' ends and its copy of the last completed step.
+  TargetFrame frame_;  // simulated time: this tick's targets
+  StepResult latest_;
+  std::unique_ptr<LatestValue<TargetFrame>> targets_box_;  // real time
+  std::unique_ptr<LatestValue<StepResult>> results_box_;   // real time
+  sem_t physics_wake_;
+  // Physics side.
+  long last_frame_tick_ = -1;
+  long seen_cycle_presses_ = 0;
+  long seen_reset_presses_ = 0;
+  long next_snapshot_tick_ = 0;
+  TargetFrame seam_frame_;  // simulated time: the targets of the late step in progress
+  bool seam_busy_ = false;
+  long seam_ready_tick_ = 0;
+  StepResult seam_result_;
 };
 }  // namespace god_finger
