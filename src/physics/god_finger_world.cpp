@@ -3,6 +3,7 @@
 #include "bullet_helpers.h"
 #include "collision_shape.h"
 #include "contact_response.h"
+#include "dormant_bodies.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
@@ -170,6 +171,24 @@ struct GodFingerWorld::Impl
     }
   }
   ContactAreaResult scratch;
+  // Sleeping bodies out of Bullet's world (dormant_bodies.h); the dynamic bodies in it; scratch:
+  // island tag -> the first body of that island falling asleep this step.
+  DormantBodies dormant;
+  std::vector<int> awake;
+  std::vector<int> group_of_tag;
+  // The contact points a body had when it fell asleep (with the body on the other side), put
+  // back into its new manifolds in the step it wakes: a woken body rests on the contacts and
+  // impulses it slept on, instead of finding them anew one point a step (GJK gives one), which
+  // made woken piles wobble, wake their neighbours and never sleep. Sleep and wake transitions
+  // only (they allocate).
+  struct SavedContact
+  {
+    const btCollisionObject* other = nullptr;
+    btManifoldPoint point;  // with this body as A
+  };
+  std::vector<std::vector<SavedContact>> saved_contacts;  // by body
+  std::vector<char> falling_asleep;                       // by body, this step
+  std::vector<int> woken;                                 // this step, until their contacts are back
   // This step's proxy-body touches (the deepest point of each manifold), before merging;
   // reserved once (kMaxTouches), so that stepping never allocates.
   struct Touch
@@ -285,6 +304,189 @@ struct GodFingerWorld::Impl
     {
       addProxyToWorld(static_cast<int>(i));
     }
+    dormant.reset(static_cast<int>(bodies.size()));
+    awake.clear();
+    awake.reserve(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      if (!scene.bodies[i].is_static)
+      {
+        awake.push_back(static_cast<int>(i));
+      }
+    }
+    group_of_tag.assign(bodies.size() + proxies.size(), -1);
+    saved_contacts.assign(bodies.size(), {});
+    falling_asleep.assign(bodies.size(), 0);
+    woken.clear();
+    woken.reserve(bodies.size());
+  }
+
+  // Back into Bullet's world, at rest where it slept. Woken by a proxy or a wrench, it stays awake
+  // for at least sleep_time (its timer restarts); woken by a moving neighbour, it keeps the timer
+  // of a body placed at rest: if the neighbour does not reach it, it sleeps again within a few
+  // steps.
+  void addAwake(int index, bool by_proxy)
+  {
+    btRigidBody* rigid = bodies[index].rigid.get();
+    world->addRigidBody(rigid, kBodyGroup, btBroadphaseProxy::AllFilter);
+    rigid->activate(true);
+    if (!by_proxy)
+    {
+      prepareSleep(rigid);
+    }
+    awake.push_back(index);
+    woken.push_back(index);
+  }
+
+  // The contact point `point` of a manifold whose body A is `a`, as seen with `a` as B instead.
+  static btManifoldPoint swapped(const btManifoldPoint& point)
+  {
+    btManifoldPoint out = point;
+    out.m_localPointA = point.m_localPointB;
+    out.m_localPointB = point.m_localPointA;
+    out.m_positionWorldOnA = point.m_positionWorldOnB;
+    out.m_positionWorldOnB = point.m_positionWorldOnA;
+    out.m_normalWorldOnB = -point.m_normalWorldOnB;
+    out.m_partId0 = point.m_partId1;
+    out.m_partId1 = point.m_partId0;
+    out.m_index0 = point.m_index1;
+    out.m_index1 = point.m_index0;
+    return out;
+  }
+
+  // The step's woken bodies get back the contacts they slept on (after the narrow phase, before
+  // the islands and the solver), where the new manifold lacks them and they still touch.
+  void restoreWokenContacts()
+  {
+    if (woken.empty())
+    {
+      return;
+    }
+    const int manifold_count = dispatcher->getNumManifolds();
+    for (int m = 0; m < manifold_count; ++m)
+    {
+      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      for (int side = 0; side < 2; ++side)
+      {
+        const btCollisionObject* self = side == 0 ? manifold->getBody0() : manifold->getBody1();
+        const btCollisionObject* other = side == 0 ? manifold->getBody1() : manifold->getBody0();
+        if (self->getUserIndex() != kKindBody)
+        {
+          continue;
+        }
+        std::vector<SavedContact>& saved = saved_contacts[self->getUserIndex2()];
+        for (const SavedContact& contact : saved)
+        {
+          if (contact.other != other)
+          {
+            continue;
+          }
+          btManifoldPoint point = side == 0 ? contact.point : swapped(contact.point);
+          point.m_positionWorldOnA = manifold->getBody0()->getWorldTransform() * point.m_localPointA;
+          point.m_positionWorldOnB = manifold->getBody1()->getWorldTransform() * point.m_localPointB;
+          point.m_distance1 = (point.m_positionWorldOnA - point.m_positionWorldOnB).dot(point.m_normalWorldOnB);
+          if (point.m_distance1 <= manifold->getContactBreakingThreshold() && manifold->getCacheEntry(point) < 0)
+          {
+            manifold->addManifoldPoint(point);
+          }
+        }
+      }
+    }
+    for (const int index : woken)
+    {
+      saved_contacts[index].clear();
+    }
+    woken.clear();
+  }
+
+  // Before the step's collision detection: every dormant group within Bullet's contact threshold
+  // of a proxy or of an awake body (those it wakes included) wakes, so that its contacts are
+  // found in this step.
+  void wakeNearAwake()
+  {
+    // Broadphase boxes include Bullet's contact threshold already (btCollisionWorld::updateAabbs).
+    const btVector3 margin(0.0, 0.0, 0.0);
+    const auto by_proxy = [this](int index) { addAwake(index, true); };
+    const auto by_body = [this](int index) { addAwake(index, false); };
+    for (const Proxy& proxy : proxies)
+    {
+      const btBroadphaseProxy* handle = proxy.rigid->getBroadphaseHandle();
+      dormant.wakeOverlapping(handle->m_aabbMin - margin, handle->m_aabbMax + margin, by_proxy);
+    }
+    // Awake bodies moving faster than they may sleep (one settling slower does not reach a
+    // neighbour before it sleeps itself).
+    const double speed2 = params.sleep.speed * params.sleep.speed;
+    const double angular2 = params.sleep.angular_speed * params.sleep.angular_speed;
+    for (std::size_t k = 0; k < awake.size(); ++k)
+    {
+      const btRigidBody* rigid = bodies[awake[k]].rigid.get();
+      if (rigid->isActive() &&
+          (rigid->getLinearVelocity().length2() >= speed2 || rigid->getAngularVelocity().length2() >= angular2))
+      {
+        const btBroadphaseProxy* handle = rigid->getBroadphaseHandle();
+        dormant.wakeOverlapping(handle->m_aabbMin - margin, handle->m_aabbMax + margin, by_body);
+      }
+    }
+  }
+
+  // After the step: the islands that fell asleep leave Bullet's world, each as one group.
+  void removeSleepers()
+  {
+    bool any = false;
+    for (const int index : awake)
+    {
+      const bool sleeping = bodies[index].rigid->getActivationState() == ISLAND_SLEEPING;
+      falling_asleep[index] = sleeping ? 1 : 0;
+      any = any || sleeping;
+    }
+    if (!any)
+    {
+      return;
+    }
+    const int manifold_count = dispatcher->getNumManifolds();
+    for (int m = 0; m < manifold_count; ++m)
+    {
+      const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      const btCollisionObject* a = manifold->getBody0();
+      const btCollisionObject* b = manifold->getBody1();
+      for (int p = 0; p < manifold->getNumContacts(); ++p)
+      {
+        if (a->getUserIndex() == kKindBody && falling_asleep[a->getUserIndex2()])
+        {
+          saved_contacts[a->getUserIndex2()].push_back({b, manifold->getContactPoint(p)});
+        }
+        if (b->getUserIndex() == kKindBody && falling_asleep[b->getUserIndex2()])
+        {
+          saved_contacts[b->getUserIndex2()].push_back({a, swapped(manifold->getContactPoint(p))});
+        }
+      }
+    }
+    for (std::size_t k = 0; k < awake.size();)
+    {
+      const int index = awake[k];
+      btRigidBody* rigid = bodies[index].rigid.get();
+      if (rigid->getActivationState() != ISLAND_SLEEPING)
+      {
+        ++k;
+        continue;
+      }
+      const int tag = rigid->getIslandTag();
+      const bool tagged = tag >= 0 && tag < static_cast<int>(group_of_tag.size());
+      btVector3 min;
+      btVector3 max;
+      rigid->getAabb(min, max);
+      world->removeRigidBody(rigid);
+      dormant.add(index, min, max, tagged ? group_of_tag[tag] : -1);
+      if (tagged && group_of_tag[tag] < 0)
+      {
+        group_of_tag[tag] = index;
+      }
+      bodies[index].net_force.setZero();
+      falling_asleep[index] = 0;
+      awake[k] = awake.back();
+      awake.pop_back();
+    }
+    std::fill(group_of_tag.begin(), group_of_tag.end(), -1);
   }
 
   // A dynamic body starts with a full sleep timer, less the time a free fall from rest takes to
@@ -309,13 +511,11 @@ struct GodFingerWorld::Impl
   // sleeps again within a few steps.
   void wakeAll()
   {
-    for (std::size_t i = 0; i < bodies.size(); ++i)
+    dormant.wakeAll([this](int index) { addAwake(index, false); });
+    for (const int index : awake)
     {
-      if (!scene.bodies[i].is_static)
-      {
-        bodies[i].rigid->activate(true);
-        prepareSleep(bodies[i].rigid.get());
-      }
+      bodies[index].rigid->activate(true);
+      prepareSleep(bodies[index].rigid.get());
     }
   }
 
@@ -325,6 +525,7 @@ struct GodFingerWorld::Impl
     buildProxyBody(params.coupling, params.pad, index, static_cast<int>(bodies.size()), &proxy);
     world->addRigidBody(proxy.rigid.get(), kProxyGroup, kBodyGroup);
     proxy.rigid->setGravity(btVector3(0, 0, 0));
+    group_of_tag.assign(bodies.size() + proxies.size(), -1);
     response->configureProxy(params, proxy.rigid.get());
   }
 
@@ -337,6 +538,7 @@ struct GodFingerWorld::Impl
   // contact; with kGodFinger their sub-god-objects join the solver.
   void injectContactAreas()
   {
+    restoreWokenContacts();
     injector->release();
     touches.clear();
     for (Proxy& proxy : proxies)
@@ -536,24 +738,23 @@ struct GodFingerWorld::Impl
       proxy.state.interface_position = proxy.target;
       proxy.previous_target = proxy.target;
     }
-    for (Body& body : bodies)
+    wakeNearAwake();
+    for (const int index : awake)
     {
-      body.previous_velocity = toEigen(body.rigid->getLinearVelocity());
+      bodies[index].previous_velocity = toEigen(bodies[index].rigid->getLinearVelocity());
     }
     solver->resetCounts();
     world->stepSimulation(dt, 0);
     injector->recordImpulses(&proxies, steps);
     time = (steps + 1) * dt;
     ++steps;
-    for (std::size_t i = 0; i < bodies.size(); ++i)
+    for (const int index : awake)
     {
-      Body& body = bodies[i];
-      if (!scene.bodies[i].is_static)
-      {
-        body.net_force =
-            scene.bodies[i].mass * (toEigen(body.rigid->getLinearVelocity()) - body.previous_velocity) / dt;
-      }
+      Body& body = bodies[index];
+      body.net_force =
+          scene.bodies[index].mass * (toEigen(body.rigid->getLinearVelocity()) - body.previous_velocity) / dt;
     }
+    removeSleepers();
     for (Proxy& proxy : proxies)
     {
       proxy.state.proxy_position = toEigen(proxy.rigid->getWorldTransform().getOrigin());
@@ -574,12 +775,17 @@ struct GodFingerWorld::Impl
       proxy.rigid.reset();
       proxy.shape.reset();
     }
-    for (Body& body : bodies)
+    for (std::size_t i = 0; i < bodies.size(); ++i)
     {
-      world->removeRigidBody(body.rigid.get());
+      Body& body = bodies[i];
+      if (!dormant.dormant(static_cast<int>(i)))
+      {
+        world->removeRigidBody(body.rigid.get());
+      }
       body.rigid.reset();
       body.placed.reset();
     }
+    dormant.reset(static_cast<int>(bodies.size()));
     world.reset();
     solver.reset();
     broadphase.reset();
@@ -705,6 +911,12 @@ void GodFingerWorld::applyBodyWrench(int body, const Eigen::Vector3d& force, con
   {
     return;
   }
+  if (impl_->dormant.dormant(body))
+  {
+    impl_->dormant.wakeOverlapping(impl_->bodies[body].rigid->getWorldTransform().getOrigin(),
+                                   impl_->bodies[body].rigid->getWorldTransform().getOrigin(),
+                                   [this](int index) { impl_->addAwake(index, true); });
+  }
   btRigidBody& rigid = *impl_->bodies[body].rigid;
   rigid.activate(true);
   rigid.applyCentralForce(toBullet(force));
@@ -758,7 +970,7 @@ BodyState GodFingerWorld::bodyState(int body) const
   state.linear_velocity = toEigen(b.rigid->getLinearVelocity());
   state.angular_velocity = toEigen(b.rigid->getAngularVelocity());
   state.net_force = b.net_force;
-  state.asleep = b.rigid->getActivationState() == ISLAND_SLEEPING;
+  state.asleep = impl_->dormant.dormant(body) || b.rigid->getActivationState() == ISLAND_SLEEPING;
   return state;
 }
 
@@ -792,9 +1004,9 @@ const TriangleMesh& GodFingerWorld::walkSurface(int body) const
 int GodFingerWorld::awakeBodyCount() const
 {
   int awake = 0;
-  for (std::size_t i = 0; i < impl_->bodies.size(); ++i)
+  for (const int index : impl_->awake)
   {
-    awake += !impl_->scene.bodies[i].is_static && impl_->bodies[i].rigid->isActive() ? 1 : 0;
+    awake += impl_->bodies[index].rigid->isActive() ? 1 : 0;
   }
   return awake;
 }
