@@ -220,7 +220,7 @@ def run(name, arguments, loaded, seconds, directory):
     label = name + (" loaded" if loaded else " idle")
     stem = os.path.join(directory, label.replace("/", "_").replace(" ", "_"))
     bag = stem + ".bag"
-    servo = name == "servo"
+    servo = name.startswith("servo")
     latency_csv = stem + ("_servo.csv" if servo else "_driver.csv")
     subprocess.run(["rosparam", "set", "/servo/timing_csv" if servo else "/finger/device_driver/timing_csv",
                     latency_csv], check=True)

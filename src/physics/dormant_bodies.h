@@ -5,9 +5,10 @@
 // integration, gravity, forces): about 80 ns per body a step, so 1000 resting boxes cost four
 // times what 10 do although the fingers touch the same two. A dormant body is in none of them:
 // the world removes it when its island falls asleep and adds it back, with every body of that
-// island (its group: what rests on it and what it rests on wakes with it), when an awake body or
-// a proxy comes within Bullet's contact threshold of its box, before the step's collision
-// detection, so the woken bodies' contacts are found in the step they wake.
+// island (its group: what rests on it and what it rests on wakes with it), when a proxy or a
+// body moving faster than the sleep speed comes within Bullet's contact threshold of its box,
+// before the step's collision detection; the world then puts back the contact points and impulses
+// the group slept on (GodFingerWorld::Impl::restoreWokenContacts).
 //
 // Units: m (boxes in world). Real-time: lookups and overlap queries allocate nothing; putting a
 // group to sleep and waking one do (a tree node per body, as Bullet's broadphase does on adding
