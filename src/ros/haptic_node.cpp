@@ -8,6 +8,7 @@
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/ros/conversions.h"
+#include "god_finger/ros/device_frame.h"
 #include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/interface_parameters.h"
 #include "god_finger/ros/parameters.h"
@@ -138,25 +139,11 @@ struct HapticNode::Impl
     }
   }
 
-  // world -> the device's frame (the workspace mapping's offset and rotation), so that rviz can
-  // show what lives in device coordinates (the interactive backend's marker). The mapping's
-  // scale has no place in a TF: with a scale other than 1 the marker shows unscaled.
+  // world -> the device's frame (ros/device_frame.h).
   void publishDeviceFrame(const std::string& name)
   {
     device_frame = name;
-    geometry_msgs::TransformStamped transform;
-    transform.header.stamp = ros::Time::now();
-    transform.header.frame_id = "world";
-    transform.child_frame_id = name;
-    const WorkspaceMappingParams& p = mapping.params();
-    transform.transform.translation.x = p.offset.x();
-    transform.transform.translation.y = p.offset.y();
-    transform.transform.translation.z = p.offset.z();
-    transform.transform.rotation.x = p.rotation.x();
-    transform.transform.rotation.y = p.rotation.y();
-    transform.transform.rotation.z = p.rotation.z();
-    transform.transform.rotation.w = p.rotation.w();
-    static_broadcaster.sendTransform(transform);
+    static_broadcaster.sendTransform(deviceFrameTransform(mapping.params(), name, ros::Time::now()));
   }
 
   void onFeedback(const geometry_msgs::WrenchStamped::ConstPtr& feedback)

@@ -9,6 +9,7 @@
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/ros/bag_track.h"
 #include "god_finger/ros/conversions.h"
+#include "god_finger/ros/device_frame.h"
 #include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/hand_marker.h"
 #include "god_finger/ros/interface_parameters.h"
@@ -30,6 +31,7 @@
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <std_srvs/Trigger.h>
+#include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <algorithm>
@@ -66,6 +68,8 @@ struct ServoNode::Impl
   ros::ServiceServer reset_service;
   ros::ServiceServer model_service;
   tf2_ros::TransformBroadcaster broadcaster;
+  // world -> NAME_device of every interface (ros/device_frame.h): the interactive handle's frame.
+  std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster;
   boost::recursive_mutex reconfigure_mutex;
   std::unique_ptr<dynamic_reconfigure::Server<god_finger::GodFingerConfig>> reconfigure;
   god_finger::GodFingerConfig last_good_config;
@@ -355,6 +359,14 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
                                              });
     }
   }
+  impl.static_broadcaster = std::make_unique<tf2_ros::StaticTransformBroadcaster>();
+  std::vector<geometry_msgs::TransformStamped> device_frames;
+  for (std::size_t i = 0; i < impl.interfaces.size(); ++i)
+  {
+    device_frames.push_back(deviceFrameTransform(impl.loop->interfaces()[i].mapping.params(),
+                                                 impl.interfaces[i].device_frame, ros::Time::now()));
+  }
+  impl.static_broadcaster->sendTransform(device_frames);
   if (impl.sim_time)
   {
     impl.clock_publisher = nh.advertise<rosgraph_msgs::Clock>("/clock", kPublisherQueue);
