@@ -202,6 +202,35 @@ TEST(Sleeping, AResetStartsAsleepAgainAndRepeatsTheFirstRun)
   EXPECT_TRUE(world.bodyState(world.scene().find("top")).asleep);
 }
 
+TEST(Sleeping, AThousandRestingBoxesSleepAndAFingerWakesOnlyTheOneItPresses)
+{
+  // 1000 boxes 8 cm apart on a 3 m table (bench/scale_scene.h's scene, the scale section's).
+  SceneDescription scene;
+  scene.bodies.push_back(table());
+  scene.bodies[0].geometry.size = Eigen::Vector3d(3.0, 3.0, 0.05);
+  scene.bodies[0].pose.translation() = Eigen::Vector3d(1.2, 1.2, -0.025);
+  for (int i = 0; i < 1000; ++i)
+  {
+    scene.bodies.push_back(box("box" + std::to_string(i), 0.08 * (i % 32), 0.08 * (i / 32), 0.0));
+  }
+  GodFingerWorld world(scene, WorldParams());
+  const int finger = world.addInterface(Eigen::Vector3d(0.0, 0.0, kBox + 0.05));
+  run(&world, 0.01);
+  EXPECT_EQ(world.awakeBodyCount(), 0);
+  // The finger comes down on box0 and presses it 4 mm: box0 wakes, its neighbours 4 cm away do not.
+  const double dt = world.params().time_step;
+  for (long i = 0; i < std::lround(0.5 / dt); ++i)
+  {
+    const double t = (i + 1) * dt;
+    world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, kBox + 0.05 - 0.054 * std::min(1.0, t / 0.3)));
+    world.step();
+  }
+  EXPECT_EQ(world.interfaceState(finger).contact_count, 1);
+  EXPECT_EQ(world.awakeBodyCount(), 1);
+  EXPECT_FALSE(world.bodyState(world.scene().find("box0")).asleep);
+  EXPECT_TRUE(world.bodyState(world.scene().find("box1")).asleep);
+}
+
 TEST(Sleeping, BadSleepParametersAreRefusedByName)
 {
   WorldParams params;
