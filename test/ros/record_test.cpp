@@ -5,13 +5,16 @@
 #include <ros/ros.h>
 #include <rosbag/bag.h>
 #include <rosbag/view.h>
+#include <xmlrpcpp/XmlRpcValue.h>
 
 #include <god_finger/DeviceState.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <set>
 
 namespace
 {
@@ -20,19 +23,81 @@ bool exists(const std::string& path)
   return std::ifstream(path).good();
 }
 
+// The topics of `topics` that the master does not yet list `node` as subscribed to (all of
+// them when the master does not answer).
+std::set<std::string> notSubscribed(const std::string& node, std::set<std::string> topics)
+{
+  XmlRpc::XmlRpcValue request;
+  XmlRpc::XmlRpcValue response;
+  XmlRpc::XmlRpcValue payload;
+  request[0] = ros::this_node::getName();
+  if (!ros::master::execute("getSystemState", request, response, payload, false))
+  {
+    return topics;
+  }
+  XmlRpc::XmlRpcValue& subscriptions = payload[1];
+  for (int i = 0; i < subscriptions.size(); ++i)
+  {
+    for (int j = 0; j < subscriptions[i][1].size(); ++j)
+    {
+      if (static_cast<std::string>(subscriptions[i][1][j]) == node)
+      {
+        topics.erase(static_cast<std::string>(subscriptions[i][0]));
+      }
+    }
+  }
+  return topics;
+}
+
+std::string joined(const std::set<std::string>& names)
+{
+  std::string text;
+  for (const std::string& name : names)
+  {
+    text += (text.empty() ? "" : ", ") + name;
+  }
+  return text;
+}
+
+std::atomic<long> g_states{0};
+
 TEST(Record, BagHoldsEveryDeviceStateAndTheRestOfTheSession)
 {
   ros::NodeHandle pnh("~");
   const std::string bag_path = pnh.param<std::string>("bag", "");
   ASSERT_FALSE(bag_path.empty());
-  // Let the session run, then stop the recorder (it closes the bag on shutdown).
+  ros::NodeHandle nh;
+  ros::Subscriber states_seen = nh.subscribe<god_finger::DeviceState>(
+      "/finger/device/state", 2000, [](const god_finger::DeviceState::ConstPtr&) { ++g_states; });
+  ros::AsyncSpinner spinner(1);
+  spinner.start();
+  // Let the session run, then stop the recorder (it closes the bag on shutdown): until the
+  // recorder has subscribed to every topic the test looks for, then for 3000 more device states
+  // (3 s of the 1 kHz loop; the bag must hold more than 2000 of them, and the feedback and poses
+  // over more than 2 s).
   const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(30.0);
   while (!exists(bag_path + ".active"))
   {
     ASSERT_LT(ros::WallTime::now(), give_up) << "no " << bag_path << ".active";
     ros::WallDuration(0.05).sleep();
   }
-  ros::WallDuration(4.0).sleep();
+  const std::set<std::string> topics = {"/finger/device/state", "/finger/device/force", "/finger/pose",
+                                        "/finger/feedback",     "/finger/proxy",        "/contact_areas",
+                                        "/tf"};
+  while (!notSubscribed("/recorder", topics).empty())
+  {
+    ASSERT_LT(ros::WallTime::now(), give_up)
+        << "the recorder has not subscribed to " << joined(notSubscribed("/recorder", topics));
+    ros::WallDuration(0.05).sleep();
+  }
+  const long states_then = g_states;
+  const ros::WallTime recorded_by = ros::WallTime::now() + ros::WallDuration(30.0);
+  while (g_states - states_then < 3000)
+  {
+    ASSERT_LT(ros::WallTime::now(), recorded_by)
+        << "only " << g_states - states_then << " of 3000 device states within 30 s of the recorder subscribing";
+    ros::WallDuration(0.05).sleep();
+  }
   ASSERT_EQ(std::system("rosnode kill /recorder > /dev/null"), 0);
   const ros::WallTime closed_by = ros::WallTime::now() + ros::WallDuration(20.0);
   while (!exists(bag_path) || exists(bag_path + ".active"))
