@@ -81,9 +81,9 @@ TEST(Record, BagHoldsEveryDeviceStateAndTheRestOfTheSession)
     ASSERT_LT(ros::WallTime::now(), give_up) << "no " << bag_path << ".active";
     ros::WallDuration(0.05).sleep();
   }
-  const std::set<std::string> topics = {"/finger/device/state", "/finger/device/force", "/finger/pose",
-                                        "/finger/feedback",     "/finger/proxy",        "/contact_areas",
-                                        "/tf"};
+  const std::set<std::string> topics = {
+      "/finger/device/state", "/finger/device/force", "/finger/pose", "/finger/feedback",
+      "/finger/proxy",        "/contact_areas",       "/tf"};
   while (!notSubscribed("/recorder", topics).empty())
   {
     ASSERT_LT(ros::WallTime::now(), give_up)

@@ -135,9 +135,9 @@ TEST(ServoLoop, TheHandFeelsTheReactionOfTheForceThatPullsTheProxy)
   while (loop->samples().tryPop(&sample))
   {
     // Device frame = world here (identity mapping): the command is the user force, guarded.
-    const Eigen::Vector3d expected =
-        sample.user_force.norm() > max_force ? Eigen::Vector3d(sample.user_force.normalized() * max_force)
-                                             : sample.user_force;
+    const Eigen::Vector3d expected = sample.user_force.norm() > max_force
+                                         ? Eigen::Vector3d(sample.user_force.normalized() * max_force)
+                                         : sample.user_force;
     ASSERT_LT((sample.commanded_force - expected).norm(), 1e-12) << "tick " << sample.tick;
     ++checked;
   }
