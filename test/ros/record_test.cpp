@@ -7,14 +7,18 @@
 #include <rosbag/view.h>
 #include <xmlrpcpp/XmlRpcValue.h>
 
+#include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/WrenchStamped.h>
 #include <god_finger/DeviceState.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
+#include <vector>
 
 namespace
 {
@@ -109,6 +113,8 @@ TEST(Record, BagHoldsEveryDeviceStateAndTheRestOfTheSession)
   rosbag::Bag bag(bag_path, rosbag::bagmode::Read);
   std::map<std::string, long> counts;
   std::map<std::string, std::pair<double, double>> spans;  // first, last recording time (s)
+  // Header stamps (ns): the servo stamps a tick's device state, pose and feedback alike.
+  std::map<std::string, std::vector<std::uint64_t>> stamps;
   long states = 0;
   std::uint32_t first_seq = 0;
   std::uint32_t last_seq = 0;
@@ -128,6 +134,19 @@ TEST(Record, BagHoldsEveryDeviceStateAndTheRestOfTheSession)
       }
       last_seq = state->header.seq;
       ++states;
+      stamps[message.getTopic()].push_back(state->header.stamp.toNSec());
+    }
+    else if (message.getTopic() == "/finger/feedback")
+    {
+      const geometry_msgs::WrenchStamped::ConstPtr feedback = message.instantiate<geometry_msgs::WrenchStamped>();
+      ASSERT_TRUE(feedback != nullptr);
+      stamps[message.getTopic()].push_back(feedback->header.stamp.toNSec());
+    }
+    else if (message.getTopic() == "/finger/pose")
+    {
+      const geometry_msgs::PoseStamped::ConstPtr pose = message.instantiate<geometry_msgs::PoseStamped>();
+      ASSERT_TRUE(pose != nullptr);
+      stamps[message.getTopic()].push_back(pose->header.stamp.toNSec());
     }
   }
   std::string summary;
@@ -144,14 +163,35 @@ TEST(Record, BagHoldsEveryDeviceStateAndTheRestOfTheSession)
   {
     EXPECT_GT(counts[topic], 0) << topic;
   }
-  // Feedback and poses at the loop's rate too, over the time each was recorded (the recorder
-  // finds topics by its regular expression one by one, so each starts at its own time; no gap
-  // check: they carry no sequence number).
+  // Feedback and poses of every tick too, over the time each was recorded (the recorder finds
+  // topics by its regular expression one by one, so each starts at its own time; they carry no
+  // sequence number, but the stamp of the tick's device state, whose sequence has no gap).
+  std::vector<std::uint64_t>& state_stamps = stamps["/finger/device/state"];
+  std::sort(state_stamps.begin(), state_stamps.end());
   for (const char* topic : {"/finger/feedback", "/finger/pose"})
   {
     const double span = spans[topic].second - spans[topic].first;
     EXPECT_GT(span, 2.0) << topic;
-    EXPECT_GT(counts[topic], 0.95 * 1000.0 * span) << topic << " over " << span << " s";
+    std::vector<std::uint64_t>& topic_stamps = stamps[topic];
+    ASSERT_FALSE(topic_stamps.empty()) << topic;
+    std::sort(topic_stamps.begin(), topic_stamps.end());
+    // The ticks both were recorded over (the recorder was stopped in the middle of a tick's
+    // messages, and started on each topic at its own time).
+    const std::uint64_t first = std::max(state_stamps.front(), topic_stamps.front());
+    const std::uint64_t last = std::min(state_stamps.back(), topic_stamps.back());
+    const auto within = [first, last](const std::vector<std::uint64_t>& sorted)
+    {
+      return std::vector<std::uint64_t>(std::lower_bound(sorted.begin(), sorted.end(), first),
+                                        std::upper_bound(sorted.begin(), sorted.end(), last));
+    };
+    const std::vector<std::uint64_t> ticks = within(state_stamps);
+    const std::vector<std::uint64_t> recorded = within(topic_stamps);
+    std::vector<std::uint64_t> missing;
+    std::set_difference(ticks.begin(), ticks.end(), recorded.begin(), recorded.end(), std::back_inserter(missing));
+    EXPECT_GT(ticks.size(), 2000u) << topic;
+    EXPECT_EQ(missing.size(), 0u) << topic << ": " << missing.size() << " of the " << ticks.size()
+                                  << " ticks recorded on both are not in the bag";
+    EXPECT_EQ(recorded.size(), ticks.size()) << topic << ": stamps that are no device state's";
   }
 }
 }  // namespace
