@@ -72,7 +72,8 @@ TEST(Record, BagHoldsEveryDeviceStateAndTheRestOfTheSession)
   ASSERT_FALSE(bag_path.empty());
   ros::NodeHandle nh;
   ros::Subscriber states_seen = nh.subscribe<god_finger::DeviceState>(
-      "/finger/device/state", 2000, [](const god_finger::DeviceState::ConstPtr&) { ++g_states; });
+      "/finger/device/state", 2000, [](const god_finger::DeviceState::ConstPtr&) { ++g_states; }, ros::VoidConstPtr(),
+      ros::TransportHints().tcpNoDelay());
   ros::AsyncSpinner spinner(1);
   spinner.start();
   // Let the session run, then stop the recorder (it closes the bag on shutdown): until the
