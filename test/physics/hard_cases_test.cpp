@@ -1,6 +1,7 @@
 // Numerical stability on hard cases (issue 5): every case asserts no NaN, a bounded object
 // energy or motion, no penetration beyond a stated tolerance, and that it ends (each runs a
 // fixed number of steps). The bounds are physical, stated where they are checked.
+#include "device_profile_file.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
 
@@ -229,12 +230,38 @@ TEST_P(HardCases, ObjectsAThousandTimesHeavierAndLighterThanTheProxy)
   }
 }
 
+// The proxy in free space (no gravity) after a 1 cm step of the hand, with `coupling`: the
+// lowest and highest z it takes over its last 0.2 s of 3 s.
+std::pair<double, double> stepResponse(const WorldParams& params, const CouplingProfile& coupling)
+{
+  GodFingerWorld world(SceneDescription(), params);
+  const int finger = world.addInterface(Eigen::Vector3d::Zero(), coupling);
+  double low = INFINITY;
+  double high = -INFINITY;
+  for (int i = 0; i < 3000; ++i)
+  {
+    world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, 0.01));
+    world.step();
+    const double z = world.interfaceState(finger).proxy_position.z();
+    if (!std::isfinite(z))
+    {
+      return {NAN, NAN};
+    }
+    if (i >= 2800)
+    {
+      low = std::min(low, z);
+      high = std::max(high, z);
+    }
+  }
+  return {low, high};
+}
+
 TEST_P(HardCases, CouplingIsStableUpToItsAnalyticLimitAndRefusedBeyond)
 {
   // The proxy in free space (no gravity) follows a 1 cm step of the hand. The explicit
   // coupling is stable iff (k dt + 2 c) dt / m < 4: at 90 % of that stiffness it settles, and
-  // a world beyond it is refused with a message naming the limit. The device profiles'
-  // stiffnesses (400 to 800 N/m) are under 2 % of the limit at the default proxy (20 g, 1 ms).
+  // a world beyond it is refused with a message naming the limit. Every shipped device
+  // profile's coupling (config/devices/*.yaml) is accepted and settles too.
   WorldParams params = fingerParams();
   params.gravity = Eigen::Vector3d::Zero();
   params.coupling.max_force = 1e4;
@@ -246,23 +273,8 @@ TEST_P(HardCases, CouplingIsStableUpToItsAnalyticLimitAndRefusedBeyond)
   for (double fraction : {0.001, 0.1, 0.5, 0.9})
   {
     params.coupling.stiffness = fraction * limit;
-    SceneDescription empty;
-    GodFingerWorld world(empty, params);
-    const int finger = world.addInterface(Eigen::Vector3d::Zero());
-    double low = INFINITY;
-    double high = -INFINITY;
-    for (int i = 0; i < 3000; ++i)
-    {
-      world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, 0.01));
-      world.step();
-      const double z = world.interfaceState(finger).proxy_position.z();
-      ASSERT_TRUE(std::isfinite(z)) << fraction;
-      if (i >= 2800)
-      {
-        low = std::min(low, z);
-        high = std::max(high, z);
-      }
-    }
+    const auto [low, high] = stepResponse(params, params.coupling);
+    ASSERT_TRUE(std::isfinite(high)) << fraction;
     std::printf("[ coupling %8.0f N/m ] last 0.2 s peak-to-peak %.3g m, rests at %.6f m\n", params.coupling.stiffness,
                 high - low, high);
     EXPECT_LT(high - low, 1e-6) << fraction;
@@ -271,7 +283,18 @@ TEST_P(HardCases, CouplingIsStableUpToItsAnalyticLimitAndRefusedBeyond)
   params.coupling.stiffness = 1.01 * limit;
   EXPECT_NE(validate(params).find("coupling unstable at this time step"), std::string::npos) << validate(params);
   EXPECT_THROW(GodFingerWorld(SceneDescription(), params), InputError);
-  EXPECT_LT(800.0, 0.02 * limit);
+  params.coupling.stiffness = WorldParams().coupling.stiffness;
+  for (const char* device : {"fake", "falcon", "omni"})
+  {
+    const CouplingProfile coupling = test::shippedDeviceProfile(device).coupling;
+    EXPECT_EQ(couplingStabilityError(coupling, m, dt), "") << device;
+    const auto [low, high] = stepResponse(params, coupling);
+    ASSERT_TRUE(std::isfinite(high)) << device;
+    std::printf("[ coupling %s, %.0f N/m, %.1f N s/m, %.1f N ] last 0.2 s peak-to-peak %.3g m, rests at %.6f m\n",
+                device, coupling.stiffness, coupling.damping, coupling.max_force, high - low, high);
+    EXPECT_LT(high - low, 1e-6) << device;
+    EXPECT_NEAR(high, 0.01, 1e-6) << device;
+  }
 }
 
 TEST_P(HardCases, HandAtTwoMetresPerSecondIntoATwoMillimetrePlateDoesNotTunnel)

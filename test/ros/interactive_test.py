@@ -35,6 +35,17 @@ class Interactive(unittest.TestCase):
     def on_areas(self, message):
         self.areas = len(message.areas)
 
+    def wait_for(self, condition, seconds, what):
+        """Polls `condition` until it holds or `seconds` pass; fails naming `what` (a string, or
+        a function giving one, called when the wait fails)."""
+        deadline = time.time() + seconds
+        while not condition() and time.time() < deadline:
+            time.sleep(0.05)
+        self.assertTrue(condition(), "waited %.0f s for %s" % (seconds, what() if callable(what) else what))
+
+    def handle_error(self, x, y, z):
+        return math.sqrt((self.state.x - x) ** 2 + (self.state.y - y) ** 2 + (self.state.z - z) ** 2)
+
     def drag_to(self, x, y, z, seconds):
         """Drags in 20 mouse events over `seconds`, from where the handle is."""
         start = self.state
@@ -50,25 +61,26 @@ class Interactive(unittest.TestCase):
             feedback.pose.position.z = start.z + s * (z - start.z)
             feedback.pose.orientation.w = 1.0
             self.drag.publish(feedback)
+            # Paces the drag (mouse events spread over `seconds`, as a hand drags), not a
+            # synchronisation: the tests below wait on what the drag does.
             time.sleep(seconds / 20.0)
 
     def test_marker_moves_the_finger_onto_the_ball(self):
-        deadline = time.time() + 30.0
-        while self.state is None and time.time() < deadline:
-            time.sleep(0.05)
-        self.assertIsNotNone(self.state, "no device state")
-        time.sleep(1.0)  # the marker server's connections
+        self.wait_for(lambda: self.state is not None, 30.0, "a device state")
+        self.wait_for(lambda: self.drag.get_num_connections() > 0, 10.0,
+                      "the marker server to subscribe to the marker's feedback")
         # In free space, beside the ball: the handle goes where the marker is.
         self.drag_to(0.08, 0.02, 0.12, 1.0)
-        time.sleep(1.0)
-        error = math.sqrt((self.state.x - 0.08) ** 2 + (self.state.y - 0.02) ** 2 + (self.state.z - 0.12) ** 2)
-        print("interactive: handle %.2f mm from the marker in free space" % (1e3 * error))
-        self.assertLess(error, 0.001)
-        self.assertLess(self.force, 0.05)
+        self.wait_for(lambda: self.handle_error(0.08, 0.02, 0.12) < 0.001 and self.force < 0.05, 10.0,
+                      lambda: "the handle to rest within 1 mm of the marker in free space (%.2f mm, %.3f N)"
+                      % (1e3 * self.handle_error(0.08, 0.02, 0.12), self.force))
+        print("interactive: handle %.2f mm from the marker in free space" % (1e3 * self.handle_error(0.08, 0.02, 0.12)))
         # Onto the top of the ball (r = 4 cm at z = 0.04): 5 mm into it.
         self.drag_to(0.0, 0.0, 0.12, 1.0)
         self.drag_to(0.0, 0.0, 0.075, 1.5)
-        time.sleep(1.0)
+        self.wait_for(lambda: self.force > 1.0 and self.areas == 1 and self.state.z < 0.083, 10.0,
+                      lambda: "the finger to press on the ball (force %.2f N, %d contact area(s), handle at z %.4f m)"
+                      % (self.force, self.areas, self.state.z))
         print("interactive: on the ball, force on the hand %.2f N, %d contact area(s), handle at z %.4f m"
               % (self.force, self.areas, self.state.z))
         self.assertGreater(self.force, 1.0)

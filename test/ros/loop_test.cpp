@@ -1,10 +1,13 @@
 // rostest: the whole haptic loop (fake device -> coupling -> physics -> force) runs, in any
 // topology: the servo loop, or driver -> haptic -> physics -> haptic -> driver through topics.
-// Counts device states and feedback for ~duration seconds, reads the measured device-to-force
-// time (the servo's latency_us_*, or the driver's round_trip_us_*) from /diagnostics, prints
-// them. Only a sanity floor on the rates (timing targets live in scripts/bench).
-// Parameters: ~interface ("finger"), ~duration (5 s), ~min_rate (900 Hz: within 10 % of the
-// 1 kHz loop), ~label (printed).
+// Waits for ~duration seconds' worth of the 1 kHz loop (duration x 1000 device states and as
+// many feedback messages) and for three windows of the measured device-to-force time (the
+// servo's latency_us_*, or the driver's round_trip_us_*) on /diagnostics, prints the rates and
+// times. Only a loose sanity floor on the rates: the messages must come within
+// duration x 1000 / min_rate seconds, which a loaded machine does not miss; the rate and latency
+// targets are measured in scripts/bench.
+// Parameters: ~interface ("finger"), ~duration (5 s), ~min_rate (250 Hz: a quarter of the
+// loop's rate), ~label (printed).
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <gtest/gtest.h>
@@ -12,7 +15,9 @@
 
 #include <god_finger/DeviceState.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 
@@ -56,7 +61,7 @@ TEST(HapticLoop, RunsAtOneKilohertz)
   ros::NodeHandle pnh("~");
   const std::string interface = pnh.param<std::string>("interface", "finger");
   const double duration = pnh.param("duration", 5.0);
-  const double min_rate = pnh.param("min_rate", 900.0);
+  const double min_rate = pnh.param("min_rate", 250.0);
   const std::string label = pnh.param<std::string>("label", "loop");
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   ros::Subscriber states = nh.subscribe<god_finger::DeviceState>(
@@ -69,14 +74,15 @@ TEST(HapticLoop, RunsAtOneKilohertz)
   ros::AsyncSpinner spinner(2);
   spinner.start();
 
-  // Wait until the loop is closed (the physics answers), then let it settle for a second.
+  // Wait until the loop is closed (the physics answers).
   const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(30.0);
   while (g_feedback == 0 && ros::WallTime::now() < give_up)
   {
     ros::WallDuration(0.01).sleep();
   }
   ASSERT_GT(g_feedback.load(), 0) << "no feedback on " << interface << "/feedback within 30 s";
-  ros::WallDuration(1.0).sleep();
+  // Then count from here (the /diagnostics windows before may hold the start-up) until the loop
+  // has run for `duration` at its rate.
   {
     std::lock_guard<std::mutex> lock(g_mutex);
     g_p50.clear();
@@ -84,8 +90,23 @@ TEST(HapticLoop, RunsAtOneKilohertz)
   }
   const long states0 = g_states;
   const long feedback0 = g_feedback;
+  const long wanted = std::lround(1000.0 * duration);
+  const double allowed = wanted / min_rate;
   const ros::WallTime start = ros::WallTime::now();
-  ros::WallDuration(duration).sleep();
+  const auto windows = []
+  {
+    std::lock_guard<std::mutex> lock(g_mutex);
+    return g_p50.size();
+  };
+  while (g_states - states0 < wanted || g_feedback - feedback0 < wanted || windows() < 3)
+  {
+    ASSERT_LT((ros::WallTime::now() - start).toSec(), allowed)
+        << "within " << allowed << " s: " << g_states - states0 << " device states and " << g_feedback - feedback0
+        << " feedback of " << wanted << " each, " << windows()
+        << " windows of the device-to-force time on /diagnostics of 3: below the sanity floor of " << min_rate
+        << " Hz, or stopped";
+    ros::WallDuration(0.01).sleep();
+  }
   const double elapsed = (ros::WallTime::now() - start).toSec();
   const double state_rate = (g_states - states0) / elapsed;
   const double feedback_rate = (g_feedback - feedback0) / elapsed;
@@ -110,8 +131,6 @@ TEST(HapticLoop, RunsAtOneKilohertz)
   RecordProperty("measured", label + ": device state " + std::to_string(state_rate) + " Hz, feedback " +
                                  std::to_string(feedback_rate) + " Hz, device to force p50 " + std::to_string(p50) +
                                  " us, p99 " + std::to_string(p99) + " us");
-  EXPECT_GE(state_rate, min_rate);
-  EXPECT_GE(feedback_rate, min_rate);
   EXPECT_GT(p50, 0.0) << "no device-to-force time on /diagnostics";
 }
 }  // namespace

@@ -10,6 +10,7 @@ import os
 import signal
 import subprocess
 import sys
+import threading
 import time
 import unittest
 
@@ -20,15 +21,58 @@ import rostest
 PORT = "11533"
 
 
-def run_session(arguments, log_path, seconds):
+class SimulatedClock:
+    """The latest whole second of /clock on the master at `env`'s ROS_MASTER_URI, read by
+    `rostopic echo` (restarted while that master is not up yet)."""
+
+    def __init__(self, env):
+        self.env = env
+        self.seconds = -1
+        self.process = None
+        self.thread = None
+        self.started = 0.0
+
+    def poll(self):
+        # At most one start a second: each is a Python process on a machine the session loads.
+        if (self.process is None or self.process.poll() is not None) and time.time() - self.started > 1.0:
+            if self.thread is not None:
+                self.thread.join()
+            self.started = time.time()
+            self.process = subprocess.Popen(["rostopic", "echo", "/clock/clock/secs"], env=self.env,
+                                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                                            start_new_session=True)
+            self.thread = threading.Thread(target=self.read, args=(self.process,), daemon=True)
+            self.thread.start()
+        return self.seconds
+
+    def read(self, process):
+        for line in process.stdout:
+            if line.strip().isdigit():
+                self.seconds = int(line)
+
+    def close(self):
+        if self.process is not None and self.process.poll() is None:
+            os.killpg(self.process.pid, signal.SIGINT)
+            self.process.wait(timeout=30)
+
+
+def run_session(arguments, log_path, until, seconds):
+    """Runs demo.launch with `arguments` until its simulated clock reaches `until` (s), within
+    `seconds` of wall clock; returns the last clock second seen."""
     env = dict(os.environ, ROS_MASTER_URI="http://localhost:" + PORT)
     log = open(log_path, "w")
     process = subprocess.Popen(["roslaunch", "-p", PORT, "god_finger", "demo.launch", "record:=true", "sim_time:=true"]
                                + arguments, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
-    time.sleep(seconds)
+    clock = SimulatedClock(env)
+    deadline = time.time() + seconds
+    while clock.poll() < until and time.time() < deadline:
+        time.sleep(0.1)  # polls the clock (and restarts its reader while the master comes up)
+    reached = clock.seconds
+    clock.close()
     os.killpg(process.pid, signal.SIGINT)
     process.wait(timeout=60)
     log.close()
+    return reached
 
 
 def ball_track(bag_path):
@@ -49,9 +93,17 @@ class Replay(unittest.TestCase):
         for path in (recorded, replayed):
             if os.path.exists(path):
                 os.remove(path)
-        run_session(["script:=slide", "bag:=" + recorded], recorded + ".log", 10.0)
+        # The slide script (config/scripts/slide.yaml) runs from 2 s to 5.3 s of simulated time
+        # (script_delay 2 s): each session runs until its clock reaches 8 s (the ball at rest,
+        # and some 500 poses at common stamps for the comparison below).
+        reached = run_session(["script:=slide", "bag:=" + recorded], recorded + ".log", 8, 45.0)
+        self.assertGreaterEqual(reached, 8, "the first session's clock reached %d s of 8 within 45 s (log %s.log)"
+                                % (reached, recorded))
         self.assertTrue(os.path.exists(recorded), "the first session was not recorded")
-        run_session(["device:=replay", "bag:=" + recorded, "record_bag:=" + replayed], replayed + ".log", 10.0)
+        reached = run_session(["device:=replay", "bag:=" + recorded, "record_bag:=" + replayed], replayed + ".log", 8,
+                              45.0)
+        self.assertGreaterEqual(reached, 8, "the replay's clock reached %d s of 8 within 45 s (log %s.log)"
+                                % (reached, replayed))
         self.assertTrue(os.path.exists(replayed), "the replay was not recorded")
         a, b = dict(ball_track(recorded)), dict(ball_track(replayed))
         common = sorted(set(a) & set(b))

@@ -11,6 +11,7 @@
 #include <geometry_msgs/WrenchStamped.h>
 #include <gtest/gtest.h>
 #include <ros/ros.h>
+#include <xmlrpcpp/XmlRpcValue.h>
 
 #include <god_finger/DeviceState.h>
 
@@ -68,6 +69,37 @@ long diagnostic(const std::string& name, const std::string& key)
   std::lock_guard<std::mutex> lock(g_mutex);
   const auto found = g_diagnostics.find(name + "/" + key);
   return found == g_diagnostics.end() ? -1 : std::stol(found->second);
+}
+
+// How many nodes the master lists as subscribers of `topic` (this one included), -1 when the
+// master does not answer.
+int subscribersOnMaster(const std::string& topic)
+{
+  XmlRpc::XmlRpcValue request;
+  XmlRpc::XmlRpcValue response;
+  XmlRpc::XmlRpcValue payload;
+  request[0] = ros::this_node::getName();
+  if (!ros::master::execute("getSystemState", request, response, payload, false))
+  {
+    return -1;
+  }
+  XmlRpc::XmlRpcValue& subscriptions = payload[1];
+  for (int i = 0; i < subscriptions.size(); ++i)
+  {
+    if (static_cast<std::string>(subscriptions[i][0]) == topic)
+    {
+      return subscriptions[i][1].size();
+    }
+  }
+  return 0;
+}
+
+// Every subscriber the master knows of `publisher`'s topic is connected to it (a message
+// published now reaches them all).
+bool connectedToEverySubscriber(const ros::Publisher& publisher)
+{
+  const int expected = subscribersOnMaster(publisher.getTopic());
+  return expected > 0 && publisher.getNumSubscribers() >= static_cast<std::uint32_t>(expected);
 }
 
 class Safety : public testing::Test
@@ -166,7 +198,26 @@ TEST_F(Safety, NonFiniteInputIsRejectedCountedAndNeverPassedOn)
   ros::Publisher poses = nh_.advertise<geometry_msgs::PoseStamped>("finger/pose", 10);
   ros::Publisher forces = nh_.advertise<geometry_msgs::Vector3Stamped>("finger/device/force", 10);
   ros::Publisher states = nh_.advertise<god_finger::DeviceState>("finger/device/state", 10);
-  ros::WallDuration(1.0).sleep();  // connections
+  // Every node that takes these topics (SetUp saw the loop running, so all have subscribed)
+  // is connected, so that none of the injected messages is published before it can arrive.
+  for (const ros::Publisher* publisher : {&poses, &forces, &states})
+  {
+    waitFor([publisher] { return connectedToEverySubscriber(*publisher); }, 10.0,
+            "every subscriber of " + publisher->getTopic() + " to connect");
+  }
+  // The counts so far (each node reports once a second): the injection must add exactly ten.
+  long poses_before = -1;
+  long forces_before = -1;
+  long states_before = -1;
+  waitFor(
+      [&]
+      {
+        poses_before = diagnostic("/physics: physics loop", "rejected_poses");
+        forces_before = diagnostic("/finger/device_driver: fake device", "rejected_commands");
+        states_before = diagnostic("/finger/haptic: haptic", "rejected_states");
+        return poses_before >= 0 && forces_before >= 0 && states_before >= 0;
+      },
+      10.0, "the three rejection counts on /diagnostics");
   const long downstream_before = g_non_finite_downstream;
   for (int i = 0; i < 10; ++i)
   {
@@ -183,12 +234,25 @@ TEST_F(Safety, NonFiniteInputIsRejectedCountedAndNeverPassedOn)
     state.header.stamp = kInjectedState;
     state.position.y = NAN;
     states.publish(state);
+    // Paces the injection (not a synchronisation): each receiving queue (10 messages) also
+    // takes the loop's own 1 kHz stream of the same topic, so the injected messages are spread
+    // out rather than sent in one burst that could crowd each other out of a queue.
     ros::WallDuration(0.01).sleep();
   }
-  ros::WallDuration(2.5).sleep();  // two diagnostics periods
-  const long rejected_poses = diagnostic("/physics: physics loop", "rejected_poses");
-  const long rejected_forces = diagnostic("/finger/device_driver: fake device", "rejected_commands");
-  const long rejected_states = diagnostic("/finger/haptic: haptic", "rejected_states");
+  // The counts reach the test on /diagnostics (once a second): wait until all three show the
+  // ten, then check that none counted more.
+  long rejected_poses = -1;
+  long rejected_forces = -1;
+  long rejected_states = -1;
+  const auto read_counts = [&]
+  {
+    rejected_poses = diagnostic("/physics: physics loop", "rejected_poses") - poses_before;
+    rejected_forces = diagnostic("/finger/device_driver: fake device", "rejected_commands") - forces_before;
+    rejected_states = diagnostic("/finger/haptic: haptic", "rejected_states") - states_before;
+    return rejected_poses >= 10 && rejected_forces >= 10 && rejected_states >= 10;
+  };
+  waitFor(read_counts, 10.0, "10 rejections of each kind on /diagnostics");
+  read_counts();
   char line[300];
   std::snprintf(line, sizeof(line),
                 "non-finite input: rejected poses %ld, forces %ld, device states %ld; seen downstream %ld",

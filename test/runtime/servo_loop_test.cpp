@@ -4,6 +4,7 @@
 // allocates nothing.
 #include "god_finger/runtime/servo_loop.h"
 #include "allocation_counter.h"
+#include "device_profile_file.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/physics/urdf_scene.h"
@@ -119,30 +120,31 @@ TEST(ServoLoop, SimulatedTimeGivesTheSameTrajectoryBitForBit)
 
 TEST(ServoLoop, TheHandFeelsTheReactionOfTheForceThatPullsTheProxy)
 {
-  DeviceProfile falcon;  // config/devices/falcon.yaml's coupling, not the world's default
-  falcon.coupling.stiffness = 800.0;
-  falcon.coupling.damping = 2.0;
-  falcon.coupling.max_force = 8.9;
-  falcon.guard.max_force = 8.9;
+  // config/devices/falcon.yaml's coupling and force limit, not the world's default.
+  const DeviceProfile falcon = test::shippedDeviceProfile("falcon");
+  const double k = falcon.coupling.stiffness;
+  const double max_force = falcon.guard.max_force;
+  ASSERT_NE(k, WorldParams().coupling.stiffness) << "the case would not show which coupling the loop uses";
   auto loop = makeLoop(pressingHand(), falcon);
-  EXPECT_EQ(loop->world().coupling(0).stiffness, 800.0);
-  EXPECT_EQ(loop->world().coupling(0).damping, 2.0);
-  EXPECT_EQ(loop->world().coupling(0).max_force, 8.9);
+  EXPECT_EQ(loop->world().coupling(0).stiffness, k);
+  EXPECT_EQ(loop->world().coupling(0).damping, falcon.coupling.damping);
+  EXPECT_EQ(loop->world().coupling(0).max_force, falcon.coupling.max_force);
   runTicks(*loop, 1200);
   ServoSample sample;
   int checked = 0;
   while (loop->samples().tryPop(&sample))
   {
     // Device frame = world here (identity mapping): the command is the user force, guarded.
-    const Eigen::Vector3d expected =
-        sample.user_force.norm() > 8.9 ? Eigen::Vector3d(sample.user_force.normalized() * 8.9) : sample.user_force;
+    const Eigen::Vector3d expected = sample.user_force.norm() > max_force
+                                         ? Eigen::Vector3d(sample.user_force.normalized() * max_force)
+                                         : sample.user_force;
     ASSERT_LT((sample.commanded_force - expected).norm(), 1e-12) << "tick " << sample.tick;
     ++checked;
   }
   EXPECT_EQ(checked, 1200);
-  // Resting on the ball, the spring the hand feels is 800 N/m: force = k (p_GO - p_I).
+  // Resting on the ball, the spring the hand feels is the profile's: force = k (p_GO - p_I).
   const InterfaceState& state = loop->world().interfaceState(0);
-  const Eigen::Vector3d spring = 800.0 * (state.proxy_position - state.interface_position);
+  const Eigen::Vector3d spring = k * (state.proxy_position - state.interface_position);
   EXPECT_NEAR(state.user_force.z(), spring.z(), 0.01 * std::abs(spring.z()));
   EXPECT_GT(state.user_force.z(), 1.0);
 }
@@ -278,36 +280,40 @@ TEST(ServoLoop, ATickAllocatesNothing)
   EXPECT_EQ(loop->world().interfaceState(0).contact_count, 1);
 }
 
-TEST(ServoLoop, RealTimeThreadKeepsItsRate)
+TEST(ServoLoop, RealTimeThreadRunsNeverAheadOfItsSchedule)
 {
-  // Sanity floor only (rates and latencies are measured in scripts/bench): the loop runs on
-  // the wall clock within 10 % of its rate.
+  // Rates, periods and latencies are measured in scripts/bench. Here only what a loaded machine
+  // cannot break: the loop runs on the wall clock (a loose floor: 500 ticks within 10 s, a
+  // twentieth of its rate), never ahead of its schedule (tick k starts no earlier than k
+  // periods after the loop started: at most elapsed / period + 1 ticks), and every tick leaves
+  // a sample or counts a dropped one.
   std::vector<ServoInterface> interfaces(1);
   interfaces[0].device = pressingHand();
   ServoLoop loop(std::make_unique<GodFingerWorld>(loadUrdfScene(kScene), WorldParams()), std::move(interfaces),
                  ServoLoopParams());
-  loop.start();
   const double start = steadySeconds();
+  loop.start();
   long samples = 0;
   ServoSample sample;
-  while (steadySeconds() - start < 1.0)
+  while (loop.counters().ticks.load() < 500 && steadySeconds() - start < 10.0)
   {
     while (loop.samples().tryPop(&sample))
     {
       ++samples;
     }
-    sleepFor(2e-3);
+    sleepFor(2e-3);  // polls the samples queue (a tick's sample is dropped when it is full)
   }
   loop.stop();
+  const double elapsed = steadySeconds() - start;
   while (loop.samples().tryPop(&sample))
   {
     ++samples;
   }
   const long ticks = loop.counters().ticks.load();
-  std::printf("[ measured ] real-time servo loop: %ld ticks in 1 s, %ld overruns, %s\n", ticks,
+  std::printf("[ measured ] real-time servo loop: %ld ticks in %.3f s, %ld overruns, %s\n", ticks, elapsed,
               loop.counters().overruns.load(), loop.counters().realtime ? "SCHED_FIFO" : "normal scheduling");
-  EXPECT_GT(ticks, 900);
-  EXPECT_LT(ticks, 1100);
+  EXPECT_GE(ticks, 500) << "the loop ran " << ticks << " ticks in " << elapsed << " s";
+  EXPECT_LE(ticks, elapsed / loop.period() + 1.001) << "the loop ran ahead of its schedule";  // + rounding
   EXPECT_EQ(samples + loop.counters().dropped_samples.load(), ticks);
 }
 }  // namespace
