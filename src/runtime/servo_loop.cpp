@@ -101,6 +101,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
     }
     guards_.emplace_back(interface.profile.guard);
   }
+  counters_.model = static_cast<int>(world_->contactModel());
   sem_init(&physics_wake_, 0, 0);
 }
 
