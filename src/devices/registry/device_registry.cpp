@@ -27,11 +27,62 @@ void waitForUser()
 }
 #endif
 
+// Test seam of the fake backend: a device whose readings are non-finite (position NaN) with
+// every button pressed during [from, until) of its script's time, as a faulty device's are, so
+// that a rostest can prove that a loop rejects such readings whole.
+class NonFiniteReadings : public HapticDevice
+{
+ public:
+  NonFiniteReadings(std::unique_ptr<FakeDevice> device, double from, double until)
+      : device_(std::move(device)), from_(from), until_(until)
+  {
+  }
+  std::string name() const override
+  {
+    return device_->name();
+  }
+  void start() override
+  {
+    device_->start();
+  }
+  DeviceReading update(double time, const Eigen::Vector3d& force) override
+  {
+    DeviceReading reading = device_->update(time, force);
+    const double script_time = time - device_->startTime();
+    if (script_time >= from_ && script_time < until_)
+    {
+      reading.position.x() = NAN;
+      reading.buttons = ~0u;
+    }
+    return reading;
+  }
+  void setScriptStart(double time) override
+  {
+    device_->setScriptStart(time);
+  }
+  bool setHandTarget(const Eigen::Vector3d& position) override
+  {
+    return device_->setHandTarget(position);
+  }
+
+ private:
+  std::unique_ptr<FakeDevice> device_;
+  double from_;
+  double until_;
+};
+
 std::unique_ptr<HapticDevice> makeFake(const DeviceContext& context)
 {
   // No script: the hand holds the handle at the workspace centre.
-  return std::make_unique<FakeDevice>(readFakeDeviceParams(context.params),
-                                      readScript(context.params, Eigen::Vector3d::Zero()));
+  auto device = std::make_unique<FakeDevice>(readFakeDeviceParams(context.params),
+                                             readScript(context.params, Eigen::Vector3d::Zero()));
+  // Test seam: non_finite_readings [from, until] (s of the script's time); unset: none.
+  const Eigen::VectorXd faulty = readVector(context.params, "non_finite_readings", Eigen::Vector2d(-1.0, -1.0));
+  if (faulty[1] > faulty[0])
+  {
+    return std::make_unique<NonFiniteReadings>(std::move(device), faulty[0], faulty[1]);
+  }
+  return device;
 }
 
 std::unique_ptr<HapticDevice> makeInteractive(const DeviceContext& context)
