@@ -15,7 +15,7 @@ from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import PointStamped, PoseStamped, WrenchStamped
 from god_finger.msg import DeviceState
 
-STATUS = "/servo: servo loop"
+STATUS = ": servo loop"  # after the node's name (the nodelet manager's)
 
 
 def finite(*vectors):
@@ -47,7 +47,7 @@ class SafetyServo(unittest.TestCase):
 
     def on_diagnostics(self, message):
         for status in message.status:
-            if status.name != STATUS:
+            if not status.name.endswith(STATUS):
                 continue
             values = {pair.key: pair.value for pair in status.values}
             self.model = values.get("contact_model")
