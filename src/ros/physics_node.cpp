@@ -74,10 +74,7 @@ struct PhysicsNode::Impl
   std::atomic<bool> running{true};
   long rejected_poses = 0;
   long overruns = 0;
-  boost::recursive_mutex reconfigure_mutex;
-  std::unique_ptr<dynamic_reconfigure::Server<god_finger::GodFingerConfig>> reconfigure;
-  god_finger::GodFingerConfig last_good_config;
-  bool have_good_config = false;
+  std::unique_ptr<LiveReconfigure> reconfigure;
   std::vector<double> step_us;
   WorldSnapshot snapshot;  // read by publishScene
 
@@ -143,41 +140,34 @@ struct PhysicsNode::Impl
     return true;
   }
 
-  // dynamic_reconfigure: the method's parameters and the model, applied together if valid;
-  // otherwise the previous ones stay (and the tool shows them again).
-  void onReconfigure(god_finger::GodFingerConfig& config, std::uint32_t)
+  // dynamic_reconfigure: the method's parameters, and the model when the reconfiguration
+  // changes it (the service may have changed it since), applied together if valid.
+  bool applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
   {
     WorldParams applied;
-    std::string error;
     std::lock_guard<std::mutex> lock(mutex);
-    if (!worldFromConfig(config, world->params(), &applied, &error))
+    if (!worldFromConfig(config, world->params(), &applied, error))
     {
-      ROS_WARN("physics: reconfiguration refused (%s); the previous parameters stay", error.c_str());
-      if (have_good_config)
-      {
-        config = last_good_config;
-      }
-      return;
+      return false;
     }
     world->setContactParams(applied.contact);
-    world->setContactModel(applied.model);
-    last_good_config = config;
-    have_good_config = true;
+    if (model_changed)
+    {
+      world->setContactModel(applied.model);
+    }
+    return true;
   }
 
+  // The haptic node's button comes through here too.
   bool onSetModel(god_finger::SetContactModel::Request& request, god_finger::SetContactModel::Response& response)
   {
-    ContactModel model;
-    if (!parseContactModel(request.model, &model))
-    {
-      response.success = false;
-      response.message = "unknown contact model '" + request.model + "' (" + contactModelNames() + ")";
-      return true;
-    }
-    std::lock_guard<std::mutex> lock(mutex);
-    world->setContactModel(model);
-    response.success = true;
-    response.message = std::string("contact model: ") + contactModelName(model);
+    reconfigure->serveSetModel(request, response,
+                               [this](ContactModel model, std::string*)
+                               {
+                                 std::lock_guard<std::mutex> lock(mutex);
+                                 world->setContactModel(model);
+                                 return true;
+                               });
     return true;
   }
 
@@ -357,16 +347,15 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-  impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);
-  impl.model_service = nh.advertiseService("set_contact_model", &Impl::onSetModel, &impl);
   // Starts from the parameters read above (the same private names), so it changes nothing
   // until someone reconfigures.
-  impl.reconfigure =
-      std::make_unique<dynamic_reconfigure::Server<god_finger::GodFingerConfig>>(impl.reconfigure_mutex, pnh);
-  const god_finger::GodFingerConfig initial = configOf(params);
-  impl.reconfigure->updateConfig(initial);
-  impl.reconfigure->setCallback([this](god_finger::GodFingerConfig& config, std::uint32_t level)
-                                { impl_->onReconfigure(config, level); });
+  impl.reconfigure = std::make_unique<LiveReconfigure>(
+      pnh, params,
+      [this](const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
+      { return impl_->applyConfig(config, model_changed, error); },
+      "physics");
+  impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);
+  impl.model_service = nh.advertiseService("set_contact_model", &Impl::onSetModel, &impl);
   ROS_INFO("physics: scene '%s' (%d bodies), %zu interface(s), %.0f Hz, model %s", scene_path.c_str(),
            impl.world->bodyCount(), names.size(), 1.0 / params.time_step, contactModelName(params.model));
   impl.thread = std::thread([this]() { impl_->loop(); });

@@ -3,6 +3,7 @@
 #include "god_finger/core/input_error.h"
 
 #include <dynamic_reconfigure/Config.h>
+#include <ros/console.h>
 
 namespace god_finger
 {
@@ -87,5 +88,67 @@ bool worldFromConfig(const god_finger::GodFingerConfig& config, const WorldParam
   }
   *error = validate(*params);
   return error->empty();
+}
+LiveReconfigure::LiveReconfigure(const ros::NodeHandle& pnh, const WorldParams& initial, Apply apply, std::string node)
+    : apply_(std::move(apply)), node_(std::move(node)), in_force_(configOf(initial))
+{
+  ros::NodeHandle handle(pnh);
+  server_ = std::make_unique<dynamic_reconfigure::Server<god_finger::GodFingerConfig>>(mutex_, handle);
+  server_->updateConfig(in_force_);
+  // Calls back once at once, with in_force_: nothing changes.
+  server_->setCallback([this](god_finger::GodFingerConfig& config, std::uint32_t) { onReconfigure(config); });
+}
+
+void LiveReconfigure::onReconfigure(god_finger::GodFingerConfig& config)
+{
+  boost::recursive_mutex::scoped_lock lock(mutex_);
+  std::string error;
+  if (!apply_(config, config.model != in_force_.model, &error))
+  {
+    ROS_WARN("%s: reconfiguration refused (%s); the previous parameters stay", node_.c_str(), error.c_str());
+    config = in_force_;
+    return;
+  }
+  in_force_ = config;
+}
+
+void LiveReconfigure::showModel(ContactModel model)
+{
+  boost::recursive_mutex::scoped_lock lock(mutex_);
+  const std::string name = contactModelName(model);
+  if (in_force_.model == name)
+  {
+    return;
+  }
+  in_force_.model = name;
+  server_->updateConfig(in_force_);
+}
+
+void LiveReconfigure::serveSetModel(const god_finger::SetContactModel::Request& request,
+                                    god_finger::SetContactModel::Response& response, const ApplyModel& apply)
+{
+  ContactModel model;
+  if (!parseContactModel(request.model, &model))
+  {
+    response.success = false;
+    response.message = "unknown contact model '" + request.model + "' (" + contactModelNames() + ")";
+    return;
+  }
+  boost::recursive_mutex::scoped_lock lock(mutex_);  // no reconfiguration in between
+  std::string error;
+  response.success = apply(model, &error);
+  if (!response.success)
+  {
+    response.message = error;
+    return;
+  }
+  showModel(model);
+  response.message = std::string("contact model: ") + contactModelName(model);
+}
+
+god_finger::GodFingerConfig LiveReconfigure::config()
+{
+  boost::recursive_mutex::scoped_lock lock(mutex_);
+  return in_force_;
 }
 }  // namespace god_finger

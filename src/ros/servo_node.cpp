@@ -70,9 +70,8 @@ struct ServoNode::Impl
   tf2_ros::TransformBroadcaster broadcaster;
   // world -> NAME_device of every interface (ros/device_frame.h): the interactive handle's frame.
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster;
-  boost::recursive_mutex reconfigure_mutex;
-  std::unique_ptr<dynamic_reconfigure::Server<god_finger::GodFingerConfig>> reconfigure;
-  god_finger::GodFingerConfig last_good_config;
+  std::unique_ptr<LiveReconfigure> reconfigure;
+  int shown_model = -1;      // the loop's model the publisher thread last saw (counters().model)
   ContactParams contact;     // the last contact parameters sent to the loop
   WorldParams world_params;  // what the loop was built with (the base of a reconfiguration)
   std::thread publisher_thread;
@@ -117,42 +116,56 @@ struct ServoNode::Impl
 
   bool onSetModel(god_finger::SetContactModel::Request& request, god_finger::SetContactModel::Response& response)
   {
-    ServoCommand command;
-    command.kind = ServoCommand::Kind::kSetContactModel;
-    if (!parseContactModel(request.model, &command.model))
-    {
-      response.success = false;
-      response.message = "unknown contact model '" + request.model + "' (" + contactModelNames() + ")";
-      return true;
-    }
-    std::string error;
-    response.success = loop->post(command, &error);
-    response.message = response.success ? std::string("contact model: ") + contactModelName(command.model) : error;
+    reconfigure->serveSetModel(request, response,
+                               [this](ContactModel model, std::string* error)
+                               {
+                                 ServoCommand command;
+                                 command.kind = ServoCommand::Kind::kSetContactModel;
+                                 command.model = model;
+                                 return loop->post(command, error);
+                               });
     return true;
   }
 
-  void onReconfigure(god_finger::GodFingerConfig& config, std::uint32_t)
+  // The model is sent only when the reconfiguration changes it: the loop's may have changed
+  // since (a button) and is not the configuration's to undo.
+  bool applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
   {
     ServoCommand params;
     params.kind = ServoCommand::Kind::kSetContactParams;
-    ServoCommand model;
-    model.kind = ServoCommand::Kind::kSetContactModel;
-    std::string error;
-    WorldParams base = world_params;  // the model is the cfg's: every cfg carries one
+    WorldParams base = world_params;
     base.contact = contact;
     WorldParams applied;
-    const bool valid = worldFromConfig(config, base, &applied, &error);
-    params.contact = applied.contact;
-    model.model = applied.model;
-    if (!valid || !loop->post(params, &error))
+    if (!worldFromConfig(config, base, &applied, error))
     {
-      ROS_WARN("servo: reconfiguration refused (%s); the previous parameters stay", error.c_str());
-      config = last_good_config;
-      return;
+      return false;
     }
-    post(model, "contact model");
+    params.contact = applied.contact;
+    if (!loop->post(params, error))
+    {
+      return false;
+    }
     contact = params.contact;
-    last_good_config = config;
+    if (model_changed)
+    {
+      ServoCommand model;
+      model.kind = ServoCommand::Kind::kSetContactModel;
+      model.model = applied.model;
+      post(model, "contact model");
+    }
+    return true;
+  }
+
+  // The loop's model changed (a command, or a device button, which only the loop sees): the
+  // reconfiguration server shows it.
+  void showLoopModel()
+  {
+    const int model = loop->counters().model.load();
+    if (model != shown_model)
+    {
+      shown_model = model;
+      reconfigure->showModel(static_cast<ContactModel>(model));
+    }
   }
 
   void publishSample(const ServoSample& sample)
@@ -298,6 +311,7 @@ struct ServoNode::Impl
         marker_publisher.publish(markerMessage(scene, snapshot, loop->world().params().coupling.proxy_radius, stamp));
         broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
       }
+      showLoopModel();
       const double now = steadySeconds();
       if (now >= next_diagnostics)
       {
@@ -374,14 +388,14 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+  impl.reconfigure = std::make_unique<LiveReconfigure>(
+      pnh, world_params,
+      [this](const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
+      { return impl_->applyConfig(config, model_changed, error); },
+      "servo");
+  impl.shown_model = static_cast<int>(world_params.model);
   impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);
   impl.model_service = nh.advertiseService("set_contact_model", &Impl::onSetModel, &impl);
-  impl.reconfigure =
-      std::make_unique<dynamic_reconfigure::Server<god_finger::GodFingerConfig>>(impl.reconfigure_mutex, pnh);
-  impl.last_good_config = configOf(world_params);
-  impl.reconfigure->updateConfig(impl.last_good_config);
-  impl.reconfigure->setCallback([this](god_finger::GodFingerConfig& config, std::uint32_t level)
-                                { impl_->onReconfigure(config, level); });
   ROS_INFO("servo: scene '%s' (%d bodies), %zu interface(s), %.0f Hz on %s, model %s", scene_path.c_str(),
            impl.loop->world().bodyCount(), impl.names.size(), loop_params.rate,
            impl.sim_time ? "simulated time" : "the wall clock", contactModelName(world_params.model));

@@ -101,6 +101,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
     }
     guards_.emplace_back(interface.profile.guard);
   }
+  counters_.model = static_cast<int>(world_->contactModel());
   sem_init(&physics_wake_, 0, 0);
 }
 
@@ -129,6 +130,10 @@ void ServoLoop::prepare()
     if (!start.allFinite())
     {
       throw DeviceError("interface '" + interface.name + "': the device's first position is not finite");
+    }
+    if (!readings_[i].velocity.allFinite())
+    {
+      readings_[i].velocity.setZero();  // the samples carry finite readings only
     }
     world_->addInterface(start, interface.profile.coupling);
     couplings_.push_back(world_->coupling(static_cast<int>(i)));
@@ -244,18 +249,22 @@ void ServoLoop::readDevices(double time)
   {
     ServoInterface& interface = interfaces_[i];
     applied_[i] = guards_[i].output(time);
-    readings_[i] = interface.device->update(time, applied_[i]);
+    const DeviceReading reading = interface.device->update(time, applied_[i]);
     read_at_[i] = steadySeconds();
-    const std::uint32_t pressed = readings_[i].buttons & ~buttons_[i];
-    buttons_[i] = readings_[i].buttons;
-    cycle_model = cycle_model || (pressed & 1u);
-    reset = reset || (pressed & 2u);
-    const Eigen::Vector3d target = interface.mapping.toWorld(readings_[i].position);
+    const Eigen::Vector3d target = interface.mapping.toWorld(reading.position);
     Render& render = render_[i];
     render.previous_target = render.target;
-    if (target.allFinite())
+    // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
+    // non-finite device state): its buttons are not pressed, the world gets the last good
+    // target, and the samples (device/state) carry the last good reading.
+    if (target.allFinite() && reading.velocity.allFinite())
     {
+      readings_[i] = reading;
       render.target = target;
+      const std::uint32_t pressed = reading.buttons & ~buttons_[i];
+      buttons_[i] = reading.buttons;
+      cycle_model = cycle_model || (pressed & 1u);
+      reset = reset || (pressed & 2u);
     }
     else
     {
@@ -263,7 +272,7 @@ void ServoLoop::readDevices(double time)
     }
     render.previous_velocity = render.velocity;
     render.velocity = (render.target - render.previous_target) / dt;
-    frame_.targets[i] = target;  // the world rejects (and counts) non-finite ones
+    frame_.targets[i] = render.target;  // always finite
     frame_.velocities[i] = render.velocity;
   }
   cycle_presses_ += cycle_model ? 1 : 0;

@@ -2,7 +2,10 @@
 """rostest: dynamic_reconfigure of the simulation (~node: the servo node by default, the
 physics node in the topic topologies) while it runs. The finger presses on the
 ball; a smaller r_max shrinks the published contact area at once; the model switches; a bad
-walk variant is refused and the previous one stays."""
+walk variant is refused and the previous one stays. Then the user's sequence of issue 18: the
+set_contact_model service switches the model, and a later `dynparam set` of r_max keeps it (the
+server shows the model in force, and one entry's change resets no other)."""
+import subprocess
 import sys
 import time
 import unittest
@@ -19,6 +22,7 @@ class Reconfigure(unittest.TestCase):
         rospy.init_node("reconfigure_test")
         self.radius = None
         self.model = None
+        self.diagnostics = 0  # messages that carried a contact model
         rospy.Subscriber("/contact_areas", ContactAreaArray, self.on_areas, queue_size=10)
         rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=10)
 
@@ -31,6 +35,7 @@ class Reconfigure(unittest.TestCase):
             for pair in status.values:
                 if pair.key == "contact_model":
                     self.model = pair.value
+                    self.diagnostics += 1
 
     def wait_for(self, condition, seconds, what):
         deadline = time.time() + seconds
@@ -38,8 +43,21 @@ class Reconfigure(unittest.TestCase):
             time.sleep(0.05)
         self.assertTrue(condition(), "waited %.0f s for %s" % (seconds, what))
 
+    def run_command(self, command):
+        """Runs `command` (a list) as a user types it; asserts it succeeds; returns its output."""
+        done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60,
+                              universal_newlines=True)
+        self.assertEqual(done.returncode, 0, "%s failed:\n%s" % (" ".join(command), done.stdout))
+        return done.stdout
+
+    def wait_for_diagnostics(self, count, what):
+        """Waits for `count` more diagnostics messages (1 Hz): they show the loop after what was sent."""
+        seen = self.diagnostics
+        self.wait_for(lambda: self.diagnostics >= seen + count, 10.0, what)
+
     def test_parameters_change_while_running(self):
-        client = dynamic_reconfigure.client.Client(rospy.get_param("~node", "/servo"), timeout=30)
+        node = rospy.get_param("~node", "/servo")
+        client = dynamic_reconfigure.client.Client(node, timeout=30)
         self.wait_for(lambda: self.radius is not None and self.radius > 0.009, 30.0, "a pressing contact area")
         before = self.radius
         config = client.update_configuration({"r_max": 0.004})
@@ -51,6 +69,27 @@ class Reconfigure(unittest.TestCase):
         refused = client.update_configuration({"walk": "sideways"})
         self.assertEqual(refused["walk"], "unfold")
         self.assertAlmostEqual(refused["r_max"], 0.004)
+        self.assertEqual(refused["model"], "god_object")
+
+        # Issue 18: the service switches the model, and a later change of r_max keeps it.
+        client.update_configuration({"model": "god_finger"})
+        self.wait_for(lambda: self.model == "god_finger", 5.0, "god_finger in /diagnostics")
+        answer = self.run_command(["rosservice", "call", "/set_contact_model", "god_object"])
+        self.assertIn("success: True", answer)
+        self.wait_for(lambda: self.model == "god_object", 5.0, "the service's god_object in /diagnostics")
+        self.wait_for(lambda: client.get_configuration(timeout=5)["model"] == "god_object", 5.0,
+                      "the reconfiguration server to show the service's god_object")
+        self.run_command(["rosrun", "dynamic_reconfigure", "dynparam", "set", node, "r_max", "0.006"])
+        self.wait_for(lambda: abs(client.get_configuration(timeout=5)["r_max"] - 0.006) < 1e-9, 5.0,
+                      "the reconfiguration server to show r_max 6 mm")
+        self.wait_for_diagnostics(2, "the diagnostics after r_max 6 mm")
+        self.assertEqual(self.model, "god_object", "a change of r_max switched the model back")
+        config = client.get_configuration(timeout=5)
+        self.assertEqual(config["model"], "god_object")
+        self.assertAlmostEqual(config["r_max"], 0.006)
+        self.assertEqual(config["walk"], "unfold")
+        print("reconfigure: service -> god_object, dynparam r_max 6 mm -> model %s, config model %s"
+              % (self.model, config["model"]))
 
 
 if __name__ == "__main__":

@@ -208,9 +208,75 @@ TEST(ServoLoop, NonFiniteReadingsAreRejectedAndTheLastTargetStays)
   auto loop = makeLoop(std::move(device));
   runTicks(*loop, 100);
   EXPECT_EQ(loop->counters().rejected_readings.load(), 50);
-  EXPECT_EQ(loop->world().rejectedTargets(), 50);
+  EXPECT_EQ(loop->world().rejectedTargets(), 0);  // counted once, by the loop: the world gets the last good target
   EXPECT_TRUE(loop->world().interfaceState(0).interface_position.isApprox(Eigen::Vector3d(0, 0, 0.1)));
   EXPECT_TRUE(loop->world().interfaceState(0).user_force.allFinite());
+}
+
+// The servo topology's device/state is published from the samples: a non-finite reading
+// is never passed on (the sample carries the last good one), and its buttons press nothing.
+TEST(ServoLoop, NonFiniteReadingsAreNeverPassedOnAndTheirButtonsPressNothing)
+{
+  auto device = std::make_unique<ScriptedDevice>();
+  // Good readings before tick 20 and after tick 60; between, every reading is non-finite (in
+  // its position or, from tick 40, its velocity) with button 0 (tick 20-29) then button 1
+  // (tick 30-39) pressed.
+  device->position = [](double t)
+  { return (t >= 0.0195 && t < 0.0395) ? Eigen::Vector3d(0, NAN, 0.1) : Eigen::Vector3d(0, 0, 0.1 - 0.1 * t); };
+  device->buttons = [](double t) { return (t >= 0.0195 && t < 0.0295) ? 1u : (t >= 0.0295 && t < 0.0395) ? 2u : 0u; };
+  struct InfiniteVelocity : public HapticDevice
+  {
+    std::unique_ptr<ScriptedDevice> inner;
+    std::string name() const override
+    {
+      return "infinite velocity";
+    }
+    void start() override {}
+    DeviceReading update(double time, const Eigen::Vector3d& force) override
+    {
+      DeviceReading reading = inner->update(time, force);
+      if (time >= 0.0395 && time < 0.0595)
+      {
+        reading.velocity = Eigen::Vector3d(INFINITY, 0, 0);
+        reading.buttons = 3u;
+      }
+      return reading;
+    }
+  };
+  auto wrapped = std::make_unique<InfiniteVelocity>();
+  wrapped->inner = std::move(device);
+  auto loop = makeLoop(std::move(wrapped), DeviceProfile(), ContactModel::kGodObject);
+  ServoSample sample;
+  Eigen::Vector3d last_good = Eigen::Vector3d::Zero();
+  int passed_on = 0;
+  for (int k = 0; k < 100; ++k)
+  {
+    loop->tick(k * loop->period());
+    while (loop->samples().tryPop(&sample))
+    {
+      const bool finite = sample.reading.position.allFinite() && sample.reading.velocity.allFinite() &&
+                          sample.interface_position.allFinite();
+      passed_on += finite ? 0 : 1;
+      if (sample.tick >= 20 && sample.tick < 60)
+      {
+        EXPECT_EQ(sample.reading.position, last_good) << "tick " << sample.tick;
+        EXPECT_EQ(sample.reading.buttons, 0u) << "tick " << sample.tick;
+      }
+      else
+      {
+        last_good = sample.reading.position;
+      }
+    }
+    WorldSnapshot snapshot;
+    while (loop->snapshots().tryPop(&snapshot))
+    {
+    }
+  }
+  EXPECT_EQ(passed_on, 0);
+  EXPECT_EQ(loop->counters().rejected_readings.load(), 40);
+  EXPECT_EQ(loop->world().rejectedTargets(), 0);
+  EXPECT_EQ(loop->world().contactModel(), ContactModel::kGodObject);  // button 0 of a bad reading: no cycle
+  EXPECT_EQ(loop->world().steps(), 100);                              // button 1 of a bad reading: no reset
 }
 
 TEST(ServoLoop, AFailingDeviceStopsTheLoopAndSaysWhy)

@@ -6,9 +6,12 @@
 // The haptic side, every period:
 //   1. commands each device a force (below), through its guard (saturation, NaN rejection,
 //      watchdog), and applies it at this period's update, which reads the device;
-//   2. maps each reading into the world (the interface target; non-finite ones are rejected)
-//      and hands the targets and the buttons' presses (0: next contact model, 1: reset) to the
-//      physics; applies the hand-target commands;
+//   2. maps each reading into the world (the interface target) and hands the targets and the
+//      buttons' presses (0: next contact model, 1: reset) to the physics; applies the
+//      hand-target commands. A reading whose position, mapped position or velocity is not
+//      finite is rejected whole and counted once (rejected_readings), as the topic topologies'
+//      haptic node does: its buttons press nothing, the physics gets the last good target
+//      (the world never sees a non-finite one), and its sample carries the last good reading;
 //   3. leaves a sample per interface in a lock-free queue for the publishers.
 // The physics side, one step per targets it takes (the latest; older ones are skipped when it
 // is late, the skipped motion entering the coupling's damping as the device's velocity):
@@ -129,7 +132,7 @@ struct ServoSample
   long tick = 0;
   double time = 0.0;  // s, the loop clock's (simulated time, or seconds since the loop began)
   int interface = 0;
-  DeviceReading reading;                                         // device frame
+  DeviceReading reading;                                         // device frame; the last finite one
   Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();       // N, device frame, applied at this tick
   Eigen::Vector3d commanded_force = Eigen::Vector3d::Zero();     // N, device frame, for the next tick
   Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();  // m, world (the device mapped)
@@ -171,7 +174,7 @@ struct ServoCounters
   std::atomic<long> overruns{0};
   std::atomic<long> dropped_samples{0};  // real time: the publishers were behind
   std::atomic<long> dropped_snapshots{0};
-  std::atomic<long> rejected_readings{0};  // non-finite device positions
+  std::atomic<long> rejected_readings{0};  // non-finite device readings (position or velocity)
   std::atomic<long> rejected_forces{0};    // non-finite forces refused by a guard
   std::atomic<long> commands{0};
   std::atomic<long> stale_ticks{0};      // interface-ticks whose force came from the anchor
@@ -304,7 +307,7 @@ class ServoLoop
   std::vector<ForceGuard> guards_;
   std::vector<CouplingProfile> couplings_;  // the world's, copied for the haptic side
   std::vector<std::uint32_t> buttons_;
-  std::vector<DeviceReading> readings_;
+  std::vector<DeviceReading> readings_;  // the last finite reading of each device
   std::vector<Eigen::Vector3d> applied_;
   std::vector<double> read_at_;  // wall-clock seconds of each reading
   std::vector<Render> render_;

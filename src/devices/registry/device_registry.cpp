@@ -27,11 +27,74 @@ void waitForUser()
 }
 #endif
 
+// Test seams of the fake backend, in its script's time (s), for rostests: readings non-finite
+// (position NaN) with every button pressed during [from, until), as a faulty device's are
+// (a loop must reject them whole); buttons `mask` pressed during [press_from, press_until).
+class ScriptedFaults : public HapticDevice
+{
+ public:
+  ScriptedFaults(std::unique_ptr<FakeDevice> device, double from, double until, const Eigen::Vector3d& press)
+      : device_(std::move(device)), from_(from), until_(until), press_(press)
+  {
+  }
+  std::string name() const override
+  {
+    return device_->name();
+  }
+  void start() override
+  {
+    device_->start();
+  }
+  DeviceReading update(double time, const Eigen::Vector3d& force) override
+  {
+    DeviceReading reading = device_->update(time, force);
+    const double script_time = time - device_->startTime();
+    if (script_time >= press_[0] && script_time < press_[1])
+    {
+      reading.buttons = static_cast<std::uint32_t>(press_[2]);
+    }
+    if (script_time >= from_ && script_time < until_)
+    {
+      reading.position.x() = NAN;
+      reading.buttons = ~0u;
+    }
+    return reading;
+  }
+  void setScriptStart(double time) override
+  {
+    device_->setScriptStart(time);
+  }
+  bool setHandTarget(const Eigen::Vector3d& position) override
+  {
+    return device_->setHandTarget(position);
+  }
+
+ private:
+  std::unique_ptr<FakeDevice> device_;
+  double from_;
+  double until_;
+  Eigen::Vector3d press_;  // from, until, buttons
+};
+
 std::unique_ptr<HapticDevice> makeFake(const DeviceContext& context)
 {
   // No script: the hand holds the handle at the workspace centre.
-  return std::make_unique<FakeDevice>(readFakeDeviceParams(context.params),
-                                      readScript(context.params, Eigen::Vector3d::Zero()));
+  auto device = std::make_unique<FakeDevice>(readFakeDeviceParams(context.params),
+                                             readScript(context.params, Eigen::Vector3d::Zero()));
+  // Test seams: non_finite_readings [from, until], pressed_buttons [from, until, buttons] (s of
+  // the script's time; buttons: a bit mask); unset: none.
+  const Eigen::VectorXd faulty = readVector(context.params, "non_finite_readings", Eigen::Vector2d(-1.0, -1.0));
+  const Eigen::VectorXd press = readVector(context.params, "pressed_buttons", Eigen::Vector3d(-1.0, -1.0, 0.0));
+  if (faulty[1] > faulty[0] || press[1] > press[0])
+  {
+    if (!(press[2] >= 0.0 && press[2] <= 65535.0))
+    {
+      throw InputError("parameter '" + context.params.fullName("pressed_buttons") +
+                       "': its buttons (third number) must be a bit mask in [0, 65535]");
+    }
+    return std::make_unique<ScriptedFaults>(std::move(device), faulty[0], faulty[1], press);
+  }
+  return device;
 }
 
 std::unique_ptr<HapticDevice> makeInteractive(const DeviceContext& context)
