@@ -328,6 +328,26 @@ BodyState mujocoSample(const mjModel* model, const mjData* data, int body, Eigen
   return sample;
 }
 
+// The coupling on a 3-DOF slider proxy (its x dof at `dof`, y and z following; its qpos relative
+// to `start`), explicit as GodFingerWorld::step(): the proxy's state at the start of the step, the
+// target velocity from the previous target; plus the proxy's gravity compensation.
+void pullSlider(const WorldParams& params, const Eigen::Vector3d& target, const Eigen::Vector3d& start, int dof,
+                int qpos, const Eigen::Vector3d& gravity_compensation, Eigen::Vector3d* previous_target, mjData* data)
+{
+  const double dt = params.time_step;
+  const mjtNum* q = data->qpos + qpos;
+  const Eigen::Vector3d position = start + Eigen::Vector3d(q[0], q[1], q[2]);
+  const Eigen::Vector3d velocity(data->qvel[dof], data->qvel[dof + 1], data->qvel[dof + 2]);
+  const Eigen::Vector3d force =
+      couplingForce(params.coupling, target, (target - *previous_target) / dt, position, velocity).on_proxy +
+      gravity_compensation;
+  for (int k = 0; k < 3; ++k)
+  {
+    data->qfrc_applied[dof + k] = force[k];
+  }
+  *previous_target = target;
+}
+
 // One scenario in MuJoCo with the finger contacts' condim = range(1).
 void BM_MujocoScenarioStep(benchmark::State& state)
 {
@@ -380,19 +400,8 @@ void BM_MujocoScenarioStep(benchmark::State& state)
     {
       for (int f = 0; f < fingers; ++f)
       {
-        const Eigen::Vector3d target = setup.fingers[f].at((i + 1) * dt);
-        const int dof = proxy_dof[f];
-        const mjtNum* q = data->qpos + proxy_qpos[f];
-        const Eigen::Vector3d position = proxy_start[f] + Eigen::Vector3d(q[0], q[1], q[2]);
-        const Eigen::Vector3d velocity(data->qvel[dof], data->qvel[dof + 1], data->qvel[dof + 2]);
-        const Eigen::Vector3d force =
-            couplingForce(params.coupling, target, (target - previous_target[f]) / dt, position, velocity).on_proxy +
-            gravity_compensation;
-        for (int k = 0; k < 3; ++k)
-        {
-          data->qfrc_applied[dof + k] = force[k];
-        }
-        previous_target[f] = target;
+        pullSlider(params, setup.fingers[f].at((i + 1) * dt), proxy_start[f], proxy_dof[f], proxy_qpos[f],
+                   gravity_compensation, &previous_target[f], data.get());
       }
       mj_step(model.get(), data.get());
       samples.push_back(mujocoSample(model.get(), data.get(), object, com_velocity, object_mass, &com_velocity));
@@ -555,19 +564,8 @@ void BM_MujocoScaleStep(benchmark::State& state)
       const scale::Clock::time_point begin = scale::Clock::now();
       for (int f = 0; f < finger_count; ++f)
       {
-        const Eigen::Vector3d target = fingers[f].at((i + 1) * dt);
-        const int dof = proxy_dof[f];
-        const mjtNum* q = data->qpos + proxy_qpos[f];
-        const Eigen::Vector3d position = fingers[f].at(0.0) + Eigen::Vector3d(q[0], q[1], q[2]);
-        const Eigen::Vector3d velocity(data->qvel[dof], data->qvel[dof + 1], data->qvel[dof + 2]);
-        const Eigen::Vector3d force =
-            couplingForce(params.coupling, target, (target - previous_target[f]) / dt, position, velocity).on_proxy +
-            gravity_compensation;
-        for (int k = 0; k < 3; ++k)
-        {
-          data->qfrc_applied[dof + k] = force[k];
-        }
-        previous_target[f] = target;
+        pullSlider(params, fingers[f].at((i + 1) * dt), fingers[f].at(0.0), proxy_dof[f], proxy_qpos[f],
+                   gravity_compensation, &previous_target[f], data.get());
       }
       mj_step(model.get(), data.get());
       times.us.push_back(scale::microseconds(begin, scale::Clock::now()));
