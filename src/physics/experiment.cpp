@@ -2,6 +2,7 @@
 #include "god_finger/physics/scenario_metrics.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/parameter_json.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
@@ -489,20 +490,20 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
 
 std::string toJson(const ExperimentResult& result)
 {
-  std::ostringstream out;
-  out << "{\"scenario\": \"" << result.scenario << "\", \"model\": \"" << result.model
-      << "\", \"duration_s\": " << jsonNumber(result.duration_s) << ", \"steps\": " << result.steps
-      << ", \"step_us_median\": " << jsonNumber(result.step_us_median)
-      << ", \"step_us_p99\": " << jsonNumber(result.step_us_p99)
-      << ", \"max_penetration_m\": " << jsonNumber(result.max_penetration_m) << ", \"nan\": " << result.nan
-      << ", \"metrics\": {";
-  bool first = true;
+  Json json;
+  json["scenario"] = result.scenario;
+  json["model"] = result.model;
+  json["duration_s"] = jsonMeasure(result.duration_s);
+  json["steps"] = result.steps;
+  json["step_us_median"] = jsonMeasure(result.step_us_median);
+  json["step_us_p99"] = jsonMeasure(result.step_us_p99);
+  json["max_penetration_m"] = jsonMeasure(result.max_penetration_m);
+  json["nan"] = result.nan;
+  json["metrics"] = Json::object();
   for (const auto& entry : result.metrics)
   {
-    out << (first ? "" : ", ") << "\"" << entry.first << "\": " << jsonNumber(entry.second);
-    first = false;
+    json["metrics"][entry.first] = jsonMeasure(entry.second);
   }
-  out << "}}";
-  return out.str();
+  return json.dump();
 }
 }  // namespace god_finger

@@ -3,6 +3,7 @@
 #include "god_finger/core/contact_area.h"
 #include "god_finger/core/contact_sampling.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/parameter_json.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/mesh_io/mesh_loader.h"
@@ -208,30 +209,33 @@ int runContactTool(const ContactToolOptions& options, std::ostream& out, std::os
     }
   }
 
-  std::ostringstream json;
-  json << "{\"mesh\": {\"file\": \"" << options.mesh << "\", \"vertices\": " << mesh.vertexCount()
-       << ", \"triangles\": " << mesh.triangleCount() << ", \"degenerate\": " << health.degenerate_triangles
-       << ", \"boundary_edges\": " << health.boundary_edges << ", \"non_manifold_edges\": " << health.non_manifold_edges
-       << ", \"welded_vertices\": " << health.welded_vertices
-       << ", \"duplicate_triangles\": " << health.duplicate_triangles
-       << ", \"flipped_triangles\": " << health.flipped_triangles
-       << ", \"inconsistent_winding_edges\": " << health.inconsistent_winding_edges
-       << ", \"components\": " << health.components << "}, ";
-  json << "\"params\": " << jsonObject(contactParameterTable(), params) << ", ";
-  json << "\"samples\": " << options.samples << ", \"seed\": " << options.seed << ", \"failures\": " << failures
-       << ", \"nan\": " << nan_count
-       << ", \"sgo_per_contact_mean\": " << jsonNumber(static_cast<double>(active_total) / options.samples)
-       << ", \"radius_mean_m\": " << jsonNumber(radius_total / options.samples)
-       << ", \"walk_ns_median\": " << jsonNumber(percentile(times, 0.5))
-       << ", \"walk_ns_p99\": " << jsonNumber(percentile(times, 0.99)) << ", \"stops\": {";
-  bool first = true;
+  Json json;
+  json["mesh"] = {{"file", options.mesh},
+                  {"vertices", mesh.vertexCount()},
+                  {"triangles", mesh.triangleCount()},
+                  {"degenerate", health.degenerate_triangles},
+                  {"boundary_edges", health.boundary_edges},
+                  {"non_manifold_edges", health.non_manifold_edges},
+                  {"welded_vertices", health.welded_vertices},
+                  {"duplicate_triangles", health.duplicate_triangles},
+                  {"flipped_triangles", health.flipped_triangles},
+                  {"inconsistent_winding_edges", health.inconsistent_winding_edges},
+                  {"components", health.components}};
+  json["params"] = jsonObject(contactParameterTable(), params);
+  json["samples"] = options.samples;
+  json["seed"] = options.seed;
+  json["failures"] = failures;
+  json["nan"] = nan_count;
+  json["sgo_per_contact_mean"] = jsonMeasure(static_cast<double>(active_total) / options.samples);
+  json["radius_mean_m"] = jsonMeasure(radius_total / options.samples);
+  json["walk_ns_median"] = jsonMeasure(percentile(times, 0.5));
+  json["walk_ns_p99"] = jsonMeasure(percentile(times, 0.99));
+  json["stops"] = Json::object();
   for (const auto& entry : stops)
   {
-    json << (first ? "" : ", ") << "\"" << entry.first << "\": " << entry.second;
-    first = false;
+    json["stops"][entry.first] = entry.second;
   }
-  json << "}}\n";
-  out << json.str();
+  out << json.dump() << '\n';
   return 0;
 }
 }  // namespace god_finger

@@ -1,8 +1,10 @@
 #include "tool_run.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -38,11 +40,41 @@ ToolRun runTool(const std::string& tool, const std::string& arguments)
   return run;
 }
 
+namespace
+{
+// The first value named `key`, depth first in document order; nullptr if none.
+const nlohmann::ordered_json* findKey(const nlohmann::ordered_json& json, const std::string& key)
+{
+  if (!json.is_object() && !json.is_array())
+  {
+    return nullptr;
+  }
+  if (json.is_object() && json.contains(key))
+  {
+    return &json.at(key);
+  }
+  for (const auto& child : json)
+  {
+    if (const nlohmann::ordered_json* found = findKey(child, key))
+    {
+      return found;
+    }
+  }
+  return nullptr;
+}
+}  // namespace
+
 double jsonValue(const std::string& json, const std::string& key)
 {
-  const std::size_t at = json.find("\"" + key + "\": ");
-  EXPECT_NE(at, std::string::npos) << key;
-  return at == std::string::npos ? -1.0 : std::atof(json.c_str() + at + key.size() + 4);
+  const nlohmann::ordered_json parsed = nlohmann::ordered_json::parse(json, nullptr, /*allow_exceptions=*/false);
+  EXPECT_FALSE(parsed.is_discarded()) << "not JSON: " << json;
+  const nlohmann::ordered_json* value = findKey(parsed, key);
+  EXPECT_NE(value, nullptr) << key;
+  if (value == nullptr || !(value->is_number() || value->is_null()))
+  {
+    return -1.0;
+  }
+  return value->is_null() ? NAN : value->get<double>();
 }
 }  // namespace test
 }  // namespace god_finger

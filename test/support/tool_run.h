@@ -17,8 +17,8 @@ struct ToolRun
 std::string readFile(const std::string& path);
 // Runs `tool arguments` through the shell.
 ToolRun runTool(const std::string& tool, const std::string& arguments);
-// The number after "key": in a flat JSON text (first occurrence); -1 (and a test failure) if
-// absent.
+// The number named `key` in a JSON text (parsed with nlohmann-json; the first such key, depth
+// first; NaN for null); -1 (and a test failure) if the text is no JSON or has no such number.
 double jsonValue(const std::string& json, const std::string& key);
 }  // namespace test
 }  // namespace god_finger

@@ -6,6 +6,7 @@
 #include "tool_run.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <sys/wait.h>
 #include <cstdio>
@@ -77,6 +78,37 @@ TEST(ContactTool, ShippedMeshesHaveNoFailureAndDumpsCheckOut)
       EXPECT_NEAR(rows, 300 * jsonValue(run.out, "sgo_per_contact_mean"), 0.5) << name;
     }
   }
+}
+
+TEST(ContactTool, AMeshPathWithQuotesAndBackslashesGivesValidJson)
+{
+  // The path goes into the JSON as a string: escaped by the library, it reads back unchanged.
+  const std::string path = ::testing::TempDir() + "god_finger \"quoted\" back\\slash.stl";
+  {
+    std::ofstream copy(path, std::ios::binary);
+    copy << readFile(mesh("box.stl"));
+  }
+  const ToolRun run = runTool("--mesh '" + path + "' --samples 20 --seed 1");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::ordered_json json = nlohmann::ordered_json::parse(run.out, nullptr, /*allow_exceptions=*/false);
+  ASSERT_FALSE(json.is_discarded()) << run.out;
+  EXPECT_EQ(json.at("mesh").at("file").get<std::string>(), path);
+  EXPECT_EQ(json.at("samples").get<int>(), 20);
+  EXPECT_EQ(json.at("failures").get<int>(), 0);
+  // The same keys, in the same order, as the tool always wrote.
+  std::vector<std::string> keys;
+  for (const auto& entry : json.items())
+  {
+    keys.push_back(entry.key());
+  }
+  EXPECT_EQ(keys,
+            (std::vector<std::string>{"mesh", "params", "samples", "seed", "failures", "nan", "sgo_per_contact_mean",
+                                      "radius_mean_m", "walk_ns_median", "walk_ns_p99", "stops"}));
+  EXPECT_EQ(json.at("params").at("r_max").get<double>(), 0.01);
+  EXPECT_EQ(json.at("params").at("walk").get<std::string>(), "unfold");
+  // Round trip: what the library reads is what it writes.
+  EXPECT_EQ(nlohmann::ordered_json::parse(json.dump()), json);
+  std::remove(path.c_str());
 }
 
 TEST(ContactTool, SeedsAreReproducible)

@@ -6,6 +6,7 @@
 #include "god_finger/physics/experiment.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <regex>
@@ -27,8 +28,9 @@ TEST(ExperimentTool, PrintsOneJsonObjectWithTheDocumentedKeys)
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(run.out.front(), '{');
   EXPECT_EQ(run.out.find('\n'), run.out.size() - 1);
-  EXPECT_NE(run.out.find("\"scenario\": \"lift_one\""), std::string::npos);
-  EXPECT_NE(run.out.find("\"model\": \"god_finger\""), std::string::npos);
+  const nlohmann::ordered_json json = nlohmann::ordered_json::parse(run.out);
+  EXPECT_EQ(json.at("scenario"), "lift_one");
+  EXPECT_EQ(json.at("model"), "god_finger");
   EXPECT_DOUBLE_EQ(test::jsonValue(run.out, "duration_s"), 1.0);
   EXPECT_DOUBLE_EQ(test::jsonValue(run.out, "steps"), 1000.0);
   EXPECT_GT(test::jsonValue(run.out, "step_us_median"), 0.0);
