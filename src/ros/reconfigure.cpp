@@ -54,6 +54,42 @@ god_finger::GodFingerConfig configOf(const WorldParams& params)
   return config;
 }
 
+std::vector<std::string> clampToLiveRanges(god_finger::GodFingerConfig* config)
+{
+  dynamic_reconfigure::Config message;
+  config->__toMessage__(message);
+  std::vector<std::string> notes;
+  for (dynamic_reconfigure::DoubleParameter& entry : message.doubles)
+  {
+    if (const ParameterRow<WorldParams>* row = rowNamed(entry.name))
+    {
+      std::string note;
+      entry.value = clampToLive(*row, entry.value, &note);
+      if (!note.empty())
+      {
+        notes.push_back(note);
+      }
+    }
+  }
+  for (dynamic_reconfigure::IntParameter& entry : message.ints)
+  {
+    if (const ParameterRow<WorldParams>* row = rowNamed(entry.name))
+    {
+      std::string note;
+      entry.value = static_cast<int>(clampToLive(*row, entry.value, &note));
+      if (!note.empty())
+      {
+        notes.push_back(note);
+      }
+    }
+  }
+  if (!notes.empty())
+  {
+    config->__fromMessage__(message);
+  }
+  return notes;
+}
+
 bool worldFromConfig(const god_finger::GodFingerConfig& config, const WorldParams& base, WorldParams* params,
                      std::string* error)
 {
@@ -102,6 +138,12 @@ LiveReconfigure::LiveReconfigure(const ros::NodeHandle& pnh, const WorldParams& 
 void LiveReconfigure::onReconfigure(god_finger::GodFingerConfig& config)
 {
   boost::recursive_mutex::scoped_lock lock(mutex_);
+  // A value in its row's range but outside the row's live range is clamped, and said so: the
+  // clamped configuration is what gets applied and sent back.
+  for (const std::string& note : clampToLiveRanges(&config))
+  {
+    ROS_WARN("%s: reconfiguration: %s", node_.c_str(), note.c_str());
+  }
   std::string error;
   if (!apply_(config, config.model != in_force_.model, &error))
   {

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -64,7 +65,7 @@ TEST(ParameterTables, TheCfgFollowsTheWorldTable)
   // gen.add("name", type, 0, "meaning", default, min, max) or, for a choice, edit_method=...
   const std::string cfg = readSource("cfg/GodFinger.cfg");
   const std::regex add(
-      "gen\\.add\\(\"(\\w+)\", (\\w+), 0,\\s*\"([^\"]*)\",\\s*([^,\\)]+)(?:,\\s*([^,\\)]+),\\s*([^,\\)]+))?");
+      "gen\\.add\\(\"(\\w+)\", (\\w+), 0,\\s*\"([^\"]*)\",\\s*([^,\\)]+)(?:,\\s*([^,\\)]+)(?:,\\s*([^,\\)]+))?)?");
   int entries = 0;
   for (std::sregex_iterator it(cfg.begin(), cfg.end(), add), end; it != end; ++it, ++entries)
   {
@@ -88,13 +89,19 @@ TEST(ParameterTables, TheCfgFollowsTheWorldTable)
     }
     const double default_value = std::stod((*it)[4]);
     EXPECT_EQ(default_value, row->number(WorldParams{})) << name << ": one default, the struct's";
-    // The slider's ends are the cfg's own (a slider needs finite ends) but lie in the range.
-    ASSERT_TRUE((*it)[5].matched) << name << " has no slider range";
-    const double low = std::stod((*it)[5]);
-    const double high = std::stod((*it)[6]);
-    EXPECT_TRUE(row->range.contains(low) && row->range.contains(high) && low <= default_value && default_value <= high)
-        << name << ": slider [" << low << ", " << high << "] must lie in " << row->range.text()
-        << " around the default";
+    // One range per parameter: the slider's ends are the row's range's (an infinite end left
+    // out, unbounded), so that the server never clamps a value silently; a narrower live range is
+    // the row's, applied (and reported) by the node.
+    ASSERT_TRUE((*it)[5].matched || std::isinf(row->range.low)) << name << " has no slider range";
+    const double low = (*it)[5].matched ? std::stod((*it)[5]) : -INFINITY;
+    const double high = (*it)[6].matched ? std::stod((*it)[6]) : INFINITY;
+    EXPECT_EQ(low, row->range.low) << name << ": the slider's low end must be the range's, " << row->range.text();
+    EXPECT_EQ(high, row->range.high) << name << ": the slider's high end must be the range's, " << row->range.text();
+    const ParameterRange& live = row->liveRange();
+    EXPECT_TRUE(!row->has_live || (!live.low_open && !live.high_open && row->range.contains(live.low) &&
+                                   row->range.contains(live.high) && live.contains(default_value)))
+        << name << ": the live range " << live.text() << " must be closed, in " << row->range.text()
+        << " and hold the default";
   }
   EXPECT_GE(entries, 8);
 }
@@ -163,6 +170,63 @@ TEST(ParameterTables, DefaultsAreValidAndEveryBoundIsEnforcedWithTheParameterNam
         }
       },
       InputError);
+}
+// One range per parameter: a live range narrower than the range is the table's, and a live value
+// outside it is clamped with a note (the reconfigure handler logs it and sends the value back).
+struct LiveParams
+{
+  double radius = 0.01;
+  int count = 8;
+};
+
+TEST(ParameterTables, ALiveRangeClampsAndSaysSo)
+{
+  using P = LiveParams;
+  const ParameterTable<P> table = {
+      withLiveRange(
+          realRow<P>("radius", "m", openClosed(0.0, 1e3), "a radius", [](P& p) -> double& { return p.radius; }),
+          closed(0.0005, 0.05)),
+      integerRow<P>("count", closed(3, 64), "a count", [](P& p) -> int& { return p.count; }),
+  };
+  std::string note;
+  EXPECT_EQ(clampToLive(table[0], 0.02, &note), 0.02);
+  EXPECT_EQ(note, "");
+  EXPECT_EQ(clampToLive(table[0], 1.0, &note), 0.05);
+  EXPECT_EQ(note, "parameter 'radius' = 1 is outside the live range [0.0005, 0.05]: clamped to 0.05");
+  note.clear();
+  EXPECT_EQ(clampToLive(table[0], 0.0001, &note), 0.0005);
+  EXPECT_NE(note.find("clamped to 0.0005"), std::string::npos) << note;
+  // Outside the range itself: no clamp, the range check refuses it with its own message.
+  note.clear();
+  EXPECT_EQ(clampToLive(table[0], 2000.0, &note), 2000.0);
+  EXPECT_EQ(note, "");
+  // A row without a live range takes its whole range live.
+  EXPECT_EQ(clampToLive(table[1], 64.0, &note), 64.0);
+  EXPECT_EQ(note, "");
+  EXPECT_EQ(table[1].liveRange().text(), table[1].range.text());
+  // Lifted rows keep their live range.
+  struct Outer
+  {
+    P inner;
+  };
+  const ParameterTable<Outer> lifted = liftRows<Outer, P>(table, [](Outer& o) -> P& { return o.inner; });
+  EXPECT_TRUE(lifted[0].has_live);
+  EXPECT_EQ(lifted[0].liveRange().text(), "[0.0005, 0.05]");
+}
+
+TEST(ParameterTables, RMaxIsLiveOverItsWholeRange)
+{
+  // Issue 18: the slider once stopped at 5 cm and clamped silently; r_max accepts its whole range.
+  for (const ParameterRow<WorldParams>& row : worldParameterTable())
+  {
+    if (std::string(row.name) == "r_max")
+    {
+      std::string note;
+      EXPECT_EQ(clampToLive(row, 0.2, &note), 0.2);
+      EXPECT_EQ(note, "");
+      EXPECT_EQ(row.liveRange().text(), "(0, 1000]");
+    }
+  }
 }
 }  // namespace
 }  // namespace god_finger

@@ -60,6 +60,9 @@ class Reconfigure(unittest.TestCase):
         client = dynamic_reconfigure.client.Client(node, timeout=30)
         self.wait_for(lambda: self.radius is not None and self.radius > 0.009, 30.0, "a pressing contact area")
         before = self.radius
+        # Issue 18: one range per parameter; r_max above the old 5 cm slider end is taken as it is.
+        wide = client.update_configuration({"r_max": 0.2})
+        self.assertAlmostEqual(wide["r_max"], 0.2)
         config = client.update_configuration({"r_max": 0.004})
         self.assertAlmostEqual(config["r_max"], 0.004)
         self.wait_for(lambda: self.radius is not None and self.radius <= 0.004, 5.0, "the area to shrink")

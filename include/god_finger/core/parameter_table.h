@@ -2,7 +2,7 @@
 // meaning and where it lives in its struct. The struct's member initialiser is the one default
 // (a row reads it from a default-constructed struct). Everything that touches parameters is
 // built from the tables: validation, reading from a ParameterSource (ROS or a map), the CLI
-// flags, the JSON output, the README's tables (test/unit/parameter_tables_test checks them)
+// flags, the JSON output (parameter_json.h), the README's tables (test/unit/parameter_tables_test checks them)
 // and dynamic_reconfigure (the cfg is checked against the table by the same test).
 // Adding a parameter is its struct member and one row.
 //
@@ -75,6 +75,10 @@ struct ParameterRow
   const char* name = "";
   const char* unit = "";  // "m", "N/m", "dimensionless", "count", "" for a choice
   ParameterRange range;   // for kReal and kInteger
+  // The range a running node accepts (dynamic_reconfigure): `range` unless the row narrows it
+  // (withLiveRange). A live value in `range` but outside it is clamped, and the clamp reported.
+  ParameterRange live;
+  bool has_live = false;
   const char* meaning = "";
   std::function<double&(Params&)> real;
   std::function<int&(Params&)> integer;
@@ -89,6 +93,10 @@ struct ParameterRow
   std::string defaultText() const
   {
     return valueText(Params{});
+  }
+  const ParameterRange& liveRange() const
+  {
+    return has_live ? live : range;
   }
   double number(const Params& params) const
   {
@@ -140,8 +148,35 @@ ParameterRow<Params> choiceRow(const char* name, const std::string& choices, con
   return row;
 }
 
+// `row` with a live range narrower than its range (closed, inside the range).
+template <typename Params>
+ParameterRow<Params> withLiveRange(ParameterRow<Params> row, ParameterRange live)
+{
+  row.live = live;
+  row.has_live = true;
+  return row;
+}
+
 template <typename Params>
 using ParameterTable = std::vector<ParameterRow<Params>>;
+
+// A live value of `row`: in its range but outside its live range, it is clamped to the nearer
+// end of the live range and `note` says so ("parameter 'r_max' = 1 is outside the live range
+// [0.0005, 0.05]: clamped to 0.05"); any other value is returned as it is (the range check
+// refuses what lies outside the range).
+template <typename Params>
+double clampToLive(const ParameterRow<Params>& row, double value, std::string* note)
+{
+  const ParameterRange& live = row.liveRange();
+  if (!row.has_live || !row.range.contains(value) || live.contains(value))
+  {
+    return value;
+  }
+  const double clamped = value < live.low ? live.low : live.high;
+  *note = "parameter '" + std::string(row.name) + "' = " + formatNumber(value) + " is outside the live range " +
+          live.text() + ": clamped to " + formatNumber(clamped);
+  return clamped;
+}
 
 // `table`'s rows as rows of `Outer`, which holds a `Params` reached through `part` (a device
 // profile's coupling, the world's contact parameters): the inner table stays the one definition.
@@ -156,6 +191,8 @@ ParameterTable<Outer> liftRows(const ParameterTable<Params>& table, Params& (*pa
     outer.name = row.name;
     outer.unit = row.unit;
     outer.range = row.range;
+    outer.live = row.live;
+    outer.has_live = row.has_live;
     outer.meaning = row.meaning;
     outer.choices = row.choices;
     if (row.real)
@@ -275,20 +312,6 @@ std::string usageLines(const ParameterTable<Params>& table)
                       row.meaning, row.defaultText());
   }
   return text;
-}
-
-// {"r_max": 0.01, "walk": "unfold", ...}: numbers as JSON numbers (infinity as "inf").
-template <typename Params>
-std::string jsonObject(const ParameterTable<Params>& table, const Params& params)
-{
-  std::string json = "{";
-  for (const ParameterRow<Params>& row : table)
-  {
-    json += std::string(json.size() > 1 ? ", " : "") + "\"" + row.name + "\": ";
-    const bool quoted = row.kind == ParameterRow<Params>::Kind::kChoice || std::isinf(row.number(params));
-    json += quoted ? "\"" + row.valueText(params) + "\"" : row.valueText(params);
-  }
-  return json + "}";
 }
 
 // The README's table: | name | unit | default | range | meaning |.

@@ -12,12 +12,18 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace god_finger
 {
 // The configuration that shows `params` (to start the server from what the node runs with).
 // The cfg's entries are rows of worldParameterTable(), matched by name.
 god_finger::GodFingerConfig configOf(const WorldParams& params);
+// Clamps every entry of `config` that lies in its row's range but outside the row's live range
+// (core/parameter_table.h) to that live range; one line per clamped entry, naming it, its value,
+// the live range and the clamped value (empty: nothing clamped). The cfg's ends are the rows'
+// ranges, so dynamic_reconfigure's server itself never clamps a value the table accepts.
+std::vector<std::string> clampToLiveRanges(god_finger::GodFingerConfig* config);
 // `config` applied over `base` through worldParameterTable(): false (and `error` says why,
 // naming the parameter) when any value or the whole set is invalid; nothing is to be applied then.
 bool worldFromConfig(const god_finger::GodFingerConfig& config, const WorldParams& base, WorldParams* params,
