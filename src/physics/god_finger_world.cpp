@@ -20,6 +20,7 @@
 #include <cmath>
 #include <functional>
 #include <optional>
+#include <sstream>
 
 namespace god_finger
 {
@@ -529,6 +530,37 @@ struct GodFingerWorld::Impl
     response->configureProxy(params, proxy.rigid.get());
   }
 
+  // The body the proxy's sphere at `position` would start deepest in, and how deep (m): -1 when
+  // it overlaps none. Every body is probed, awake or dormant (contactPairTest needs no broadphase).
+  std::pair<int, double> deepestOverlap(const Eigen::Vector3d& position)
+  {
+    btSphereShape sphere(static_cast<btScalar>(params.coupling.proxy_radius));
+    btCollisionObject probe;
+    probe.setCollisionShape(&sphere);
+    probe.setWorldTransform(btTransform(btQuaternion::getIdentity(), toBullet(position)));
+    struct Deepest : btCollisionWorld::ContactResultCallback
+    {
+      double depth = 0.0;
+      btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
+                               const btCollisionObjectWrapper*, int, int) override
+      {
+        depth = std::max(depth, -static_cast<double>(point.getDistance()));
+        return 0;
+      }
+    };
+    std::pair<int, double> deepest(-1, 0.0);
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      Deepest callback;
+      world->contactPairTest(&probe, bodies[i].rigid.get(), callback);
+      if (callback.depth > deepest.second)
+      {
+        deepest = {static_cast<int>(i), callback.depth};
+      }
+    }
+    return deepest;
+  }
+
   Eigen::Isometry3d geometryToWorld(const Body& body) const
   {
     return toEigen(body.rigid->getWorldTransform()) * body.geometry_in_com;
@@ -828,6 +860,20 @@ int GodFingerWorld::addInterface(const Eigen::Vector3d& position, const Coupling
   if (!error.empty())
   {
     throw InputError(error);
+  }
+  // A proxy is the hand's god-object: it never starts inside a body. One whose centre would lie
+  // in a body (the hand starts in the table: a workspace offset too low) is refused rather than
+  // lifted out, since lifting it would stretch the coupling at once and throw the hand out of the
+  // body at the force limit; the user moves the device or its workspace_offset instead.
+  const std::pair<int, double> overlap = impl_->deepestOverlap(position);
+  if (overlap.first >= 0 && overlap.second >= impl_->params.coupling.proxy_radius)
+  {
+    std::ostringstream message;
+    message << "interface " << impl_->proxies.size() << " would start inside body '"
+            << impl_->scene.bodies[overlap.first].name << "': its proxy at (" << position.x() << ", " << position.y()
+            << ", " << position.z() << ") m lies " << overlap.second - impl_->params.coupling.proxy_radius
+            << " m below its surface; start the hand outside every body (move the device, or its workspace_offset)";
+    throw InputError(message.str());
   }
   Proxy proxy;
   proxy.initial = position;

@@ -190,7 +190,9 @@ struct PhysicsNode::Impl
         }
         catch (const std::exception& error)
         {
-          // A profile unstable at this rate and proxy mass (read after start-up): refused.
+          // A profile unstable at this rate and proxy mass (read after start-up), or a hand that
+          // starts inside a body: refused, and tried again at the next pose (the proxy appears
+          // once the hand is outside every body).
           ROS_ERROR_THROTTLE(1.0, "physics: interface '%s' refused: %s", interface.name.c_str(), error.what());
           interface.have_target = false;
           continue;

@@ -135,7 +135,16 @@ void ServoLoop::prepare()
     {
       readings_[i].velocity.setZero();  // the samples carry finite readings only
     }
-    world_->addInterface(start, interface.profile.coupling);
+    try
+    {
+      // Refused when the hand starts inside a body (GodFingerWorld::addInterface): the loop does
+      // not start, with the interface, the body and the position named.
+      world_->addInterface(start, interface.profile.coupling);
+    }
+    catch (const InputError& error)
+    {
+      throw InputError("interface '" + interface.name + "': " + error.what());
+    }
     couplings_.push_back(world_->coupling(static_cast<int>(i)));
     Render& render = render_[i];
     render.target = render.previous_target = render.anchor = start;

@@ -334,6 +334,31 @@ TEST(GodFingerWorld, SameInputsGiveTheSameTrajectoryBitForBit)
   EXPECT_EQ(std::memcmp(one.data(), three.data(), one.size() * sizeof(double)), 0);
 }
 
+// Issue 18: a hand that starts inside the table (a workspace offset too low) is refused with the
+// body and the position named, not given a proxy inside it (nor one lifted out silently).
+TEST(GodFingerWorld, AProxyNeverStartsInsideABody)
+{
+  GodFingerWorld world(planeScene(0.0, 0.5), WorldParams());
+  try
+  {
+    world.addInterface(Eigen::Vector3d(0.1, -0.2, -0.03));
+    FAIL() << "a proxy inside the slab";
+  }
+  catch (const InputError& error)
+  {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind("interface 0 would start inside body 'slab': its proxy at (0.1, -0.2, -0.03) m", 0), 0u)
+        << message;
+    EXPECT_NE(message.find("workspace_offset"), std::string::npos) << message;
+  }
+  EXPECT_EQ(world.interfaceCount(), 0);
+  // Touching (the sphere dips into the top face, its centre above it) and above are fine.
+  EXPECT_EQ(world.addInterface(Eigen::Vector3d(0.0, 0.0, 0.5 * world.params().coupling.proxy_radius)), 0);
+  EXPECT_EQ(world.addInterface(Eigen::Vector3d(0.0, 0.0, 0.1)), 1);
+  run(&world, 0.1);
+  EXPECT_GT(world.interfaceState(0).proxy_position.z(), 0.0);
+}
+
 TEST(GodFingerWorld, BadInputIsRejectedAndLosesNothing)
 {
   WorldParams params;

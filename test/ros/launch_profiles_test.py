@@ -73,6 +73,11 @@ class LaunchProfiles(unittest.TestCase):
                 for key in PROFILE_KEYS:
                     self.assertEqual(params.get(interface + "/" + key), expected[key],
                                      "%s %s: %s/%s" % (launch, args, interface, key))
+                # Issue 18: one workspace offset per device (its profile's), whichever launch
+                # starts it; bimanual setups place each device on purpose.
+                if not interface.endswith("/left") and not interface.endswith("/right"):
+                    self.assertEqual(params.get(interface + "/workspace_offset"), expected["workspace_offset"],
+                                     "%s %s: %s/workspace_offset" % (launch, args, interface))
                 checked += 1
             # No node's private parameter shadows the interface's profile.
             for name in params:

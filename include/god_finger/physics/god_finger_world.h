@@ -87,7 +87,9 @@ class GodFingerWorld
 
   // Adds a finger: a proxy at `position` (m, world) pulled with the world's coupling profile
   // (params().coupling) or the device's own. Returns its index. Throws InputError on a
-  // non-finite position, a bad profile, or one unstable at this time step and proxy mass.
+  // non-finite position, a bad profile, or one unstable at this time step and proxy mass, and
+  // on a position inside a body (the proxy's centre in it): the message names the body and the
+  // position. A proxy never starts inside a body, and is never lifted out silently.
   int addInterface(const Eigen::Vector3d& position);
   int addInterface(const Eigen::Vector3d& position, const CouplingProfile& coupling);
   // The profile that pulls this interface's proxy (the hand must feel the same).
