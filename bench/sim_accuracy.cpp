@@ -7,6 +7,7 @@
 //
 // usage: sim_accuracy --scenario slide|pinch_cylinder --duration S --dt S[,S...] --iterations N[,N...]
 //        [--reference 1]   (marks the lines as the reference run)
+#include "god_finger/core/parameter_json.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/physics/experiment.h"
 
@@ -109,22 +110,23 @@ int main(int argc, char** argv)
       try
       {
         const ExperimentResult result = runExperiment(options);
-        std::ostringstream line;
-        line << "{\"scenario\": \"" << result.scenario << "\", \"precision\": \"" << precision
-             << "\", \"dt\": " << jsonNumber(dt) << ", \"iterations\": " << iteration_count
-             << ", \"compute_s_per_sim_s\": " << jsonNumber(1e-6 * result.step_us_total / result.duration_s)
-             << ", \"nan\": " << result.nan << ", \"reference\": " << (reference ? "true" : "false")
-             << ", \"trajectory\": [";
-        for (std::size_t k = 0; k < result.trajectory.size(); ++k)
+        Json line;
+        line["scenario"] = result.scenario;
+        line["precision"] = precision;
+        line["dt"] = jsonMeasure(dt);
+        line["iterations"] = iteration_count;
+        line["compute_s_per_sim_s"] = jsonMeasure(1e-6 * result.step_us_total / result.duration_s);
+        line["nan"] = result.nan;
+        line["reference"] = reference;
+        line["trajectory"] = Json::array();
+        for (const PoseSample& sample : result.trajectory)
         {
-          const PoseSample& sample = result.trajectory[k];
-          line << (k ? ", " : "") << "[" << jsonNumber(sample.time) << ", " << jsonNumber(sample.position.x()) << ", "
-               << jsonNumber(sample.position.y()) << ", " << jsonNumber(sample.position.z()) << ", "
-               << jsonNumber(sample.orientation.w()) << ", " << jsonNumber(sample.orientation.x()) << ", "
-               << jsonNumber(sample.orientation.y()) << ", " << jsonNumber(sample.orientation.z()) << "]";
+          line["trajectory"].push_back({jsonMeasure(sample.time), jsonMeasure(sample.position.x()),
+                                        jsonMeasure(sample.position.y()), jsonMeasure(sample.position.z()),
+                                        jsonMeasure(sample.orientation.w()), jsonMeasure(sample.orientation.x()),
+                                        jsonMeasure(sample.orientation.y()), jsonMeasure(sample.orientation.z())});
         }
-        line << "]}";
-        std::cout << line.str() << std::endl;
+        std::cout << line.dump() << std::endl;
       }
       catch (const std::exception& error)
       {
