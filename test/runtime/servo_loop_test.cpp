@@ -98,6 +98,33 @@ void drain(ServoLoop& loop)
   }
 }
 
+// Issue 18: a hand that starts inside the table or the ball (a workspace offset too low) stops
+// the loop before it starts, naming the interface, the body and the position; no proxy is made.
+TEST(ServoLoop, AHandThatStartsInsideABodyIsRefusedWithTheBodyNamed)
+{
+  const std::pair<Eigen::Vector3d, std::string> cases[] = {
+      {Eigen::Vector3d(0.2, 0.0, -0.02), "table"},  // the table's top is z = 0, 4 cm thick
+      {Eigen::Vector3d(0.0, 0.0, 0.04), "ball"},    // the ball's centre
+  };
+  for (const auto& [start, body] : cases)
+  {
+    auto device = std::make_unique<ScriptedDevice>();
+    device->position = [start = start](double) { return start; };
+    try
+    {
+      makeLoop(std::move(device));
+      ADD_FAILURE() << "a proxy inside the " << body;
+    }
+    catch (const InputError& error)
+    {
+      const std::string message = error.what();
+      EXPECT_EQ(message.rfind("interface 'finger': interface 0 would start inside body '" + body + "'", 0), 0u)
+          << message;
+      EXPECT_NE(message.find("workspace_offset"), std::string::npos) << message;
+    }
+  }
+}
+
 TEST(ServoLoop, SimulatedTimeGivesTheSameTrajectoryBitForBit)
 {
   auto a = makeLoop(pressingHand());
