@@ -1,6 +1,7 @@
 #include "god_finger/runtime/servo_loop.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/workspace_bound.h"
 #include "god_finger/runtime/servo_clock.h"
 
 #include <cmath>
@@ -180,7 +181,10 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   if (why.empty())
   {
     std::lock_guard<std::mutex> lock(post_mutex_);
-    SpscQueue<ServoCommand>& queue = command.kind == ServoCommand::Kind::kHandTarget ? hand_commands_ : commands_;
+    const bool haptic_side = command.kind == ServoCommand::Kind::kHandTarget ||
+                             command.kind == ServoCommand::Kind::kStopForce ||
+                             command.kind == ServoCommand::Kind::kResumeForce;
+    SpscQueue<ServoCommand>& queue = haptic_side ? hand_commands_ : commands_;
     if (!queue.tryPush(command))
     {
       why = "the servo loop's command queue is full";
@@ -193,14 +197,32 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   return why.empty();
 }
 
-void ServoLoop::applyHandTargets()
+void ServoLoop::applyHandTargets(double time)
 {
   ServoCommand command;
   while (hand_commands_.tryPop(&command))
   {
     ++counters_.commands;
-    interfaces_[command.interface].device->setHandTarget(command.hand_target);
+    if (command.kind == ServoCommand::Kind::kStopForce)
+    {
+      for (ForceGuard& guard : guards_)
+      {
+        guard.stop();
+      }
+    }
+    else if (command.kind == ServoCommand::Kind::kResumeForce)
+    {
+      for (ForceGuard& guard : guards_)
+      {
+        guard.resume(time);
+      }
+    }
+    else
+    {
+      interfaces_[command.interface].device->setHandTarget(command.hand_target);
+    }
   }
+  counters_.force_stopped = !guards_.empty() && guards_[0].stopped();
 }
 
 void ServoLoop::applyWorldCommands()
@@ -221,6 +243,8 @@ void ServoLoop::applyWorldCommands()
         world_->resetAtInterfaces();
         break;
       case ServoCommand::Kind::kHandTarget:  // never queued here (post() sends them to the haptic side)
+      case ServoCommand::Kind::kStopForce:
+      case ServoCommand::Kind::kResumeForce:
         break;
     }
   }
@@ -251,7 +275,9 @@ void ServoLoop::readDevices(double time)
     applied_[i] = guards_[i].output(time);
     const DeviceReading reading = interface.device->update(time, applied_[i]);
     read_at_[i] = steadySeconds();
-    const Eigen::Vector3d target = interface.mapping.toWorld(reading.position);
+    // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
+    const WorkspaceBound bound = boundToWorkspace(reading.position, interface.profile, interface.mapping);
+    const Eigen::Vector3d target = interface.mapping.toWorld(bound.position);
     Render& render = render_[i];
     render.previous_target = render.target;
     // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
@@ -261,6 +287,7 @@ void ServoLoop::readDevices(double time)
     {
       readings_[i] = reading;
       render.target = target;
+      render.wall_force = bound.wall_force;
       const std::uint32_t pressed = reading.buttons & ~buttons_[i];
       buttons_[i] = reading.buttons;
       cycle_model = cycle_model || (pressed & 1u);
@@ -417,7 +444,7 @@ void ServoLoop::decide(long tick, double time, double period_us)
       }
     }
     render.force = force;
-    if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force)))
+    if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force) + render.wall_force))
     {
       ++counters_.rejected_forces;
     }
@@ -433,7 +460,7 @@ void ServoLoop::decide(long tick, double time, double period_us)
     sample->interface = static_cast<int>(i);
     sample->reading = readings_[i];
     sample->applied_force = applied_[i];
-    sample->commanded_force = guards_[i].output(time);
+    sample->commanded_force = guards_[i].commanded();
     sample->interface_position = render.target;
     sample->proxy_position = proxy.proxy_position;
     sample->user_force = force;
@@ -469,7 +496,7 @@ void ServoLoop::tick(double time)
       pending_ = false;
     }
     readDevices(time);
-    applyHandTargets();
+    applyHandTargets(time);
     targets_box_->back() = frame_;  // same lengths: no allocation
     targets_box_->publish();
     sem_post(&physics_wake_);
@@ -480,7 +507,7 @@ void ServoLoop::tick(double time)
   else
   {
     readDevices(time);
-    applyHandTargets();
+    applyHandTargets(time);
     physicsInline();
     decide(tick_, time, period_us);
   }
