@@ -17,7 +17,7 @@ struct DeviceProfile
   ForceGuardParams guard;
   // m, device frame, from the workspace centre (the device origin): readings beyond it are
   // clamped onto it and the hand feels a wall (core/workspace_bound.h). Scripts stay within it.
-  double workspace_radius = 0.25;
+  double workspace_radius = 0.5;
 };
 
 // The coupling's rows, the guard's and workspace_radius: what config/devices/NAME.yaml may set.
