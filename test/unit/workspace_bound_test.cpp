@@ -15,7 +15,7 @@ TEST(WorkspaceBound, InsideIsUntouched)
 {
   DeviceProfile profile;
   profile.workspace_radius = 0.1;
-  const Eigen::Vector3d p(0.03, -0.04, 0.09);
+  const Eigen::Vector3d p(0.03, -0.04, 0.08);  // |p| = 0.094 m
   const WorkspaceBound bound = boundToWorkspace(p, profile, WorkspaceMapping());
   EXPECT_FALSE(bound.outside);
   EXPECT_EQ(bound.position, p);
