@@ -265,6 +265,7 @@ struct ServoNode::Impl
     add("dropped_snapshots", std::to_string(counters.dropped_snapshots.load()));
     add("rejected_readings", std::to_string(counters.rejected_readings.load()));
     add("rejected_forces", std::to_string(counters.rejected_forces.load()));
+    add("force_stopped", counters.force_stopped ? "true" : "false");  // /stop_force
     // The multi-rate scheme: interface-ticks whose force the haptic side rendered because the
     // physics was late, steps taken, and targets the late physics skipped.
     add("stale_ticks", std::to_string(counters.stale_ticks.load()));
