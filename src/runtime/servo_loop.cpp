@@ -127,7 +127,9 @@ void ServoLoop::prepare()
     ServoInterface& interface = interfaces_[i];
     interface.device->start();
     readings_[i] = interface.device->update(0.0, Eigen::Vector3d::Zero());
-    const Eigen::Vector3d start = interface.mapping.toWorld(readings_[i].position);
+    // Within the workspace (core/workspace_bound.h), as every later reading.
+    const Eigen::Vector3d start = interface.mapping.toWorld(
+        boundToWorkspace(readings_[i].position, interface.profile, interface.mapping).position);
     if (!start.allFinite())
     {
       throw DeviceError("interface '" + interface.name + "': the device's first position is not finite");
