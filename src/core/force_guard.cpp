@@ -21,10 +21,11 @@ const ParameterTable<ForceGuardParams>& forceGuardParameterTable()
       realRow<P>("soft_start", "s", closed(0.0, 10.0),
                  "force ramps in from zero over this at start, after the watchdog and on resume (0: at once)",
                  [](P& p) -> double& { return p.soft_start; }),
-      realRow<P>("max_force_rate", "N/s", openClosed(0.0, 1e6), "limit on the rate of change of the force (|dF/dt|)",
+      realRow<P>("max_force_rate", "N/s", openClosed(0.0, 1e6),
+                 "limit on the rate of change of the force (norm of dF/dt)",
                  [](P& p) -> double& { return p.max_force_rate; }),
       realRow<P>("continuous_force", "N", openClosed(0.0, 1e4),
-                 "sustained force: the average of |F|^2 over thermal_time_constant stays under its square "
+                 "sustained force: the average of the squared force over thermal_time_constant stays under its square "
                  "(>= max_force: no limit)",
                  [](P& p) -> double& { return p.continuous_force; }),
       realRow<P>("thermal_time_constant", "s", openClosed(0.0, 1000.0),
