@@ -271,6 +271,7 @@ void ServoLoop::readDevices(double time)
   const double dt = 1.0 / params_.rate;
   bool cycle_model = false;
   bool reset = false;
+  bool toggle_stop = false;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
     ServoInterface& interface = interfaces_[i];
@@ -294,6 +295,7 @@ void ServoLoop::readDevices(double time)
       buttons_[i] = reading.buttons;
       cycle_model = cycle_model || (pressed & 1u);
       reset = reset || (pressed & 2u);
+      toggle_stop = toggle_stop || (pressed & 4u);
     }
     else
     {
@@ -303,6 +305,15 @@ void ServoLoop::readDevices(double time)
     render.velocity = (render.target - render.previous_target) / dt;
     frame_.targets[i] = render.target;  // always finite
     frame_.velocities[i] = render.velocity;
+  }
+  if (toggle_stop)  // button 2: stop every device's force, or resume it (soft start)
+  {
+    const bool stop = !guards_.empty() && !guards_[0].stopped();
+    for (ForceGuard& guard : guards_)
+    {
+      stop ? guard.stop() : guard.resume(time);
+    }
+    counters_.force_stopped = stop;
   }
   cycle_presses_ += cycle_model ? 1 : 0;
   reset_presses_ += reset ? 1 : 0;

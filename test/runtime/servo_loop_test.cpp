@@ -450,5 +450,38 @@ TEST(ServoLoop, StopForceZeroesAndResumeRampsIn)
   EXPECT_FALSE(loop->counters().force_stopped);
   EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);
 }
+
+// Button 2 (where the device has one) toggles the stop: zero at once, then the soft start.
+TEST(ServoLoop, ButtonTwoStopsAndResumesTheForce)
+{
+  DeviceProfile profile;
+  profile.workspace_radius = 0.1;
+  auto device = std::make_unique<ScriptedDevice>();
+  device->position = [](double) { return Eigen::Vector3d(0, 0, 0.2); };  // the wall: a constant force
+  device->buttons = [](double t) { return (t >= 0.7 && t < 0.72) || (t >= 0.9 && t < 0.92) ? 4u : 0u; };
+  ScriptedDevice* hand = device.get();
+  auto loop = makeLoop(std::move(device), profile);
+  const double max_force = profile.guard.max_force;
+  runTicks(*loop, 700);
+  drain(*loop);
+  EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);
+  runTicks(*loop, 2, 700);  // pressed at tick 700; its zero is applied at tick 701
+  for (int k = 702; k < 900; ++k)
+  {
+    loop->tick(k * loop->period());
+    ASSERT_EQ(hand->last_force, Eigen::Vector3d::Zero()) << "tick " << k;
+  }
+  drain(*loop);
+  EXPECT_TRUE(loop->counters().force_stopped);
+  for (int k = 900; k < 1500; ++k)  // pressed again at tick 900: resumes from there
+  {
+    loop->tick(k * loop->period());
+    const double expected = max_force * std::min(1.0, (k - 900) * loop->period() / profile.guard.soft_start);
+    ASSERT_LE(-hand->last_force.z(), expected + 1e-9) << "tick " << k;
+    drain(*loop);
+  }
+  EXPECT_FALSE(loop->counters().force_stopped);
+  EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);
+}
 }  // namespace
 }  // namespace god_finger

@@ -9,7 +9,9 @@
 //   2. bounds each reading to the profile's workspace_radius (core/workspace_bound.h: a reading
 //      beyond it is clamped and its wall force added to the next command), maps it into the
 //      world (the interface target) and hands the targets and the
-//      buttons' presses (0: next contact model, 1: reset) to the physics; applies the
+//      buttons' presses (0: next contact model, 1: reset) to the physics (button 2, where
+//      the device has one, e.g. the Falcon's third, stops every device's force or resumes it
+//      with the soft start, as kStopForce / kResumeForce); applies the
 //      hand-target commands. A reading whose position, mapped position or velocity is not
 //      finite is rejected whole and counted once (rejected_readings), as the topic topologies'
 //      haptic node does: its buttons press nothing, the physics gets the last good target
