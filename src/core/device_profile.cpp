@@ -14,9 +14,10 @@ const ParameterTable<DeviceProfile>& deviceProfileTable()
     const ParameterTable<P> guard =
         liftRows<P, ForceGuardParams>(forceGuardParameterTable(), [](P& p) -> ForceGuardParams& { return p.guard; });
     rows.insert(rows.end(), guard.begin(), guard.end());
-    rows.push_back(realRow<P>("workspace_radius", "m", openClosed(0.0, 10.0),
-                              "radius of the device's workspace that scripts and the fake hand stay within",
-                              [](P& p) -> double& { return p.workspace_radius; }));
+    rows.push_back(realRow<P>(
+        "workspace_radius", "m", openClosed(0.0, 10.0),
+        "radius of the device's workspace from its centre: beyond it the proxy stops and a wall pushes the hand back",
+        [](P& p) -> double& { return p.workspace_radius; }));
     return rows;
   }();
   return table;

@@ -18,6 +18,7 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/Vector3Stamped.h>
 #include <ros/ros.h>
+#include <std_srvs/SetBool.h>
 
 #include <algorithm>
 #include <atomic>
@@ -39,6 +40,7 @@ struct DeviceDriverNode::Impl
   ros::Publisher state_publisher;
   ros::Publisher diagnostics_publisher;
   ros::Subscriber force_subscriber;
+  ros::ServiceServer stop_service;  // stop_force, in the interface's namespace
   std::unique_ptr<interactive_markers::InteractiveMarkerServer> marker_server;
   std::mutex mutex;  // guards the guard
   std::thread thread;
@@ -74,6 +76,23 @@ struct DeviceDriverNode::Impl
     }
   }
 
+  // stop_force: true stops this device's force at once, false resumes it with the soft start.
+  bool onStopForce(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response)
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (request.data)
+    {
+      guard->stop();
+    }
+    else
+    {
+      guard->resume(now());
+    }
+    response.success = true;
+    response.message = request.data ? "force stopped" : "force resuming (soft start)";
+    return true;
+  }
+
   void publishDiagnostics(double rate)
   {
     diagnostic_msgs::DiagnosticArray array;
@@ -86,12 +105,16 @@ struct DeviceDriverNode::Impl
     bool timed_out = false;
     long rejected = 0;
     long saturated = 0;
+    bool stopped = false;
+    long budget_limited = 0;
     std::vector<double> trips;
     {
       std::lock_guard<std::mutex> lock(mutex);
       timed_out = guard->timedOut(now());
       rejected = guard->rejected();
       saturated = guard->saturated();
+      stopped = guard->stopped();
+      budget_limited = guard->budgetLimited();
       trips.swap(round_trips_us);
     }
     status.message = timed_out ? "no force commands: output ramped to zero" : "running";
@@ -100,6 +123,8 @@ struct DeviceDriverNode::Impl
     add("overruns", std::to_string(overruns));
     add("rejected_commands", std::to_string(rejected));
     add("saturated_commands", std::to_string(saturated));
+    add("force_stopped", stopped ? "true" : "false");
+    add("budget_limited_outputs", std::to_string(budget_limited));
     add("watchdog_timed_out", timed_out ? "true" : "false");
     add("commands", std::to_string(trips.size()));
     add("round_trip_us_p50", jsonNumber(percentile(trips, 0.5)));
@@ -211,6 +236,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.force_subscriber =
       nh.subscribe("device/force", kSubscriberQueue, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
+  impl.stop_service = nh.advertiseService("stop_force", &Impl::onStopForce, &impl);
   impl.timing = openTimingCsv(pnh, "latency_us");
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend_name.c_str(), 1.0 / impl.period,
            config.profile.guard.max_force);

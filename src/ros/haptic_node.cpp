@@ -5,6 +5,7 @@
 #include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/virtual_coupling.h"
+#include "god_finger/core/workspace_bound.h"
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/ros/conversions.h"
@@ -38,6 +39,8 @@ struct HapticNode::Impl
   ros::NodeHandle nh;
   WorkspaceMapping mapping;
   bool local_coupling = false;
+  DeviceProfile profile;                                 // workspace_radius and the coupling, for the workspace bound
+  Eigen::Vector3d wall_force = Eigen::Vector3d::Zero();  // N, device frame, under mutex: the last state's wall
   CouplingProfile coupling;  // the device's profile: the physics pulls the proxy with the same
   std::string frame;
   ros::Subscriber state_subscriber;
@@ -70,12 +73,13 @@ struct HapticNode::Impl
   long states = 0;
   long timer_ticks = 0;
 
-  void publishForce(const ros::Time& stamp, const Eigen::Vector3d& world_force)
+  // `wall`: the workspace wall (device frame, core/workspace_bound.h), added to the command.
+  void publishForce(const ros::Time& stamp, const Eigen::Vector3d& world_force, const Eigen::Vector3d& wall)
   {
     geometry_msgs::Vector3StampedPtr force(new geometry_msgs::Vector3Stamped);
     force->header.stamp = stamp;
     force->header.frame_id = frame + "_device";
-    const Eigen::Vector3d device = mapping.forceToDevice(world_force);
+    const Eigen::Vector3d device = mapping.forceToDevice(world_force) + wall;
     force->vector.x = device.x();
     force->vector.y = device.y();
     force->vector.z = device.z();
@@ -93,7 +97,9 @@ struct HapticNode::Impl
       ROS_WARN_THROTTLE(1.0, "haptic: rejected a non-finite device state (%ld so far)", rejected_states);
       return;
     }
-    const Eigen::Vector3d world = mapping.toWorld(position);
+    // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
+    const WorkspaceBound bound = boundToWorkspace(position, profile, mapping);
+    const Eigen::Vector3d world = mapping.toWorld(bound.position);
     geometry_msgs::PoseStampedPtr pose(new geometry_msgs::PoseStamped);
     pose->header.stamp = state->header.stamp;
     pose->header.frame_id = "world";
@@ -118,6 +124,7 @@ struct HapticNode::Impl
 
     std::lock_guard<std::mutex> lock(mutex);
     ++states;
+    wall_force = bound.wall_force;
     const std::uint32_t pressed = state->buttons & ~buttons;
     buttons = state->buttons;
     if (pressed & 1u)
@@ -135,7 +142,7 @@ struct HapticNode::Impl
       // The hand feels the reaction of the force that pulls the proxy.
       const CouplingForce coupled =
           couplingForce(coupling, world, mapping.velocityToWorld(velocity), proxy, proxy_velocity);
-      publishForce(state->header.stamp, -coupled.on_proxy);
+      publishForce(state->header.stamp, -coupled.on_proxy, bound.wall_force);
     }
   }
 
@@ -159,7 +166,12 @@ struct HapticNode::Impl
       ++rejected_feedback;  // the driver would reject it too; never forward it
       return;
     }
-    publishForce(feedback->header.stamp, force);
+    Eigen::Vector3d wall;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      wall = wall_force;
+    }
+    publishForce(feedback->header.stamp, force, wall);
   }
 
   void onProxy(const geometry_msgs::PointStamped::ConstPtr& message)
@@ -250,6 +262,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
       readInterfaceConfig(LayeredParameterSource(private_params, interface_params), nh.getNamespace());
   impl.mapping = WorkspaceMapping(config.mapping);
   impl.coupling = config.profile.coupling;
+  impl.profile = config.profile;
   // Across processes or machines the hand's spring is rendered here, from the freshest device
   // position, so that no topic latency sits between the hand and its spring.
   impl.local_coupling = readBool(pnh, "local_coupling", true);

@@ -30,6 +30,7 @@
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
+#include <std_srvs/SetBool.h>
 #include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
@@ -67,6 +68,7 @@ struct ServoNode::Impl
   ros::Publisher diagnostics_publisher;
   ros::ServiceServer reset_service;
   ros::ServiceServer model_service;
+  ros::ServiceServer stop_service;  // /stop_force
   tf2_ros::TransformBroadcaster broadcaster;
   // world -> NAME_device of every interface (ros/device_frame.h): the interactive handle's frame.
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster;
@@ -111,6 +113,18 @@ struct ServoNode::Impl
     std::string error;
     response.success = loop->post(command, &error);
     response.message = response.success ? "scene reset" : error;
+    return true;
+  }
+
+  // /stop_force: true stops every device's force at once (the guards output zero), false
+  // resumes it with the guards' soft start.
+  bool onStopForce(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response)
+  {
+    ServoCommand command;
+    command.kind = request.data ? ServoCommand::Kind::kStopForce : ServoCommand::Kind::kResumeForce;
+    std::string error;
+    response.success = loop->post(command, &error);
+    response.message = response.success ? (request.data ? "force stopped" : "force resuming (soft start)") : error;
     return true;
   }
 
@@ -251,6 +265,7 @@ struct ServoNode::Impl
     add("dropped_snapshots", std::to_string(counters.dropped_snapshots.load()));
     add("rejected_readings", std::to_string(counters.rejected_readings.load()));
     add("rejected_forces", std::to_string(counters.rejected_forces.load()));
+    add("force_stopped", counters.force_stopped ? "true" : "false");  // /stop_force
     // The multi-rate scheme: interface-ticks whose force the haptic side rendered because the
     // physics was late, steps taken, and targets the late physics skipped.
     add("stale_ticks", std::to_string(counters.stale_ticks.load()));
@@ -396,6 +411,7 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   impl.shown_model = static_cast<int>(world_params.model);
   impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);
   impl.model_service = nh.advertiseService("set_contact_model", &Impl::onSetModel, &impl);
+  impl.stop_service = nh.advertiseService("/stop_force", &Impl::onStopForce, &impl);
   ROS_INFO("servo: scene '%s' (%d bodies), %zu interface(s), %.0f Hz on %s, model %s", scene_path.c_str(),
            impl.loop->world().bodyCount(), impl.names.size(), loop_params.rate,
            impl.sim_time ? "simulated time" : "the wall clock", contactModelName(world_params.model));

@@ -1,6 +1,7 @@
 #include "god_finger/runtime/servo_loop.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/workspace_bound.h"
 #include "god_finger/runtime/servo_clock.h"
 
 #include <cmath>
@@ -126,7 +127,9 @@ void ServoLoop::prepare()
     ServoInterface& interface = interfaces_[i];
     interface.device->start();
     readings_[i] = interface.device->update(0.0, Eigen::Vector3d::Zero());
-    const Eigen::Vector3d start = interface.mapping.toWorld(readings_[i].position);
+    // Within the workspace (core/workspace_bound.h), as every later reading.
+    const Eigen::Vector3d start = interface.mapping.toWorld(
+        boundToWorkspace(readings_[i].position, interface.profile, interface.mapping).position);
     if (!start.allFinite())
     {
       throw DeviceError("interface '" + interface.name + "': the device's first position is not finite");
@@ -189,7 +192,10 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   if (why.empty())
   {
     std::lock_guard<std::mutex> lock(post_mutex_);
-    SpscQueue<ServoCommand>& queue = command.kind == ServoCommand::Kind::kHandTarget ? hand_commands_ : commands_;
+    const bool haptic_side = command.kind == ServoCommand::Kind::kHandTarget ||
+                             command.kind == ServoCommand::Kind::kStopForce ||
+                             command.kind == ServoCommand::Kind::kResumeForce;
+    SpscQueue<ServoCommand>& queue = haptic_side ? hand_commands_ : commands_;
     if (!queue.tryPush(command))
     {
       why = "the servo loop's command queue is full";
@@ -202,14 +208,32 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   return why.empty();
 }
 
-void ServoLoop::applyHandTargets()
+void ServoLoop::applyHandTargets(double time)
 {
   ServoCommand command;
   while (hand_commands_.tryPop(&command))
   {
     ++counters_.commands;
-    interfaces_[command.interface].device->setHandTarget(command.hand_target);
+    if (command.kind == ServoCommand::Kind::kStopForce)
+    {
+      for (ForceGuard& guard : guards_)
+      {
+        guard.stop();
+      }
+    }
+    else if (command.kind == ServoCommand::Kind::kResumeForce)
+    {
+      for (ForceGuard& guard : guards_)
+      {
+        guard.resume(time);
+      }
+    }
+    else
+    {
+      interfaces_[command.interface].device->setHandTarget(command.hand_target);
+    }
   }
+  counters_.force_stopped = !guards_.empty() && guards_[0].stopped();
 }
 
 void ServoLoop::applyWorldCommands()
@@ -230,6 +254,8 @@ void ServoLoop::applyWorldCommands()
         world_->resetAtInterfaces();
         break;
       case ServoCommand::Kind::kHandTarget:  // never queued here (post() sends them to the haptic side)
+      case ServoCommand::Kind::kStopForce:
+      case ServoCommand::Kind::kResumeForce:
         break;
     }
   }
@@ -254,13 +280,16 @@ void ServoLoop::readDevices(double time)
   const double dt = 1.0 / params_.rate;
   bool cycle_model = false;
   bool reset = false;
+  bool toggle_stop = false;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
     ServoInterface& interface = interfaces_[i];
     applied_[i] = guards_[i].output(time);
     const DeviceReading reading = interface.device->update(time, applied_[i]);
     read_at_[i] = steadySeconds();
-    const Eigen::Vector3d target = interface.mapping.toWorld(reading.position);
+    // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
+    const WorkspaceBound bound = boundToWorkspace(reading.position, interface.profile, interface.mapping);
+    const Eigen::Vector3d target = interface.mapping.toWorld(bound.position);
     Render& render = render_[i];
     render.previous_target = render.target;
     // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
@@ -270,10 +299,12 @@ void ServoLoop::readDevices(double time)
     {
       readings_[i] = reading;
       render.target = target;
+      render.wall_force = bound.wall_force;
       const std::uint32_t pressed = reading.buttons & ~buttons_[i];
       buttons_[i] = reading.buttons;
       cycle_model = cycle_model || (pressed & 1u);
       reset = reset || (pressed & 2u);
+      toggle_stop = toggle_stop || (pressed & 4u);
     }
     else
     {
@@ -283,6 +314,15 @@ void ServoLoop::readDevices(double time)
     render.velocity = (render.target - render.previous_target) / dt;
     frame_.targets[i] = render.target;  // always finite
     frame_.velocities[i] = render.velocity;
+  }
+  if (toggle_stop)  // button 2: stop every device's force, or resume it (soft start)
+  {
+    const bool stop = !guards_.empty() && !guards_[0].stopped();
+    for (ForceGuard& guard : guards_)
+    {
+      stop ? guard.stop() : guard.resume(time);
+    }
+    counters_.force_stopped = stop;
   }
   cycle_presses_ += cycle_model ? 1 : 0;
   reset_presses_ += reset ? 1 : 0;
@@ -426,7 +466,7 @@ void ServoLoop::decide(long tick, double time, double period_us)
       }
     }
     render.force = force;
-    if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force)))
+    if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force) + render.wall_force))
     {
       ++counters_.rejected_forces;
     }
@@ -442,7 +482,7 @@ void ServoLoop::decide(long tick, double time, double period_us)
     sample->interface = static_cast<int>(i);
     sample->reading = readings_[i];
     sample->applied_force = applied_[i];
-    sample->commanded_force = guards_[i].output(time);
+    sample->commanded_force = guards_[i].commanded();
     sample->interface_position = render.target;
     sample->proxy_position = proxy.proxy_position;
     sample->user_force = force;
@@ -478,7 +518,7 @@ void ServoLoop::tick(double time)
       pending_ = false;
     }
     readDevices(time);
-    applyHandTargets();
+    applyHandTargets(time);
     targets_box_->back() = frame_;  // same lengths: no allocation
     targets_box_->publish();
     sem_post(&physics_wake_);
@@ -489,7 +529,7 @@ void ServoLoop::tick(double time)
   else
   {
     readDevices(time);
-    applyHandTargets();
+    applyHandTargets(time);
     physicsInline();
     decide(tick_, time, period_us);
   }

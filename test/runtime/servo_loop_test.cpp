@@ -148,7 +148,10 @@ TEST(ServoLoop, SimulatedTimeGivesTheSameTrajectoryBitForBit)
 TEST(ServoLoop, TheHandFeelsTheReactionOfTheForceThatPullsTheProxy)
 {
   // config/devices/falcon.yaml's coupling and force limit, not the world's default.
-  const DeviceProfile falcon = test::shippedDeviceProfile("falcon");
+  DeviceProfile falcon = test::shippedDeviceProfile("falcon");
+  // The fake hand's script lies in the fake device's workspace (z up to 0.1 m), not in the
+  // Falcon's 5 cm: the case is about the coupling, so the Falcon's wall stays out of it.
+  falcon.workspace_radius = test::shippedDeviceProfile("fake").workspace_radius;
   const double k = falcon.coupling.stiffness;
   const double max_force = falcon.guard.max_force;
   ASSERT_NE(k, WorldParams().coupling.stiffness) << "the case would not show which coupling the loop uses";
@@ -408,6 +411,104 @@ TEST(ServoLoop, RealTimeThreadRunsNeverAheadOfItsSchedule)
   EXPECT_GE(ticks, 500) << "the loop ran " << ticks << " ticks in " << elapsed << " s";
   EXPECT_LE(ticks, elapsed / loop.period() + 1.001) << "the loop ran ahead of its schedule";  // + rounding
   EXPECT_EQ(samples + loop.counters().dropped_samples.load(), ticks);
+}
+
+// Issue 18: a reading twice the workspace radius away is clamped onto the workspace for the
+// world (the proxy stays inside) and the hand feels a wall pushing it back in.
+TEST(ServoLoop, AReadingOutsideTheWorkspaceIsClampedAndPushedBack)
+{
+  DeviceProfile profile;
+  profile.workspace_radius = 0.1;  // m; the hand at 0.2 m, straight up, over free space
+  auto device = std::make_unique<ScriptedDevice>();
+  device->position = [](double) { return Eigen::Vector3d(0, 0, 0.2); };
+  ScriptedDevice* hand = device.get();
+  auto loop = makeLoop(std::move(device), profile);
+  runTicks(*loop, 700);  // past the soft start (0.5 s)
+  ServoSample sample;
+  ServoSample last;
+  while (loop->samples().tryPop(&sample))
+  {
+    ASSERT_LE(sample.interface_position.norm(), 0.1 + 1e-12) << "tick " << sample.tick;
+    ASSERT_LE(sample.proxy_position.norm(), 0.1 + 1e-3) << "tick " << sample.tick;
+    last = sample;
+  }
+  EXPECT_TRUE(last.interface_position.isApprox(Eigen::Vector3d(0, 0, 0.1)));
+  // The wall: k_c (0.2 - 0.1) = 40 N down, saturated to max_force; the proxy exerts nothing.
+  const double max_force = profile.guard.max_force;
+  EXPECT_NEAR(last.commanded_force.z(), -max_force, 1e-9);
+  EXPECT_NEAR(last.commanded_force.head<2>().norm(), 0.0, 1e-9);
+  EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);  // applied, the soft start over
+}
+
+// Issue 18: kStopForce zeroes every device's force at once; kResumeForce brings it back with the
+// soft start.
+TEST(ServoLoop, StopForceZeroesAndResumeRampsIn)
+{
+  DeviceProfile profile;
+  profile.workspace_radius = 0.1;
+  auto device = std::make_unique<ScriptedDevice>();
+  device->position = [](double) { return Eigen::Vector3d(0, 0, 0.2); };  // the wall: a constant force
+  ScriptedDevice* hand = device.get();
+  auto loop = makeLoop(std::move(device), profile);
+  const double max_force = profile.guard.max_force;
+  runTicks(*loop, 700);
+  EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);
+  ServoCommand stop;
+  stop.kind = ServoCommand::Kind::kStopForce;
+  ASSERT_TRUE(loop->post(stop));
+  runTicks(*loop, 1, 700);  // the stop is taken at this tick; its force is applied at the next
+  for (int k = 701; k < 900; ++k)
+  {
+    loop->tick(k * loop->period());
+    ASSERT_EQ(hand->last_force, Eigen::Vector3d::Zero()) << "tick " << k;
+  }
+  EXPECT_TRUE(loop->counters().force_stopped);
+  ServoCommand resume;
+  resume.kind = ServoCommand::Kind::kResumeForce;
+  ASSERT_TRUE(loop->post(resume));
+  const double resumed = 900 * loop->period();
+  for (int k = 900; k < 1500; ++k)
+  {
+    loop->tick(k * loop->period());
+    const double expected = max_force * std::min(1.0, (k * loop->period() - resumed) / profile.guard.soft_start);
+    ASSERT_LE(-hand->last_force.z(), expected + 1e-9) << "tick " << k;
+    drain(*loop);
+  }
+  EXPECT_FALSE(loop->counters().force_stopped);
+  EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);
+}
+
+// Button 2 (where the device has one) toggles the stop: zero at once, then the soft start.
+TEST(ServoLoop, ButtonTwoStopsAndResumesTheForce)
+{
+  DeviceProfile profile;
+  profile.workspace_radius = 0.1;
+  auto device = std::make_unique<ScriptedDevice>();
+  device->position = [](double) { return Eigen::Vector3d(0, 0, 0.2); };  // the wall: a constant force
+  device->buttons = [](double t) { return (t >= 0.7 && t < 0.72) || (t >= 0.9 && t < 0.92) ? 4u : 0u; };
+  ScriptedDevice* hand = device.get();
+  auto loop = makeLoop(std::move(device), profile);
+  const double max_force = profile.guard.max_force;
+  runTicks(*loop, 700);
+  drain(*loop);
+  EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);
+  runTicks(*loop, 2, 700);  // pressed at tick 700; its zero is applied at tick 701
+  for (int k = 702; k < 900; ++k)
+  {
+    loop->tick(k * loop->period());
+    ASSERT_EQ(hand->last_force, Eigen::Vector3d::Zero()) << "tick " << k;
+  }
+  drain(*loop);
+  EXPECT_TRUE(loop->counters().force_stopped);
+  for (int k = 900; k < 1500; ++k)  // pressed again at tick 900: resumes from there
+  {
+    loop->tick(k * loop->period());
+    const double expected = max_force * std::min(1.0, (k - 900) * loop->period() / profile.guard.soft_start);
+    ASSERT_LE(-hand->last_force.z(), expected + 1e-9) << "tick " << k;
+    drain(*loop);
+  }
+  EXPECT_FALSE(loop->counters().force_stopped);
+  EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);
 }
 }  // namespace
 }  // namespace god_finger

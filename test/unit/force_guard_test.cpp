@@ -1,4 +1,5 @@
-// ForceGuard: saturation, NaN/Inf rejection, the watchdog's ramp to zero within ramp_time.
+// ForceGuard: saturation, NaN/Inf rejection, the watchdog's ramp to zero within ramp_time, the
+// soft start, the rate limit, stop and resume, the continuous (thermal-like) budget.
 #include "god_finger/core/force_guard.h"
 #include "god_finger/core/input_error.h"
 
@@ -10,23 +11,35 @@ namespace god_finger
 {
 namespace
 {
-TEST(ForceGuard, SaturatesKeepingTheDirection)
+// The rules that are not under test off: no soft start, a rate limit that never binds.
+ForceGuardParams immediate()
 {
   ForceGuardParams params;
+  params.soft_start = 0.0;
+  params.max_force_rate = 1e6;
+  return params;
+}
+
+TEST(ForceGuard, SaturatesKeepingTheDirection)
+{
+  ForceGuardParams params = immediate();
   params.max_force = 3.3;
   ForceGuard guard(params);
+  guard.output(0.0);
   EXPECT_TRUE(guard.command(0.0, Eigen::Vector3d(3.0, 4.0, 0.0)));
-  const Eigen::Vector3d out = guard.output(0.0);
+  EXPECT_NEAR(guard.commanded().norm(), 3.3, 1e-12);
+  const Eigen::Vector3d out = guard.output(0.001);
   EXPECT_NEAR(out.norm(), 3.3, 1e-12);
   EXPECT_NEAR(out.x() / out.y(), 0.75, 1e-12);
   EXPECT_EQ(guard.saturated(), 1);
   EXPECT_TRUE(guard.command(0.001, Eigen::Vector3d(1.0, 0.0, 0.0)));
-  EXPECT_EQ(guard.output(0.001), Eigen::Vector3d(1.0, 0.0, 0.0));
+  EXPECT_EQ(guard.output(0.002), Eigen::Vector3d(1.0, 0.0, 0.0));
 }
 
 TEST(ForceGuard, RejectsNonFiniteCommandsAndKeepsTheLastGoodOne)
 {
-  ForceGuard guard(ForceGuardParams{});
+  ForceGuard guard(immediate());
+  guard.output(0.0);
   guard.command(0.0, Eigen::Vector3d(1, 2, 3));
   EXPECT_FALSE(guard.command(0.001, Eigen::Vector3d(NAN, 0, 0)));
   EXPECT_FALSE(guard.command(0.002, Eigen::Vector3d(0, INFINITY, 0)));
@@ -43,8 +56,9 @@ TEST(ForceGuard, NothingBeforeTheFirstCommand)
 
 TEST(ForceGuard, WatchdogRampsToZeroWithinRampTimeAfterTheTimeout)
 {
-  ForceGuardParams params;  // 20 ms timeout, 10 ms ramp
+  ForceGuardParams params = immediate();  // 20 ms timeout, 10 ms ramp
   ForceGuard guard(params);
+  guard.output(0.999);
   guard.command(1.0, Eigen::Vector3d(0, 0, 4.0));
   EXPECT_EQ(guard.output(1.0 + 0.0199), Eigen::Vector3d(0, 0, 4.0));  // up to the timeout: full
   EXPECT_FALSE(guard.timedOut(1.0199));
@@ -52,9 +66,9 @@ TEST(ForceGuard, WatchdogRampsToZeroWithinRampTimeAfterTheTimeout)
   EXPECT_TRUE(guard.timedOut(1.025));
   EXPECT_EQ(guard.output(1.0 + 0.030 + 1e-9), Eigen::Vector3d::Zero());  // zero 10 ms after the timeout
   EXPECT_EQ(guard.output(100.0), Eigen::Vector3d::Zero());
-  // A new command applies at once.
+  // A new command applies at the next output (no soft start here; see ResumesWithTheSoftStart).
   guard.command(100.0, Eigen::Vector3d(1, 0, 0));
-  EXPECT_EQ(guard.output(100.0), Eigen::Vector3d(1, 0, 0));
+  EXPECT_EQ(guard.output(100.001), Eigen::Vector3d(1, 0, 0));
   // The output never exceeds the last command along the ramp.
   for (double t = 100.0; t < 100.05; t += 1e-4)
   {
@@ -74,6 +88,172 @@ TEST(ForceGuard, BadParametersAreNamed)
   params = ForceGuardParams();
   params.ramp_time = NAN;
   EXPECT_EQ(validate(params), "parameter 'ramp_time' = nan is out of range (0, 1] (s)");
+  params = ForceGuardParams();
+  params.soft_start = -0.1;
+  EXPECT_EQ(validate(params), "parameter 'soft_start' = -0.1 is out of range [0, 10] (s)");
+  params = ForceGuardParams();
+  params.max_force_rate = 0.0;
+  EXPECT_EQ(validate(params), "parameter 'max_force_rate' = 0 is out of range (0, 1000000] (N/s)");
+}
+
+constexpr double kPeriod = 1e-3;
+
+TEST(ForceGuard, SoftStartRampsInFromZero)
+{
+  ForceGuardParams params;  // soft_start 0.5 s, 1e4 N/s
+  ForceGuard guard(params);
+  const Eigen::Vector3d command(0, 0, 5.0);
+  double previous = 0.0;
+  for (int k = 0; k <= 600; ++k)
+  {
+    const double t = k * kPeriod;
+    const double out = guard.output(t).z();
+    if (k == 0)
+    {
+      EXPECT_EQ(out, 0.0);  // nothing before the first command
+    }
+    guard.command(t, command);
+    if (k == 1)
+    {
+      EXPECT_NEAR(out, 5.0 * kPeriod / 0.5, 1e-9);  // the ramp's first step, not the command
+    }
+    EXPECT_GE(out, previous - 1e-12) << "monotonic ramp, tick " << k;
+    EXPECT_LE(out, 5.0 * t / 0.5 + 1e-9) << "tick " << k;
+    if (k == 500)
+    {
+      EXPECT_NEAR(out, 5.0, 1e-9);  // reached at soft_start
+    }
+    previous = out;
+  }
+  EXPECT_EQ(guard.output(0.6001).z(), 5.0);  // the command since soft_start (0.5 s)
+}
+
+TEST(ForceGuard, RateLimitBoundsEveryStep)
+{
+  ForceGuardParams params;
+  params.soft_start = 0.0;
+  params.max_force = 8.0;
+  params.max_force_rate = 1000.0;  // 1 N per ms
+  ForceGuard guard(params);
+  Eigen::Vector3d last = guard.output(0.0);
+  double largest = 0.0;
+  bool reached = false;
+  for (int k = 0; k < 100; ++k)
+  {
+    const double t = k * kPeriod;
+    // Steps of 8 N back and forth every 20 ms, and a sideways jump.
+    const Eigen::Vector3d command = (k / 20) % 2 == 0 ? Eigen::Vector3d(8, 0, 0) : Eigen::Vector3d(0, -8, 0);
+    guard.command(t, command);
+    const Eigen::Vector3d out = guard.output(t + kPeriod);
+    largest = std::max(largest, (out - last).norm());
+    reached = reached || (out - command).norm() < 1e-9;
+    last = out;
+  }
+  EXPECT_LE(largest, 1.0 + 1e-9);
+  EXPECT_GT(largest, 0.999);  // it did bind
+  EXPECT_TRUE(reached);       // and the command is reached (8 N in 8 ms, within the 20 ms)
+}
+
+TEST(ForceGuard, StopZeroesAtOnceAndResumeRampsIn)
+{
+  ForceGuardParams params;  // soft_start 0.5 s
+  ForceGuard guard(params);
+  const Eigen::Vector3d command(2, 0, 0);
+  double t = 0.0;
+  for (; t < 1.0; t += kPeriod)
+  {
+    guard.command(t, command);
+    guard.output(t);
+  }
+  EXPECT_EQ(guard.output(t), command);
+  guard.stop();
+  EXPECT_TRUE(guard.stopped());
+  EXPECT_EQ(guard.output(t), Eigen::Vector3d::Zero());  // at once, even at the same time
+  for (; t < 2.0; t += kPeriod)
+  {
+    guard.command(t, command);
+    ASSERT_EQ(guard.output(t), Eigen::Vector3d::Zero()) << t;
+  }
+  const double resumed = t;
+  guard.resume(resumed);
+  EXPECT_FALSE(guard.stopped());
+  for (; t < resumed + 0.6; t += kPeriod)
+  {
+    guard.command(t, command);
+    const double out = guard.output(t).x();
+    ASSERT_LE(out, 2.0 * (t - resumed) / 0.5 + 1e-9) << t;  // the soft start again
+  }
+  EXPECT_EQ(guard.output(t), command);
+}
+
+TEST(ForceGuard, ResumesWithTheSoftStartAfterTheWatchdog)
+{
+  ForceGuardParams params;
+  ForceGuard guard(params);
+  for (double t = 0.0; t < 1.0; t += kPeriod)
+  {
+    guard.command(t, Eigen::Vector3d(0, 1, 0));
+    guard.output(t);
+  }
+  EXPECT_EQ(guard.output(1.0).y(), 1.0);
+  EXPECT_EQ(guard.output(2.0).y(), 0.0);  // watchdog
+  guard.command(2.0, Eigen::Vector3d(0, 1, 0));
+  EXPECT_NEAR(guard.output(2.001).y(), kPeriod / 0.5, 1e-9);  // not the step
+}
+
+// The Omni: 3.3 N peak, 0.88 N continuous, tau 10 s.
+ForceGuardParams omni()
+{
+  ForceGuardParams params;
+  params.soft_start = 0.0;
+  params.max_force = 3.3;
+  params.max_force_rate = 1000.0;
+  params.continuous_force = 0.88;
+  params.thermal_time_constant = 10.0;
+  return params;
+}
+
+TEST(ForceGuard, HeldPeakFallsToTheContinuousLimit)
+{
+  ForceGuard guard(omni());
+  guard.output(0.0);
+  // From cold, a held F may stay over Fc for tau ln(F^2 / (F^2 - Fc^2)): 0.90 s for 3 N.
+  const double budget = 10.0 * std::log(9.0 / (9.0 - 0.88 * 0.88));
+  double t = 0.0;
+  double over_until = 0.0;
+  for (int k = 1; k <= 3000; ++k)
+  {
+    t = k * kPeriod;
+    guard.command(t, Eigen::Vector3d(3.0, 0, 0));
+    const double out = guard.output(t).norm();
+    ASSERT_LE(out, 3.0 + 1e-12);
+    if (out > 0.88 + 1e-6)
+    {
+      over_until = t;
+    }
+  }
+  EXPECT_GT(over_until, budget - 0.05);  // the peak allowance was used
+  EXPECT_LE(over_until, budget + 0.05);  // and no longer
+  EXPECT_NEAR(guard.output(t + kPeriod).norm(), 0.88, 1e-3);
+  EXPECT_LE(guard.thermalLoad(), 0.88 * 0.88 + 0.01);
+  EXPECT_GT(guard.budgetLimited(), 0);
+}
+
+TEST(ForceGuard, ShortPeakPassesTheContinuousLimit)
+{
+  ForceGuard guard(omni());
+  guard.output(0.0);
+  for (int k = 1; k <= 200; ++k)  // 0.2 s of 3 N
+  {
+    const double t = k * kPeriod;
+    guard.command(t, Eigen::Vector3d(0, 0, -3.0));
+    const Eigen::Vector3d out = guard.output(t);
+    if (k > 3)  // after the rate limit's 3 ms
+    {
+      ASSERT_EQ(out, Eigen::Vector3d(0, 0, -3.0)) << k;
+    }
+  }
+  EXPECT_EQ(guard.budgetLimited(), 0);
 }
 }  // namespace
 }  // namespace god_finger

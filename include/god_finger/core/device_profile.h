@@ -15,7 +15,9 @@ struct DeviceProfile
   // coupling.max_force is the device's force limit too (guard.max_force is set equal to it).
   CouplingProfile coupling;
   ForceGuardParams guard;
-  double workspace_radius = 0.15;  // m: the workspace the scripts stay within
+  // m, device frame, from the workspace centre (the device origin): readings beyond it are
+  // clamped onto it and the hand feels a wall (core/workspace_bound.h). Scripts stay within it.
+  double workspace_radius = 0.5;
 };
 
 // The coupling's rows, the guard's and workspace_radius: what config/devices/NAME.yaml may set.

@@ -6,8 +6,12 @@
 // The haptic side, every period:
 //   1. commands each device a force (below), through its guard (saturation, NaN rejection,
 //      watchdog), and applies it at this period's update, which reads the device;
-//   2. maps each reading into the world (the interface target) and hands the targets and the
-//      buttons' presses (0: next contact model, 1: reset) to the physics; applies the
+//   2. bounds each reading to the profile's workspace_radius (core/workspace_bound.h: a reading
+//      beyond it is clamped and its wall force added to the next command), maps it into the
+//      world (the interface target) and hands the targets and the
+//      buttons' presses (0: next contact model, 1: reset) to the physics (button 2, where
+//      the device has one, e.g. the Falcon's third, stops every device's force or resumes it
+//      with the soft start, as kStopForce / kResumeForce); applies the
 //      hand-target commands. A reading whose position, mapped position or velocity is not
 //      finite is rejected whole and counted once (rejected_readings), as the topic topologies'
 //      haptic node does: its buttons press nothing, the physics gets the last good target
@@ -132,9 +136,11 @@ struct ServoSample
   long tick = 0;
   double time = 0.0;  // s, the loop clock's (simulated time, or seconds since the loop began)
   int interface = 0;
-  DeviceReading reading;                                         // device frame; the last finite one
-  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();       // N, device frame, applied at this tick
-  Eigen::Vector3d commanded_force = Eigen::Vector3d::Zero();     // N, device frame, for the next tick
+  DeviceReading reading;                                    // device frame; the last finite one
+  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();  // N, device frame, applied at this tick
+  // N, device frame: the command for the next tick, the guard's input (saturated, before the
+  // watchdog, soft start, continuous budget, rate limit and stop that give the next applied_force).
+  Eigen::Vector3d commanded_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();  // m, world (the device mapped)
   Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();      // m, world
   Eigen::Vector3d user_force = Eigen::Vector3d::Zero();          // N, world: the coupling's reaction
@@ -159,6 +165,8 @@ struct ServoCommand
     kSetContactParams,
     kReset,
     kHandTarget,
+    kStopForce,    // every guard's output to zero at once (ForceGuard::stop), haptic side
+    kResumeForce,  // force back with the soft start (ForceGuard::resume)
   };
   Kind kind = Kind::kReset;
   ContactModel model = ContactModel::kGodFinger;
@@ -181,8 +189,9 @@ struct ServoCounters
   std::atomic<long> physics_steps{0};    // steps taken
   std::atomic<long> skipped_targets{0};  // targets the physics skipped, being late
   std::atomic<int> model{static_cast<int>(ContactModel::kGodFinger)};
-  std::atomic<bool> realtime{false};  // the haptic thread got SCHED_FIFO
-  std::atomic<bool> failed{false};    // a device failed; the loop stopped
+  std::atomic<bool> realtime{false};       // the haptic thread got SCHED_FIFO
+  std::atomic<bool> failed{false};         // a device failed; the loop stopped
+  std::atomic<bool> force_stopped{false};  // kStopForce applied, no kResumeForce since
 };
 
 class ServoLoop
@@ -280,13 +289,15 @@ class ServoLoop
     Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
     Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // m
     Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N on the hand, the last decided
-    bool exact = true;                                 // the force is the step's reaction
-    bool stale = false;                                // the last decision's
-    double ready_at = 0.0;                             // s, wall: when the last decision's force was ready
+    Eigen::Vector3d wall_force =
+        Eigen::Vector3d::Zero();  // N, device frame: the workspace wall (core/workspace_bound.h)
+    bool exact = true;            // the force is the step's reaction
+    bool stale = false;           // the last decision's
+    double ready_at = 0.0;        // s, wall: when the last decision's force was ready
   };
 
   void readDevices(double time);
-  void applyHandTargets();
+  void applyHandTargets(double time);  // hand targets, force stop and resume; loop time (s)
   void applyWorldCommands();
   // Physics side: one step with `frame`'s targets; fills `out`.
   void stepFrame(const TargetFrame& frame, StepResult* out);
