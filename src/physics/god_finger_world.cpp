@@ -846,7 +846,7 @@ int GodFingerWorld::addInterface(const Eigen::Vector3d& position)
   return addInterface(position, impl_->params.coupling);
 }
 
-int GodFingerWorld::addInterface(const Eigen::Vector3d& position, const CouplingProfile& coupling)
+int GodFingerWorld::addInterface(const Eigen::Vector3d& position, const CouplingProfile& coupling, bool allow_inside)
 {
   if (!position.allFinite())
   {
@@ -866,7 +866,7 @@ int GodFingerWorld::addInterface(const Eigen::Vector3d& position, const Coupling
   // lifted out, since lifting it would stretch the coupling at once and throw the hand out of the
   // body at the force limit; the user moves the device or its workspace_offset instead.
   const std::pair<int, double> overlap = impl_->deepestOverlap(position);
-  if (overlap.first >= 0 && overlap.second >= impl_->params.coupling.proxy_radius)
+  if (!allow_inside && overlap.first >= 0 && overlap.second >= impl_->params.coupling.proxy_radius)
   {
     std::ostringstream message;
     message << "interface " << impl_->proxies.size() << " would start inside body '"

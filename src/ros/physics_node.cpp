@@ -186,13 +186,29 @@ struct PhysicsNode::Impl
       {
         try
         {
-          interface.index = world->addInterface(interface.target, interface.coupling);
+          try
+          {
+            interface.index = world->addInterface(interface.target, interface.coupling);
+          }
+          catch (const InputError& inside)
+          {
+            if (std::string(inside.what()).find("would start inside body") == std::string::npos)
+            {
+              throw;
+            }
+            // The hand is inside a body: this node started (or respawned) under a hand that
+            // presses an object. Refusing would leave the hand without force until it withdraws;
+            // the proxy starts at the hand, the solver pushes it out, and the device's guard ramps
+            // the force in (its watchdog tripped while this node was away).
+            ROS_WARN("physics: interface '%s': %s; started there anyway (a running session)", interface.name.c_str(),
+                     inside.what());
+            interface.index = world->addInterface(interface.target, interface.coupling, true);
+          }
         }
         catch (const std::exception& error)
         {
-          // A profile unstable at this rate and proxy mass (read after start-up), or a hand that
-          // starts inside a body: refused, and tried again at the next pose (the proxy appears
-          // once the hand is outside every body).
+          // A profile unstable at this rate and proxy mass (read after start-up): refused, and
+          // tried again at the next pose.
           ROS_ERROR_THROTTLE(1.0, "physics: interface '%s' refused: %s", interface.name.c_str(), error.what());
           interface.have_target = false;
           continue;

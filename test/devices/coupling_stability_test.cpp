@@ -21,7 +21,8 @@ namespace god_finger
 {
 namespace
 {
-// The numbers of a flat `key: value  # comment` YAML file, as the parameters a launch loads.
+// The numbers of a flat `key: value  # comment` YAML file, as the parameters a launch loads
+// (lists such as workspace_offset are not this test's and are left out).
 MapParameterSource readProfile(const std::string& path)
 {
   std::ifstream file(path);
@@ -30,7 +31,7 @@ MapParameterSource readProfile(const std::string& path)
   while (std::getline(file, line))
   {
     const auto colon = line.find(':');
-    if (line.empty() || line[0] == '#' || colon == std::string::npos)
+    if (line.empty() || line[0] == '#' || colon == std::string::npos || line.find('[', colon) < line.find('#', colon))
     {
       continue;
     }

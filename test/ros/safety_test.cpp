@@ -16,6 +16,7 @@
 #include <god_finger/DeviceState.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -219,28 +220,69 @@ TEST_F(Safety, NonFiniteInputIsRejectedCountedAndNeverPassedOn)
       },
       10.0, "the three rejection counts on /diagnostics");
   const long downstream_before = g_non_finite_downstream;
+  // One bad message of each kind a round, and the next round once /diagnostics counted all three
+  // (each receiving queue also takes the loop's own 1 kHz stream, and a queue that is full drops
+  // a message: counted exactly, a dropped one would fail the test for ROS's reason). A kind not
+  // counted within 3 s (three diagnostics periods) was dropped and is sent again.
+  const auto send = [&](int kind, int i)
+  {
+    if (kind == 0)
+    {
+      geometry_msgs::PoseStamped pose;
+      pose.header.stamp = kInjectedPose;
+      pose.header.frame_id = "world";
+      pose.pose.position.x = NAN;
+      pose.pose.orientation.w = 1.0;
+      poses.publish(pose);
+    }
+    else if (kind == 1)
+    {
+      geometry_msgs::Vector3Stamped force;
+      force.vector.z = (i % 2) ? INFINITY : NAN;
+      forces.publish(force);
+    }
+    else
+    {
+      god_finger::DeviceState state;
+      state.header.stamp = kInjectedState;
+      state.position.y = NAN;
+      states.publish(state);
+    }
+  };
+  const auto counts = [&]
+  {
+    return std::array<long, 3>{diagnostic("/physics: physics loop", "rejected_poses") - poses_before,
+                               diagnostic("/finger/device_driver: fake device", "rejected_commands") - forces_before,
+                               diagnostic("/finger/haptic: haptic", "rejected_states") - states_before};
+  };
   for (int i = 0; i < 10; ++i)
   {
-    geometry_msgs::PoseStamped pose;
-    pose.header.stamp = kInjectedPose;
-    pose.header.frame_id = "world";
-    pose.pose.position.x = NAN;
-    pose.pose.orientation.w = 1.0;
-    poses.publish(pose);
-    geometry_msgs::Vector3Stamped force;
-    force.vector.z = (i % 2) ? INFINITY : NAN;
-    forces.publish(force);
-    god_finger::DeviceState state;
-    state.header.stamp = kInjectedState;
-    state.position.y = NAN;
-    states.publish(state);
-    // Paces the injection (not a synchronisation): each receiving queue (10 messages) also
-    // takes the loop's own 1 kHz stream of the same topic, so the injected messages are spread
-    // out rather than sent in one burst that could crowd each other out of a queue.
-    ros::WallDuration(0.01).sleep();
+    for (int kind = 0; kind < 3; ++kind)
+    {
+      send(kind, i);
+    }
+    for (int attempt = 0; attempt < 5; ++attempt)
+    {
+      const ros::WallTime give_up = ros::WallTime::now() + ros::WallDuration(3.0);
+      std::array<long, 3> seen = counts();
+      while ((seen[0] <= i || seen[1] <= i || seen[2] <= i) && ros::WallTime::now() < give_up)
+      {
+        ros::WallDuration(0.005).sleep();  // polls /diagnostics within the deadline
+        seen = counts();
+      }
+      if (seen[0] > i && seen[1] > i && seen[2] > i)
+      {
+        break;
+      }
+      for (int kind = 0; kind < 3; ++kind)
+      {
+        if (seen[kind] <= i)
+        {
+          send(kind, i);
+        }
+      }
+    }
   }
-  // The counts reach the test on /diagnostics (once a second): wait until all three show the
-  // ten, then check that none counted more.
   long rejected_poses = -1;
   long rejected_forces = -1;
   long rejected_states = -1;

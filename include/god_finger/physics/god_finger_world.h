@@ -89,9 +89,11 @@ class GodFingerWorld
   // (params().coupling) or the device's own. Returns its index. Throws InputError on a
   // non-finite position, a bad profile, or one unstable at this time step and proxy mass, and
   // on a position inside a body (the proxy's centre in it): the message names the body and the
-  // position. A proxy never starts inside a body, and is never lifted out silently.
+  // position. A proxy never starts inside a body, and is never lifted out silently, unless
+  // `allow_inside` (the physics node respawning under a hand that presses an object: the solver
+  // pushes the proxy out, and the device's guard ramps the force in after its watchdog tripped).
   int addInterface(const Eigen::Vector3d& position);
-  int addInterface(const Eigen::Vector3d& position, const CouplingProfile& coupling);
+  int addInterface(const Eigen::Vector3d& position, const CouplingProfile& coupling, bool allow_inside = false);
   // The profile that pulls this interface's proxy (the hand must feel the same).
   const CouplingProfile& coupling(int interface) const;
   // The device's position in the world for the next step; non-finite values are ignored
