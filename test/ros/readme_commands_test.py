@@ -3,33 +3,20 @@
 -n 1 /tf` (which needs the Python module of tf2_msgs) and `rosservice call /reset_scene` (which
 needs std_srvs'): scripts/setup installs both. Each command exits 0 and prints what a user
 expects. Nothing sleeps to synchronise: each waits on its condition, with a deadline."""
-import subprocess
 import sys
-import time
 import unittest
 
 import rospy
 import rostest
+from ros_test_support import RosTestSupport
 from tf2_msgs.msg import TFMessage
 
 
-class ReadmeCommands(unittest.TestCase):
+class ReadmeCommands(RosTestSupport, unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         rospy.init_node("readme_commands_test")
 
-    def wait_for(self, condition, seconds, what):
-        deadline = time.time() + seconds
-        while not condition() and time.time() < deadline:
-            time.sleep(0.05)
-        self.assertTrue(condition(), "waited %.0f s for %s" % (seconds, what))
-
-    def run_command(self, command):
-        """Runs `command` (a list) as typed in the README; asserts it exits 0; returns its output."""
-        done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60,
-                              universal_newlines=True)
-        self.assertEqual(done.returncode, 0, "%s failed:\n%s" % (" ".join(command), done.stdout))
-        return done.stdout
 
     def test_rostopic_echo_tf(self):
         frames = set()

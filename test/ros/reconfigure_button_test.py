@@ -4,16 +4,16 @@ pressed once, god_finger -> soft_finger); dynamic_reconfigure then shows soft_fi
 later `dynparam set /servo r_max 0.006` keeps it (it once switched the model back)."""
 import subprocess
 import sys
-import time
 import unittest
 
 import dynamic_reconfigure.client
 import rospy
 import rostest
+from ros_test_support import RosTestSupport
 from diagnostic_msgs.msg import DiagnosticArray
 
 
-class ReconfigureButton(unittest.TestCase):
+class ReconfigureButton(RosTestSupport, unittest.TestCase):
     def setUp(self):
         rospy.init_node("reconfigure_button_test")
         self.model = None
@@ -27,11 +27,6 @@ class ReconfigureButton(unittest.TestCase):
                     self.model = pair.value
                     self.diagnostics += 1
 
-    def wait_for(self, condition, seconds, what):
-        deadline = time.time() + seconds
-        while not condition() and time.time() < deadline:
-            time.sleep(0.05)
-        self.assertTrue(condition(), "waited %.0f s for %s" % (seconds, what))
 
     def test_the_button_model_stays_through_a_reconfiguration(self):
         client = dynamic_reconfigure.client.Client("/servo", timeout=30)

@@ -5,19 +5,18 @@ ball; a smaller r_max shrinks the published contact area at once; the model swit
 walk variant is refused and the previous one stays. Then the user's sequence of issue 18: the
 set_contact_model service switches the model, and a later `dynparam set` of r_max keeps it (the
 server shows the model in force, and one entry's change resets no other)."""
-import subprocess
 import sys
-import time
 import unittest
 
 import dynamic_reconfigure.client
 import rospy
 import rostest
+from ros_test_support import RosTestSupport
 from diagnostic_msgs.msg import DiagnosticArray
 from god_finger.msg import ContactAreaArray
 
 
-class Reconfigure(unittest.TestCase):
+class Reconfigure(RosTestSupport, unittest.TestCase):
     def setUp(self):
         rospy.init_node("reconfigure_test")
         self.radius = None
@@ -37,18 +36,6 @@ class Reconfigure(unittest.TestCase):
                     self.model = pair.value
                     self.diagnostics += 1
 
-    def wait_for(self, condition, seconds, what):
-        deadline = time.time() + seconds
-        while not condition() and time.time() < deadline:
-            time.sleep(0.05)
-        self.assertTrue(condition(), "waited %.0f s for %s" % (seconds, what))
-
-    def run_command(self, command):
-        """Runs `command` (a list) as a user types it; asserts it succeeds; returns its output."""
-        done = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=60,
-                              universal_newlines=True)
-        self.assertEqual(done.returncode, 0, "%s failed:\n%s" % (" ".join(command), done.stdout))
-        return done.stdout
 
     def wait_for_diagnostics(self, count, what):
         """Waits for `count` more diagnostics messages (1 Hz): they show the loop after what was sent."""
