@@ -4,6 +4,7 @@
 #include "collision_shape.h"
 #include "contact_response.h"
 #include "dormant_bodies.h"
+#include "finger_contact_friction.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
@@ -830,6 +831,7 @@ GodFingerWorld::GodFingerWorld(const SceneDescription& scene, const WorldParams&
 {
   validateOrThrow(params);
   checkSceneFits(scene, params.walk_edge_per_max_radius * params.contact.max_radius);
+  useFingerRollingFriction();
   impl_->params = params;
   impl_->scene = scene;
   impl_->buildBodies();

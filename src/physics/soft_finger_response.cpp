@@ -1,4 +1,4 @@
-// soft_finger: the single point with Bullet's spinning and rolling friction (SoftFingerParams;
+// soft_finger: one point with a pad's torques through Bullet's spinning and rolling friction (SoftFingerParams;
 // Bullet's sequential impulse solver adds spinning friction only when rolling friction is set).
 #include "contact_response.h"
 

@@ -72,7 +72,7 @@ const ParameterTable<WorldParams>& worldParameterTable()
         realRow<P>("spinning_friction", "m", closed(0.0, 1.0), "soft_finger: Bullet's torsional friction at the point",
                    [](P& p) -> double& { return p.soft_finger.spinning_friction; }),
         realRow<P>("rolling_friction", "m", openClosed(0.0, 1.0),
-                   "soft_finger: Bullet's rolling friction (> 0 for spinning to act)",
+                   "soft_finger: the pad's tilt lever, torque about a tangent up to this times N (> 0 for spinning to act)",
                    [](P& p) -> double& { return p.soft_finger.rolling_friction; }),
         realRow<P>("pad_stiffness", "N/m", openClosed(0.0, 1e7), "the pad's stiffness at each contact point",
                    [](P& p) -> double& { return p.pad.stiffness; }),

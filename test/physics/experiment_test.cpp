@@ -48,8 +48,10 @@ TEST(Experiment, SlideBallRollsUnderGodObjectAndSlidesUnderGodFinger)
     EXPECT_GT(finger.metrics.at("translation_m"), 0.09);
   }
   EXPECT_GT(object.metrics.at("translation_m"), 0.05);
-  // Bullet's rolling friction at one point (1e-4 m) is far too small to stop the rolling.
-  EXPECT_GT(soft.metrics.at("rolling_ratio"), 0.9);
+  // The soft finger's pad resists the ball rolling under it up to its tilt lever times N
+  // (SoftFingerParams): the ball slides, as under a god-finger.
+  EXPECT_LT(soft.metrics.at("rolling_ratio"), 0.2);
+  EXPECT_GT(soft.metrics.at("translation_m"), 0.09);
 }
 
 // The paper: the god-finger "makes it easier to let it slide". Over a sweep of push heights,
@@ -91,13 +93,16 @@ TEST(Experiment, LiftOneHeldByGodFingerDroppedByGodObject)
     EXPECT_GE(finger.metrics.at("held_s"), 1.5);
     EXPECT_LT(finger.metrics.at("max_tilt_rad"), 0.02);
   }
-  for (ContactModel model : {ContactModel::kGodObject, ContactModel::kSoftFinger})
-  {
-    const ExperimentResult point = run(Scenario::kLiftOne, model);
-    EXPECT_EQ(point.metrics.at("dropped"), 1.0) << contactModelName(model);
-    EXPECT_EQ(point.metrics.at("held_s"), 0.0) << contactModelName(model);
-    EXPECT_GT(point.metrics.at("max_tilt_rad"), 0.5) << contactModelName(model);
-  }
+  const ExperimentResult point = run(Scenario::kLiftOne, ContactModel::kGodObject);
+  EXPECT_EQ(point.metrics.at("dropped"), 1.0);
+  EXPECT_EQ(point.metrics.at("held_s"), 0.0);
+  EXPECT_GT(point.metrics.at("max_tilt_rad"), 0.5);
+  // The soft finger's pad holds the plate's tilt (2 mm off centre: 0.5 mN m per 25 g) far
+  // below its lever times N.
+  const ExperimentResult soft = run(Scenario::kLiftOne, ContactModel::kSoftFinger);
+  EXPECT_EQ(soft.metrics.at("dropped"), 0.0);
+  EXPECT_NEAR(soft.metrics.at("lift_height_m"), 0.1, 0.005);
+  EXPECT_LT(soft.metrics.at("max_tilt_rad"), 0.02);
 }
 
 // Fig. 7: two fingers side by side under the plate, both 2 mm off its centre line: the plate

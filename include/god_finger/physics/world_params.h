@@ -21,13 +21,21 @@ struct CouplingParams : CouplingProfile
   double proxy_radius = 0.003;  // m
 };
 
-// The soft-finger baseline: Bullet's torsional and rolling friction at the single point.
-// Bullet multiplies the proxy's coefficient with the object's friction, and its sequential
-// impulse solver only adds spinning friction when the rolling friction is non-zero.
+// The soft-finger baseline: one contact point carrying a pad's torques through Bullet's
+// torsional rows. About the normal (spinning), Bullet multiplies the proxy's coefficient with
+// the object's friction: up to spinning_friction mu N. About a tangent (a tilt, or an object
+// rolling under the finger), the pad's centre of pressure stays inside the pad: up to
+// rolling_friction N, whatever mu (finger_contact_friction.h). Bullet's solver adds spinning
+// friction only where the rolling friction is non-zero.
+// Without the tilt lever (Bullet's 1e-4 m times mu) the point resists no tilt, and a pinch of
+// parallel faces by misaligned fingers is unstable: the couple N d of an offset d is held by
+// friction only by dragging the coupled proxies apart, which grows d by 2 s / w per round for
+// a coupling stretch s and a width w; beyond s = w / 2 the object turns over and squirts out
+// (pinch_grip_test).
 struct SoftFingerParams
 {
   double spinning_friction = 0.01;  // m
-  double rolling_friction = 1e-4;   // m: must be > 0 for spinning to act
+  double rolling_friction = 0.008;  // m: the pad's tilt lever, a fingertip's contact radius
 };
 
 // The finger pad's compliance at each contact point of a proxy (the true one and every
