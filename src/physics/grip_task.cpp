@@ -28,9 +28,12 @@ constexpr double kLower = kGripLift + 0.002;
 constexpr double kOpen = 0.04;        // m, each finger's distance from the bar's mid-plane, open
 constexpr double kGripHeight = 0.02;  // m
 
+// 0 before start, 1 after end, a minimum-jerk profile between (10 u^3 - 15 u^4 + 6 u^5): a
+// hand's reach starts and stops with zero velocity and acceleration.
 double ramp(double t, double start, double end)
 {
-  return std::clamp((t - start) / (end - start), 0.0, 1.0);
+  const double u = std::clamp((t - start) / (end - start), 0.0, 1.0);
+  return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
 }
 
 // Where the hand's grip centre is (without tremor) and how closed it is (0 open, 1 closed).

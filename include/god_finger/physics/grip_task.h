@@ -6,11 +6,11 @@
 // mu 0.8) lying on it, centred at the origin, long axis x. The fingers close along y on the
 // 3 cm faces at x = kGripOffset (3 cm off the centre, so gravity twists the bar about the pinch
 // normal by m g x = 44 mN m), z = 2 cm; the squeeze s is the coupling stretch across the pinch
-// (N = k s, k = 400 N/m by default). Script (s): close in 1, wait 0.5, lift 10 cm in 1.5 (lift
-// and hold: in 2, then hold until 6); pick and place: carry 15 cm along -x in 2, lower 10.2 cm
-// in 1.5, wait 0.5, open in 0.5, rise 5 cm in 0.5, end at 8.5; the target is the bar's centre
-// at (-0.15, 0, 0.02). Deterministic: the same options give the same result, bit for bit.
-// Units SI, frames world (z up). Not real-time (builds a world).
+// (N = k s, k = 400 N/m by default). Script (s; every move a minimum-jerk profile): close in 1, wait 0.5, lift 10 cm
+// in 1.5 (lift and hold: in 2, then hold until 6); pick and place: carry 15 cm along -x in 2, lower 10.2 cm in 1.5,
+// wait 0.5, open in 0.5, rise 5 cm in 0.5, end at 8.5; the target is the bar's centre at (-0.15, 0, 0.02).
+// Deterministic: the same options give the same result, bit for bit. Units SI, frames world (z up). Not real-time
+// (builds a world).
 #pragma once
 
 #include "god_finger/physics/contact_model.h"
