@@ -8,12 +8,16 @@
 // and holds the bar turning at most 0.05 rad (bisection to 0.1 mm in [0.5, 60] mm; 0 when the
 // layout holds it at 0.5 mm, -1 when it never does). Then `--seeds` pick and places per squeeze
 // in the list and at the target squeeze, whose low point (0.75 of it) is 1.2 twist limits.
-// Prints one JSON line per layout ({"kind":"limit"}) and per run ({"kind":"run"}).
+// Second, the paper's pencil-versus-finger example (physics/sheet_push_task.h): `--seeds`
+// operators drag a sheet by its corner per press in the list.
+// Prints one JSON line per layout ({"kind":"limit"}) and per run ({"kind":"run"}, with its
+// "task": "pick_place" or "sheet_push").
 //
-// usage: operator_bench [--seeds N] [--squeezes MM[,MM...]]
+// usage: operator_bench [--seeds N] [--squeezes MM[,MM...]] [--presses MM[,MM...]]
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/physics/grip_task.h"
 #include "god_finger/physics/pad_fidelity.h"
+#include "god_finger/physics/sheet_push_task.h"
 
 #include <nlohmann/json.hpp>
 
@@ -66,7 +70,8 @@ double twistLimit(const PadLayout& layout)
 
 int fail(const std::string& message)
 {
-  std::cerr << "operator_bench: " << message << "\nusage: operator_bench [--seeds N] [--squeezes MM[,MM...]]\n";
+  std::cerr << "operator_bench: " << message
+            << "\nusage: operator_bench [--seeds N] [--squeezes MM[,MM...]] [--presses MM[,MM...]]\n";
   return 2;
 }
 }  // namespace
@@ -75,6 +80,7 @@ int main(int argc, char** argv)
 {
   int seeds = 20;
   std::vector<double> squeezes = {0.008, 0.012, 0.016, 0.02, 0.03};
+  std::vector<double> presses = {0.0025, 0.005, 0.01};
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string option = argv[i];
@@ -88,19 +94,20 @@ int main(int argc, char** argv)
       }
       seeds = static_cast<int>(number);
     }
-    else if (option == "--squeezes")
+    else if (option == "--squeezes" || option == "--presses")
     {
-      squeezes.clear();
-      std::stringstream list(value);
+      std::vector<double>* list = option == "--squeezes" ? &squeezes : &presses;
+      list->clear();
+      std::stringstream items(value);
       std::string item;
-      while (std::getline(list, item, ','))
+      while (std::getline(items, item, ','))
       {
         double millimetres = 0.0;
-        if (!parseDouble(item, &millimetres) || !(millimetres > 0.0 && millimetres <= 100.0))
+        if (!parseDouble(item, &millimetres) || !(millimetres > 0.0 && millimetres <= 50.0))
         {
-          return fail("--squeezes item '" + item + "' is not a squeeze in (0, 100] mm");
+          return fail(option + " item '" + item + "' is not a length in (0, 50] mm");
         }
-        squeezes.push_back(millimetres * 1e-3);
+        list->push_back(millimetres * 1e-3);
       }
     }
     else
@@ -128,6 +135,7 @@ int main(int argc, char** argv)
         options.hand = drawOperator(static_cast<std::uint64_t>(seed), Eigen::Vector3d::UnitY());
         const GripTaskResult r = runGripTask(options);
         std::cout << nlohmann::json{{"kind", "run"},
+                                    {"task", "pick_place"},
                                     {"layout", layout.name},
                                     {"squeeze_m", options.squeeze},
                                     {"target", target},
@@ -141,6 +149,33 @@ int main(int argc, char** argv)
                                     {"mean_grip_force_N", r.mean_grip_force_N},
                                     {"min_squeeze_m", r.min_squeeze_m},
                                     {"misalignment_m", options.hand.misalignment.norm()}}
+                         .dump()
+                  << std::endl;
+      }
+    }
+  }
+  for (const PadLayout& layout : kPadLayouts)
+  {
+    for (const double press : presses)
+    {
+      for (int seed = 1; seed <= seeds; ++seed)
+      {
+        SheetPushOptions options;
+        options.model = layout.model;
+        options.params.pad_solver = layout.pad_solver;
+        options.press = press;
+        options.hand = drawOperator(static_cast<std::uint64_t>(seed), Eigen::Vector3d::UnitZ());
+        const SheetPushResult r = runSheetPush(options);
+        std::cout << nlohmann::json{{"kind", "run"},
+                                    {"task", "sheet_push"},
+                                    {"layout", layout.name},
+                                    {"press_m", press},
+                                    {"seed", seed},
+                                    {"translated", r.translated},
+                                    {"translation_m", r.translation_m},
+                                    {"turn_rad", r.turn_rad},
+                                    {"max_slip_m", r.max_slip_m},
+                                    {"mean_press_N", r.mean_press_N}}
                          .dump()
                   << std::endl;
       }

@@ -1,6 +1,7 @@
 // A two-finger pinch of a bar across its parallel faces, gripped off its centre and lifted
 // (physics/grip_task.h, a perfect hand with the second finger misaligned by d along x and d / 2
 // along z): how far it turns, and whether it stays in the grip, as the squeeze grows.
+#include "god_finger/core/input_error.h"
 #include "god_finger/physics/grip_task.h"
 
 #include <gtest/gtest.h>
@@ -83,11 +84,20 @@ TEST(PinchGrip, BelowTheTwistLimitTheBarTurnsToWhereGravityMeetsTheLimit)
   const double expected = std::acos(limit / gravity_torque);
   const GripTaskResult grip = pinchBar(ContactModel::kSoftFinger, squeeze, 0.003, params);
   print("", ContactModel::kSoftFinger, squeeze, 0.003, grip);
-  std::printf("[ pinch twist limit ] %.4f N m against gravity's %.4f N m: turn %.3f rad, expected at least %.3f\n",
-              limit, gravity_torque, grip.final_turn_rad, expected);
+  std::printf(
+      "[ pinch twist limit ] %.4f N m against gravity's %.4f N m: turn %.3f rad, expected %.3f (static equilibrium)\n",
+      limit, gravity_torque, grip.final_turn_rad, expected);
   EXPECT_TRUE(grip.held);
   EXPECT_GT(grip.final_turn_rad, expected - 0.05);
   EXPECT_LT(grip.final_turn_rad, expected + 0.3);
+}
+TEST(PinchGrip, ABadSqueezeIsRefused)
+{
+  GripTaskOptions options;
+  options.squeeze = -0.01;
+  EXPECT_THROW(runGripTask(options), InputError);
+  options.squeeze = 0.2;
+  EXPECT_THROW(runGripTask(options), InputError);
 }
 }  // namespace
 }  // namespace god_finger
