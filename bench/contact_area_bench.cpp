@@ -3,9 +3,9 @@
 // memory per triangle. Google Benchmark; scripts/bench turns the JSON into bench/REPORT.md.
 //
 // Mesh size: square plates of 2 mm cells from 288 to 1.0 M triangles, contacts near the centre:
-// the local resolution, hence the walks (about 5 edges crossed per sub-god-object), stays the
-// same while the mesh grows, so only the location's log(n) may grow. n_SGO and walk variant: a
-// 4 cm ball (the demo's) of 81920 triangles (0.66 mm edges, ~14 crossings per walk). Each
+// the local resolution, hence the walks' edge crossings, stays the same while the mesh grows, so
+// only the location's log(n) may grow. n_SGO and walk variant: a 4 cm ball (the demo's) of 81920
+// triangles (0.66 mm edges; the `crossings` counter measures the edges crossed). Each
 // iteration handles one of 256 precomputed contacts, pressed 3 D0' deep (r = 9.5 mm) with a
 // tangential pull of 0 to 1.5 D0'. Counters: triangles, bytes_per_triangle (mesh + neighbour
 // table + tree), sgo_active (sub-god-objects per contact).

@@ -223,10 +223,16 @@ TEST_P(HardCases, ObjectsAThousandTimesHeavierAndLighterThanTheProxy)
     EXPECT_GT(lowest_centre, 0.25 * 0.05);
     EXPECT_LT(record.deepest, 2e-3);
     // The hand drags along +x: the box never goes the other way (without the support passes the
-    // 1/1000 box ended 2.9 cm behind its start). Known limit: a light box follows the hand only
-    // about half of the 3 cm (friction in the stack converges as slowly as the normal did).
-    std::printf("[ mass ratio %g ] ends %.4f m along x\n", ratio, world.bodyState(1).center_of_mass.x());
-    EXPECT_GT(world.bodyState(1).center_of_mass.x(), -1e-3);
+    // 1/1000 box ended 2.9 cm behind its start). A box 100 and 1000 times lighter than the proxy
+    // follows the hand all the way (3 cm) under the pad constraint; under the paper's points,
+    // whose friction in the stack converges as slowly as the normal did, 2.2-2.5 cm of the 3.
+    const double end_x = world.bodyState(1).center_of_mass.x();
+    std::printf("[ mass ratio %g ] ends %.4f m along x (the hand: 0.03 m)\n", ratio, end_x);
+    EXPECT_GT(end_x, -1e-3);
+    if (ratio <= 0.01)
+    {
+      EXPECT_GT(end_x, GetParam() == PadSolver::kConstraint ? 0.0295 : 0.02);
+    }
   }
 }
 
