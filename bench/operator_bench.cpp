@@ -148,7 +148,10 @@ int main(int argc, char** argv)
                                     {"max_slip_m", r.max_slip_m},
                                     {"mean_grip_force_N", r.mean_grip_force_N},
                                     {"min_squeeze_m", r.min_squeeze_m},
-                                    {"misalignment_m", options.hand.misalignment.norm()}}
+                                    {"final_rotation_rad", r.final_rotation_rad},
+                                    {"misalignment_m", options.hand.misalignment.norm()},
+                                    {"tremor_m", options.hand.tremor_amplitude},
+                                    {"tremor_hz", options.hand.tremor_frequency}}
                          .dump()
                   << std::endl;
       }

@@ -2,9 +2,11 @@
 
 #include "god_finger/core/input_error.h"
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace god_finger
 {
@@ -226,6 +228,71 @@ TriangleSoup makeLBlock(double arm, double depth)
     // Counter-clockwise in (x, z) faces -y: as is on the front cap, reversed on the back.
     soup.triangles.push_back({t[0], t[1], t[2]});
     soup.triangles.push_back({n + t[0], n + t[2], n + t[1]});
+  }
+  return soup;
+}
+TriangleSoup makeMug(double radius, double height, double wall, double bottom, int segments)
+{
+  requirePositive(radius, "mug radius");
+  requirePositive(height, "mug height");
+  requirePositive(wall, "mug wall");
+  requirePositive(bottom, "mug bottom");
+  if (wall >= radius || bottom >= height)
+  {
+    throw InputError("mug wall must be thinner than its radius and its bottom lower than its height");
+  }
+  if (segments < 3)
+  {
+    throw InputError("mug needs at least 3 segments, got " + std::to_string(segments));
+  }
+  // The cup's profile in (r, z), counter-clockwise (the wall's section on its left): revolved,
+  // each segment's quads face out as the cylinder's do.
+  const std::vector<Eigen::Vector2d> profile = {
+      {0.0, 0.0}, {radius, 0.0}, {radius, height}, {radius - wall, height}, {radius - wall, bottom}, {0.0, bottom}};
+  TriangleSoup soup;
+  std::vector<int> first(profile.size());  // each profile point's first vertex (one on the axis)
+  for (std::size_t k = 0; k < profile.size(); ++k)
+  {
+    first[k] = static_cast<int>(soup.vertices.size());
+    const int count = profile[k].x() == 0.0 ? 1 : segments;
+    for (int i = 0; i < count; ++i)
+    {
+      const double a = 2.0 * M_PI * i / segments;
+      soup.vertices.emplace_back(profile[k].x() * std::cos(a), profile[k].x() * std::sin(a), profile[k].y());
+    }
+  }
+  for (std::size_t k = 0; k + 1 < profile.size(); ++k)
+  {
+    for (int i = 0; i < segments; ++i)
+    {
+      const int j = (i + 1) % segments;
+      if (profile[k].x() == 0.0)
+      {
+        soup.triangles.push_back({first[k], first[k + 1] + j, first[k + 1] + i});
+      }
+      else if (profile[k + 1].x() == 0.0)
+      {
+        soup.triangles.push_back({first[k + 1], first[k] + i, first[k] + j});
+      }
+      else
+      {
+        addQuad(&soup, first[k] + i, first[k] + j, first[k + 1] + j, first[k + 1] + i);
+      }
+    }
+  }
+  // The handle: a torus about z turned into the x-z plane (a rotation keeps its winding).
+  const double major = 0.45 * height / 2.0;
+  const TriangleSoup ring = makeTorus(major, wall, segments, 8);
+  const Eigen::AngleAxisd upright(M_PI / 2.0, Eigen::Vector3d::UnitX());
+  const Eigen::Vector3d centre(radius - wall + major + wall, 0.0, height / 2.0);
+  const int offset = static_cast<int>(soup.vertices.size());
+  for (const Eigen::Vector3d& vertex : ring.vertices)
+  {
+    soup.vertices.push_back(upright * vertex + centre);
+  }
+  for (const auto& triangle : ring.triangles)
+  {
+    soup.triangles.push_back({triangle[0] + offset, triangle[1] + offset, triangle[2] + offset});
   }
   return soup;
 }

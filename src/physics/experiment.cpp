@@ -187,6 +187,41 @@ Script clutterScript(std::uint64_t seed)
   return script;
 }
 
+// table_mug.urdf: the mug (urdf/meshes/mug.obj: outer radius 4 cm, 9 cm high, the handle on
+// +x) stands at the origin. Three fingers at 60, 180 and 300 degrees about z, 5 cm up, close
+// from 7 cm off the axis to 3.3 cm in 1 s (the proxies stop on the wall at 4.3 cm: 1 cm of
+// coupling stretch, 4 N each), wait 0.5 s, lift 10 cm in 2 s, hold until 4.5 s, open back to
+// 7 cm in 0.3 s, and stay until 5.5 s (the mug falls back onto the table in about 0.15 s).
+// Asymmetry: the hand's centre is 2 mm (+ jitter) off the mug's axis along y.
+Script handGraspScript(std::uint64_t seed)
+{
+  const double offset = 0.002 + seededJitter(seed);
+  Script script;
+  script.scene_file = "table_mug.urdf";
+  script.object = "mug";
+  script.lift_start = 1.5;
+  script.lift_end = 3.5;
+  script.lift_height = 0.1;
+  script.release = 4.5;
+  script.duration = 5.5;
+  const double z = 0.05;
+  for (const double degrees : {60.0, 180.0, 300.0})
+  {
+    const double angle = degrees * M_PI / 180.0;
+    const Eigen::Vector3d out(std::cos(angle), std::sin(angle), 0.0);
+    const Eigen::Vector3d centre(0.0, offset, z);
+    const Eigen::Vector3d up(0.0, 0.0, script.lift_height);
+    script.fingers.emplace_back(std::vector<Waypoint>{{0.0, centre + 0.07 * out},
+                                                      {1.0, centre + 0.033 * out},
+                                                      {script.lift_start, centre + 0.033 * out},
+                                                      {script.lift_end, centre + 0.033 * out + up},
+                                                      {script.release, centre + 0.033 * out + up},
+                                                      {script.release + 0.3, centre + 0.07 * out + up},
+                                                      {script.duration, centre + 0.07 * out + up}});
+  }
+  return script;
+}
+
 Script scriptFor(const ExperimentOptions& options)
 {
   switch (options.scenario)
@@ -201,6 +236,8 @@ Script scriptFor(const ExperimentOptions& options)
       return pinchScript(options.seed);
     case Scenario::kClutter:
       return clutterScript(options.seed);
+    case Scenario::kHandGrasp:
+      return handGraspScript(options.seed);
   }
   return slideScript(options.push_height, options.seed);
 }
@@ -313,6 +350,8 @@ const char* scenarioName(Scenario scenario)
       return "pinch_cylinder";
     case Scenario::kClutter:
       return "clutter";
+    case Scenario::kHandGrasp:
+      return "hand_grasp";
   }
   return "?";
 }

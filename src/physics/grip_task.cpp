@@ -171,11 +171,14 @@ GripTaskResult runGripTask(const GripTaskOptions& options)
     }
   }
   result.mean_grip_force_N = force_samples > 0 ? force_sum / force_samples : 0.0;
+  result.final_rotation_rad =
+      Eigen::AngleAxisd(world.bodyState(bar).pose.linear() * start_rotation.transpose()).angle();
   if (options.carry)
   {
     const Eigen::Vector3d target(-kCarryDistance, 0.0, start_z);
     result.placed_error_m = (world.bodyState(bar).center_of_mass - target).norm();
-    result.placed = result.held && result.placed_error_m < 0.02;
+    // Lying as it started: a bar swung over end to end may land within 2 cm, reversed.
+    result.placed = result.held && result.placed_error_m < 0.02 && result.final_rotation_rad < 0.2;
   }
   return result;
 }

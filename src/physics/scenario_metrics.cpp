@@ -85,6 +85,26 @@ void ScenarioMetrics::add(double time, double dt, const BodyState& state)
       }
       break;
     }
+    case Scenario::kHandGrasp:
+    {
+      if (time >= times_.lift_start && time <= times_.release + 1e-9)
+      {
+        const Eigen::Vector3d up = state.pose.linear().col(2);
+        max_tilt_ = std::max(max_tilt_, std::acos(std::min(1.0, std::max(-1.0, up.z()))));
+        const Eigen::AngleAxisd turn(state.pose.linear() * initial_.pose.linear().transpose());
+        max_turn_ = std::max(max_turn_, std::abs(turn.angle()));
+        if (time > times_.lift_end && lifted)
+        {
+          held_ += dt;
+        }
+        carry_height_ = height;
+      }
+      if (time > times_.release)
+      {
+        lowest_after_release_ = std::min(lowest_after_release_, height);
+      }
+      break;
+    }
   }
   last_ = state;
 }
@@ -150,6 +170,13 @@ std::map<std::string, double> ScenarioMetrics::metrics() const
       }
       break;
     }
+    case Scenario::kHandGrasp:
+      result["held_s"] = held_;
+      result["lift_height_m"] = carry_height_;
+      result["max_tilt_rad"] = max_tilt_;
+      result["turn_rad"] = max_turn_;
+      result["fell_after_release"] = lowest_after_release_ < 0.5 * times_.lift_height ? 1.0 : 0.0;
+      break;
   }
   return result;
 }

@@ -22,6 +22,7 @@ int main(int argc, char** argv)
     writeTriangleSoup(god_finger::makeCylinder(0.03, 0.12, 48), folder + "/cylinder.ply");
     writeTriangleSoup(god_finger::makeTorus(0.06, 0.02, 48, 24), folder + "/torus.dae");
     writeTriangleSoup(god_finger::makeLBlock(0.05, 0.05), folder + "/l_block.off");
+    writeTriangleSoup(god_finger::makeMug(0.04, 0.09, 0.005, 0.006, 48), folder + "/mug.obj");
   }
   catch (const god_finger::InputError& error)
   {

@@ -92,6 +92,29 @@ TEST(MeshPrimitives, LBlockIsConcave)
   expectClosedAndOutward(block, 2, 3 * 0.05 * 0.05 * 0.05, 1e-15);
 }
 
+TEST(MeshPrimitives, MugIsACupAndARingHandle)
+{
+  const double r = 0.04, h = 0.09, wall = 0.005, bottom = 0.006;
+  const TriangleMesh mug = TriangleMesh::build(makeMug(r, h, wall, bottom, 48));
+  // A closed cup (a sphere's topology) and a torus: Euler characteristic 2 + 0; the volumes add.
+  const double cup = M_PI * (r * r * h - (r - wall) * (r - wall) * (h - bottom));
+  const double handle = 2.0 * M_PI * M_PI * (0.45 * h / 2.0) * wall * wall;
+  expectClosedAndOutward(mug, 2, cup + handle, 0.02 * (cup + handle));
+  // Standing on z = 0, the handle on +x, no higher than the rim.
+  Eigen::AlignedBox3d box;
+  for (const Eigen::Vector3d& vertex : mug.vertices())
+  {
+    box.extend(vertex);
+  }
+  EXPECT_NEAR(box.min().z(), 0.0, 1e-15);
+  EXPECT_NEAR(box.max().z(), h, 1e-15);
+  EXPECT_GT(box.max().x(), r + 0.02);
+  EXPECT_NEAR(box.min().x(), -r, 1e-15);
+  EXPECT_THROW(makeMug(0.04, 0.09, 0.05, 0.006, 48), InputError);
+  EXPECT_THROW(makeMug(0.04, 0.09, 0.005, 0.1, 48), InputError);
+  EXPECT_THROW(makeMug(0.04, 0.09, 0.005, 0.006, 2), InputError);
+}
+
 TEST(MeshPrimitives, GridCoversTheSquareExactly)
 {
   const TriangleMesh grid = TriangleMesh::build(makeGrid(1.0, 7));

@@ -21,4 +21,10 @@ TriangleSoup makeTorus(double major_radius, double minor_radius, int major_segme
 // Closed L-shaped block (concave along one edge), extruded along y over [-depth/2, depth/2]:
 // the union of [0,2a]x[0,a] and [0,a]x[0,2a] in the x-z plane, with a = arm.
 TriangleSoup makeLBlock(double arm, double depth);
+// Mug standing on z = 0, axis z: a cup (outer radius `radius`, height `height`, wall `wall`,
+// bottom `bottom` thick, open at the top; a closed profile revolved in `segments`) and a ring
+// handle on +x (a torus of major radius 0.45 height / 2 and minor radius wall, in the x-z plane,
+// its inner edge on the cup's inner wall at half height): two closed components that overlap in
+// the wall (concave; collision decomposes it, the walk runs on each component).
+TriangleSoup makeMug(double radius, double height, double wall, double bottom, int segments);
 }  // namespace god_finger

@@ -39,15 +39,16 @@ struct GripTaskOptions
 
 struct GripTaskResult
 {
-  bool held = false;               // above half the lift height through the hold (the carry)
-  bool placed = false;             // pick and place: held, and ended within 2 cm of the target
-  double placed_error_m = 0.0;     // pick and place: the centre's distance from the target at the end
-  double max_turn_rad = 0.0;       // about the pinch normal (y), from the lift's start to the release
-  double final_turn_rad = 0.0;     // the same, at the end of the hold (at the release)
-  double max_tilt_rad = 0.0;       // about the other axes, same span
-  double max_slip_m = 0.0;         // the grip point on the bar against the fingers, across the pinch
-  double mean_grip_force_N = 0.0;  // the fingers' coupling force along the pinch, mean over the hold
-  double min_squeeze_m = 0.0;      // the smallest squeeze commanded in the hold
+  bool held = false;                // above half the lift height through the hold (the carry)
+  bool placed = false;              // pick and place: held, ended within 2 cm of the target, lying as it started
+  double placed_error_m = 0.0;      // pick and place: the centre's distance from the target at the end
+  double final_rotation_rad = 0.0;  // the bar\'s rotation from its start at the end (any axis)
+  double max_turn_rad = 0.0;        // about the pinch normal (y), from the lift's start to the release
+  double final_turn_rad = 0.0;      // the same, at the end of the hold (at the release)
+  double max_tilt_rad = 0.0;        // about the other axes, same span
+  double max_slip_m = 0.0;          // the grip point on the bar against the fingers, across the pinch
+  double mean_grip_force_N = 0.0;   // the fingers' coupling force along the pinch, mean over the hold
+  double min_squeeze_m = 0.0;       // the smallest squeeze commanded in the hold
 };
 
 // Throws InputError on a bad option (a squeeze outside (0, 0.1] m, bad world parameters).

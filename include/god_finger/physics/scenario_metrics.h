@@ -12,7 +12,9 @@
 //    lift_height_m;
 //  - clutter: held, held_s, lift_height_m, turn_rad, placed_error_m (experiment.h), and from
 //    setNeighbours: disturbed_neighbours (moved more than kDisturbedDistance),
-//    max_neighbour_displacement_m.
+//    max_neighbour_displacement_m;
+//  - hand_grasp: held_s, lift_height_m, max_tilt_rad, turn_rad, fell_after_release
+//    (experiment.h).
 // Units: SI; states in the world frame. Not real-time (a map of results).
 #pragma once
 
@@ -58,6 +60,7 @@ class ScenarioMetrics
   double fz_max_ = -INFINITY;
   double carry_height_ = 0.0;
   double max_turn_ = 0.0;
+  double lowest_after_release_ = INFINITY;  // m, hand_grasp: above the start, after the release
   int disturbed_ = -1;  // -1: setNeighbours not called
   double max_neighbour_displacement_ = 0.0;
 };
