@@ -3,15 +3,16 @@
 #include "bullet_helpers.h"
 #include "collision_shape.h"
 #include "contact_response.h"
+#include "contact_solver.h"
 #include "dormant_bodies.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/physics/scene_budget.h"
 #include "god_finger/physics/walk_surface.h"
+#include "pad_constraints.h"
 #include "proxy.h"
 #include "sub_god_object_injection.h"
-#include "support_pass_solver.h"
 #include "touching_islands.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -149,9 +150,11 @@ struct GodFingerWorld::Impl
   std::unique_ptr<btDefaultCollisionConfiguration> configuration;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btDbvtBroadphase> broadphase;
-  std::unique_ptr<SupportPassSolver> solver;
+  std::unique_ptr<ContactSolver> solver;
   std::unique_ptr<HookedWorld> world;
   std::unique_ptr<SubGodObjectInjector> injector;
+  // This step's pads (pad_solver: constraint); the solver reads them.
+  PadConstraints pads;
   // Every model's response, made once; `response` is the current model's (a model change
   // while running allocates nothing).
   std::vector<std::pair<ContactModel, std::unique_ptr<ContactResponse>>> responses;
@@ -261,7 +264,7 @@ struct GodFingerWorld::Impl
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
     dispatcher->setNearCallback(&Impl::nearCallback);
     broadphase = std::make_unique<btDbvtBroadphase>();
-    solver = std::make_unique<SupportPassSolver>(params.support_passes);
+    solver = std::make_unique<ContactSolver>(params.support_passes, &pads);
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
     world->setGravity(toBullet(params.gravity));
     world->getSolverInfo().m_numIterations = params.solver_iterations;
@@ -277,7 +280,6 @@ struct GodFingerWorld::Impl
     // Sleeping bodies keep their bounding boxes (static ones never move).
     world->setForceUpdateAllAabbs(false);
     injector = std::make_unique<SubGodObjectInjector>(dispatcher.get());
-    solver->setPadRows(injector->padRows());
     chooseResponse();
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
@@ -572,6 +574,7 @@ struct GodFingerWorld::Impl
   {
     restoreWokenContacts();
     injector->release();
+    pads.clear();
     touches.clear();
     for (Proxy& proxy : proxies)
     {
@@ -712,14 +715,8 @@ struct GodFingerWorld::Impl
       return;
     }
     proxy.reference_tangents[body_index] = scratch.first_tangent;
-    PadShape& pad = proxy.pads[body_index];
-    if (pad.last_step != steps - 1)
-    {
-      pad.orientation = to_world.linear();
-    }
-    pad.last_step = steps;
     // The object's rotation relative to the pad since the contact began.
-    const Eigen::Matrix3d object_to_pad = pad.orientation * to_world.linear().transpose();
+    const Eigen::Matrix3d object_to_pad = objectTurnSinceContact(to_world, steps, &proxy.pads[body_index]);
 
     WorldContactArea& area = state.contacts[state.contact_count++];
     area.body = body_index;
@@ -751,7 +748,7 @@ struct GodFingerWorld::Impl
     area_contact.object_to_pad = object_to_pad;
     area_contact.area = &area;
     area_contact.radial_index = radial_index.data();
-    response->respond(params, area_contact, &proxy, steps, injector.get());
+    response->respond(params, area_contact, &proxy, steps, {injector.get(), &pads});
   }
 
   void step()
@@ -778,6 +775,7 @@ struct GodFingerWorld::Impl
     solver->resetCounts();
     world->stepSimulation(dt, 0);
     injector->recordImpulses(&proxies, steps);
+    pads.recordImpulses(steps);
     time = (steps + 1) * dt;
     ++steps;
     for (const int index : awake)
@@ -801,6 +799,7 @@ struct GodFingerWorld::Impl
       return;
     }
     injector->release();
+    pads.clear();
     for (Proxy& proxy : proxies)
     {
       world->removeRigidBody(proxy.rigid.get());
