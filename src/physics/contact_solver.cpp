@@ -13,7 +13,6 @@ btScalar ContactSolver::solveGroup(btCollisionObject** bodies, int num_bodies, b
 {
   for (int i = 0; i < num_manifolds; ++i)
   {
-    points_ += manifolds[i]->getNumContacts();
     if (manifolds[i]->getBody0()->getUserIndex() == kKindProxy ||
         manifolds[i]->getBody1()->getUserIndex() == kKindProxy)
     {

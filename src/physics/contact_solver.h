@@ -11,9 +11,9 @@
 // - Support passes (support_pass.h): after the iterations, proxies pressing light objects onto
 //   static ones are held.
 //
-// Units: Bullet's (SI). Counts the contact points it receives (all, and the proxies') and the
-// rows it solves. Not real-time safe to construct; solving reuses Bullet's pools and its own
-// lists once they have grown.
+// Units: Bullet's (SI). Counts the proxies' contact points it receives and the rows it solves.
+// Not real-time safe to construct; solving reuses Bullet's pools and its own lists once they
+// have grown.
 #pragma once
 
 #include "pad_constraints.h"
@@ -35,13 +35,8 @@ class ContactSolver : public btSequentialImpulseConstraintSolver
                       btIDebugDraw* debug_draw, btDispatcher* dispatcher) override;
   void resetCounts()
   {
-    points_ = 0;
     proxy_points_ = 0;
     rows_ = 0;
-  }
-  int points() const
-  {
-    return points_;
   }
   int proxyPoints() const
   {
@@ -76,7 +71,6 @@ class ContactSolver : public btSequentialImpulseConstraintSolver
   std::vector<StepPad*> pad_of_contact_row_;
   int support_passes_;
   std::vector<char> supported_;
-  int points_ = 0;
   int proxy_points_ = 0;
   int rows_ = 0;
 };

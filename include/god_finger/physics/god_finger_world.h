@@ -136,10 +136,8 @@ class GodFingerWorld
   const TriangleMesh& walkSurface(int body) const;
   // Dynamic bodies awake now (simulated in the next step); static bodies never count.
   int awakeBodyCount() const;
-  // Contact points the solver received in the last step, all pairs (test hook for the
-  // Bullet manifold limits).
-  int solverContactPoints() const;
-  // Of those, points between a proxy and an object.
+  // Contact points between a proxy and an object the solver received in the last step (test
+  // hook for the Bullet manifold limits).
   int solverProxyContactPoints() const;
   // Contact rows (normal, friction, torsional) the solver solved in the last step, all pairs.
   int solverContactRows() const;
