@@ -100,10 +100,9 @@ struct WorldParams
   double walk_edge_per_max_radius = 0.5;
 };
 
-// Every parameter of WorldParams that is read by name: model, solver_iterations, the contact
-// table's rows, proxy_mass, proxy_radius, the soft finger's, the pad's, sleeping's and
-// walk_edge_per_max_radius. (time_step comes from the loop's rate, gravity from the scene; the
-// coupling profile comes per interface from its device, deviceProfileTable().)
+// The one table of the parameters of WorldParams read by name (its rows are the list; the
+// README's table is generated from it). Not in it: time_step comes from the loop's rate, gravity
+// from the scene, and the coupling profile per interface from its device (deviceProfileTable()).
 const ParameterTable<WorldParams>& worldParameterTable();
 
 std::string validate(const WorldParams& params);
