@@ -1,7 +1,6 @@
 #include "god_finger/physics/god_finger_world.h"
 
 #include "bullet_helpers.h"
-#include "collision_shape.h"
 #include "contact_response.h"
 #include "contact_solver.h"
 #include "dormant_bodies.h"
@@ -9,20 +8,18 @@
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/physics/scene_budget.h"
-#include "god_finger/physics/walk_surface.h"
 #include "hooked_world.h"
 #include "pad_constraints.h"
 #include "proxy.h"
 #include "proxy_touches.h"
+#include "scene_body.h"
 #include "slept_contacts.h"
 #include "sub_god_object_injection.h"
 
 #include <btBulletDynamicsCommon.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <functional>
-#include <optional>
 #include <sstream>
 
 namespace god_finger
@@ -31,40 +28,11 @@ namespace
 {
 // Sub-god-objects closer than this to the contact point (m) duplicate it and are not added.
 constexpr double kCoincident = 1e-7;
-// The exact walk's surface for a sphere or a cylinder; none for boxes (their 12-triangle walk
-// surface is exact already) and meshes.
-std::optional<PrimitiveSurface> primitiveSurface(const Geometry& geometry)
-{
-  if (geometry.kind == GeometryKind::kSphere)
-  {
-    return PrimitiveSurface{PrimitiveSurface::Kind::kSphere, geometry.radius, 0.0};
-  }
-  if (geometry.kind == GeometryKind::kCylinder)
-  {
-    return PrimitiveSurface{PrimitiveSurface::Kind::kCylinder, geometry.radius, geometry.length};
-  }
-  return std::nullopt;
-}
 }  // namespace
 
 struct GodFingerWorld::Impl
 {
-  struct Body
-  {
-    std::unique_ptr<TriangleMesh> walk;
-    std::unique_ptr<SurfaceLocator> locator;
-    // Spheres and cylinders: contact areas by exact walks (core/primitive_walk.h); the walk
-    // surface then only serves the collision shape and walkSurface().
-    std::optional<PrimitiveSurface> primitive;
-    std::unique_ptr<CollisionShape> collision;
-    std::unique_ptr<btCompoundShape> placed;  // the collision shape placed in the centre-of-mass frame
-    std::unique_ptr<btRigidBody> rigid;
-    Eigen::Isometry3d com_in_link = Eigen::Isometry3d::Identity();
-    Eigen::Isometry3d geometry_in_com = Eigen::Isometry3d::Identity();
-    btVector3 principal_inertia = btVector3(0, 0, 0);
-    Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
-    Eigen::Vector3d net_force = Eigen::Vector3d::Zero();
-  };
+  using Body = SceneBody;
   WorldParams params;
   SceneDescription scene;
   std::vector<Body> bodies;
@@ -116,30 +84,9 @@ struct GodFingerWorld::Impl
   void buildBodies()
   {
     const double max_edge = params.walk_edge_per_max_radius * params.contact.max_radius;
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    for (const BodyDescription& description : scene.bodies)
     {
-      const BodyDescription& description = scene.bodies[i];
-      Body body;
-      body.walk = std::make_unique<TriangleMesh>(makeWalkSurface(description.geometry, max_edge));
-      body.locator = std::make_unique<SurfaceLocator>(*body.walk);
-      body.primitive = primitiveSurface(description.geometry);
-      body.collision = makeCollisionShape(description.geometry, *body.walk, description.is_static);
-      if (!description.is_static)
-      {
-        // Bullet's body frame is the centre of mass on the principal axes of inertia.
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(description.inertia);
-        Eigen::Matrix3d axes = solver.eigenvectors();
-        if (axes.determinant() < 0.0)
-        {
-          axes.col(2) = -axes.col(2);
-        }
-        body.com_in_link = description.inertial_origin;
-        body.com_in_link.linear() = description.inertial_origin.linear() * axes;
-        const Eigen::Vector3d moments = solver.eigenvalues();
-        body.principal_inertia = toBullet(moments);
-      }
-      body.geometry_in_com = body.com_in_link.inverse() * description.collision_origin;
-      bodies.push_back(std::move(body));
+      bodies.push_back(makeSceneBody(description, max_edge));
     }
   }
 
@@ -182,20 +129,7 @@ struct GodFingerWorld::Impl
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
       Body& body = bodies[i];
-      const BodyDescription& description = scene.bodies[i];
-      body.placed = std::make_unique<btCompoundShape>();
-      body.placed->addChildShape(toBullet(body.geometry_in_com), body.collision->shape);
-      const double mass = description.is_static ? 0.0 : description.mass;
-      btRigidBody::btRigidBodyConstructionInfo info(
-          mass, nullptr, body.placed.get(), description.is_static ? btVector3(0, 0, 0) : body.principal_inertia);
-      info.m_startWorldTransform = toBullet(description.pose * body.com_in_link);
-      info.m_friction = description.material.friction;
-      info.m_rollingFriction = description.material.rolling_friction;
-      info.m_spinningFriction = description.material.spinning_friction;
-      info.m_restitution = description.material.restitution;
-      body.rigid = std::make_unique<btRigidBody>(info);
-      body.rigid->setUserIndex(kKindBody);
-      body.rigid->setUserIndex2(static_cast<int>(i));
+      buildRigidBody(scene.bodies[i], static_cast<int>(i), &body);
       prepareSleep(body.rigid.get());
       world->addRigidBody(body.rigid.get(), kBodyGroup, btBroadphaseProxy::AllFilter);
       body.previous_velocity = Eigen::Vector3d::Zero();
