@@ -32,7 +32,7 @@
 //    zero), which is condim 3. The benchmark's condim (3, 4, 6) is the finger contacts'.
 //  - finger friction triple: sliding = mu; torsional = (2/3) mu a and rolling = a, with
 //    a = ContactParams().max_radius = 1 cm, the pad's contact radius under a few newtons: what
-//    god_finger's pad constraint bounds its rows by (pad_constraint.h: twist <= mu N (2/3) a for
+//    god_finger's pad constraint bounds its rows by (pad_constraints.h: twist <= mu N (2/3) a for
 //    a uniform disk, tilt <= N a). condim 4 uses the torsional value, condim 6 both.
 //  - solver (the fairest we found; stated in the report): Newton (MuJoCo's default and its best
 //    for small scenes), iterations 100 and tolerance 1e-8 (MuJoCo's defaults: it stops when

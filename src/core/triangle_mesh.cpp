@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <queue>
 #include <sstream>
 #include <tuple>
@@ -115,17 +116,20 @@ bool hasDirectedEdge(const Eigen::Vector3i& t, int a, int b)
   }
   return false;
 }
-}  // namespace
 
-TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOptions& options)
+struct BoundingBox
 {
-  TriangleMesh mesh;
-  MeshHealth& health = mesh.health_;
-  health.input_vertices = static_cast<int>(soup.vertices.size());
-  health.input_triangles = static_cast<int>(soup.triangles.size());
+  Eigen::Vector3d lower;
+  Eigen::Vector3d upper;
+};
 
-  Eigen::Vector3d lower = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d upper = -lower;
+// Stage 1: the soup's checks (finite coordinates, indices in range, some triangle); its
+// bounding box.
+BoundingBox checkedBoundingBox(const TriangleSoup& soup)
+{
+  BoundingBox box;
+  box.lower = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  box.upper = -box.lower;
   for (std::size_t i = 0; i < soup.vertices.size(); ++i)
   {
     const Eigen::Vector3d& v = soup.vertices[i];
@@ -135,8 +139,8 @@ TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOption
       message << "vertex " << i << " has a non-finite coordinate (" << v.x() << ", " << v.y() << ", " << v.z() << ")";
       throw InputError(message.str());
     }
-    lower = lower.cwiseMin(v);
-    upper = upper.cwiseMax(v);
+    box.lower = box.lower.cwiseMin(v);
+    box.upper = box.upper.cwiseMax(v);
   }
   const int vertex_count = static_cast<int>(soup.vertices.size());
   for (std::size_t t = 0; t < soup.triangles.size(); ++t)
@@ -156,25 +160,31 @@ TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOption
   {
     throw InputError("no triangles");
   }
-  mesh.bounding_box_diagonal_ = (upper - lower).norm();
+  return box;
+}
 
-  // Weld duplicate vertices.
-  std::vector<Eigen::Vector3d> welded;
-  const std::vector<int> remap =
-      weld(soup.vertices, options.relative_weld_tolerance * mesh.bounding_box_diagonal_, &welded);
-  health.welded_vertices = vertex_count - static_cast<int>(welded.size());
-
-  // Drop degenerate and duplicate triangles, remembering where each kept one came from.
+// The triangles kept so far (corners index the welded vertices) and, per kept triangle, its
+// index in the input.
+struct KeptTriangles
+{
   std::vector<Eigen::Vector3i> triangles;
   std::vector<int> source;
-  std::vector<std::array<int, 4>> seen;  // sorted corners + index, to find duplicates
+};
+
+// Stage 3: the soup's triangles on the welded vertices (`remap`: input vertex -> welded one),
+// without degenerate ones (a repeated corner, or too little area for their longest edge).
+KeptTriangles dropDegenerate(const TriangleSoup& soup, const std::vector<int>& remap,
+                             const std::vector<Eigen::Vector3d>& welded, const MeshBuildOptions& options,
+                             MeshHealth* health)
+{
+  KeptTriangles kept;
   for (std::size_t t = 0; t < soup.triangles.size(); ++t)
   {
     const Eigen::Vector3i corners(remap[soup.triangles[t][0]], remap[soup.triangles[t][1]],
                                   remap[soup.triangles[t][2]]);
     if (corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2])
     {
-      ++health.degenerate_triangles;
+      ++health->degenerate_triangles;
       continue;
     }
     const Eigen::Vector3d& a = welded[corners[0]];
@@ -183,95 +193,122 @@ TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOption
     const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
     if (!((b - a).cross(c - a).norm() >= options.relative_area_tolerance * longest) || longest == 0.0)
     {
-      ++health.degenerate_triangles;
+      ++health->degenerate_triangles;
       continue;
     }
-    triangles.push_back(corners);
-    source.push_back(static_cast<int>(t));
+    kept.triangles.push_back(corners);
+    kept.source.push_back(static_cast<int>(t));
   }
+  return kept;
+}
+
+// Stage 4: drops triangles on the same three vertices as an earlier one (whatever their
+// winding); throws when none is left.
+void dropDuplicates(KeptTriangles* kept, MeshHealth* health)
+{
+  std::vector<Eigen::Vector3i>& triangles = kept->triangles;
+  std::vector<int>& source = kept->source;
+  std::vector<std::array<int, 4>> keys;  // sorted corners + index
+  keys.reserve(triangles.size());
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
   {
-    std::vector<std::array<int, 4>> keys;
-    keys.reserve(triangles.size());
-    for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
-    {
-      std::array<int, 3> sorted = {triangles[t][0], triangles[t][1], triangles[t][2]};
-      std::sort(sorted.begin(), sorted.end());
-      keys.push_back({sorted[0], sorted[1], sorted[2], t});
-    }
-    std::sort(keys.begin(), keys.end());
-    std::vector<bool> duplicate(triangles.size(), false);
-    for (std::size_t i = 1; i < keys.size(); ++i)
-    {
-      if (keys[i][0] == keys[i - 1][0] && keys[i][1] == keys[i - 1][1] && keys[i][2] == keys[i - 1][2])
-      {
-        duplicate[keys[i][3]] = true;  // keys sorted by index last: the first one is kept
-      }
-    }
-    std::vector<Eigen::Vector3i> unique_triangles;
-    std::vector<int> unique_source;
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-    {
-      if (duplicate[t])
-      {
-        ++health.duplicate_triangles;
-        continue;
-      }
-      unique_triangles.push_back(triangles[t]);
-      unique_source.push_back(source[t]);
-    }
-    triangles.swap(unique_triangles);
-    source.swap(unique_source);
+    std::array<int, 3> sorted = {triangles[t][0], triangles[t][1], triangles[t][2]};
+    std::sort(sorted.begin(), sorted.end());
+    keys.push_back({sorted[0], sorted[1], sorted[2], t});
   }
+  std::sort(keys.begin(), keys.end());
+  std::vector<bool> duplicate(triangles.size(), false);
+  for (std::size_t i = 1; i < keys.size(); ++i)
+  {
+    if (keys[i][0] == keys[i - 1][0] && keys[i][1] == keys[i - 1][1] && keys[i][2] == keys[i - 1][2])
+    {
+      duplicate[keys[i][3]] = true;  // keys sorted by index last: the first one is kept
+    }
+  }
+  std::vector<Eigen::Vector3i> unique_triangles;
+  std::vector<int> unique_source;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    if (duplicate[t])
+    {
+      ++health->duplicate_triangles;
+      continue;
+    }
+    unique_triangles.push_back(triangles[t]);
+    unique_source.push_back(source[t]);
+  }
+  triangles.swap(unique_triangles);
+  source.swap(unique_source);
   if (triangles.empty())
   {
-    throw InputError("no non-degenerate triangles (" + std::to_string(health.input_triangles) +
+    throw InputError("no non-degenerate triangles (" + std::to_string(health->input_triangles) +
                      " in the input, all degenerate or repeated)");
   }
+}
 
-  // Manifold adjacency, then consistent winding by breadth-first search over it.
-  const int n = static_cast<int>(triangles.size());
-  auto buildAdjacency = [&](std::vector<Eigen::Vector3i>* neighbours, int* boundary, int* non_manifold)
-  {
-    neighbours->assign(n, Eigen::Vector3i(kBoundaryEdge, kBoundaryEdge, kBoundaryEdge));
-    *boundary = 0;
-    *non_manifold = 0;
-    const std::vector<EdgeRecord> edges = sortedEdges(triangles);
-    for (std::size_t i = 0; i < edges.size();)
-    {
-      std::size_t j = i;
-      while (j < edges.size() && edges[j].low == edges[i].low && edges[j].high == edges[i].high)
-      {
-        ++j;
-      }
-      const std::size_t count = j - i;
-      if (count == 1)
-      {
-        ++*boundary;
-      }
-      else if (count == 2)
-      {
-        (*neighbours)[edges[i].triangle][edges[i].local] = edges[i + 1].triangle;
-        (*neighbours)[edges[i + 1].triangle][edges[i + 1].local] = edges[i].triangle;
-      }
-      else
-      {
-        ++*non_manifold;
-        for (std::size_t e = i; e < j; ++e)
-        {
-          (*neighbours)[edges[e].triangle][edges[e].local] = kNonManifoldEdge;
-        }
-      }
-      i = j;
-    }
-  };
+// The neighbour table (TriangleMesh::neighbours()) of `triangles`, and its edge counts.
+struct Adjacency
+{
   std::vector<Eigen::Vector3i> neighbours;
   int boundary = 0;
   int non_manifold = 0;
-  buildAdjacency(&neighbours, &boundary, &non_manifold);
+};
 
-  std::vector<int> component(n, -1);
-  std::vector<bool> flipped(n, false);
-  int components = 0;
+Adjacency adjacencyOf(const std::vector<Eigen::Vector3i>& triangles)
+{
+  Adjacency adjacency;
+  std::vector<Eigen::Vector3i>& neighbours = adjacency.neighbours;
+  neighbours.assign(triangles.size(), Eigen::Vector3i(TriangleMesh::kBoundaryEdge, TriangleMesh::kBoundaryEdge,
+                                                      TriangleMesh::kBoundaryEdge));
+  const std::vector<EdgeRecord> edges = sortedEdges(triangles);
+  for (std::size_t i = 0; i < edges.size();)
+  {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j].low == edges[i].low && edges[j].high == edges[i].high)
+    {
+      ++j;
+    }
+    const std::size_t count = j - i;
+    if (count == 1)
+    {
+      ++adjacency.boundary;
+    }
+    else if (count == 2)
+    {
+      neighbours[edges[i].triangle][edges[i].local] = edges[i + 1].triangle;
+      neighbours[edges[i + 1].triangle][edges[i + 1].local] = edges[i].triangle;
+    }
+    else
+    {
+      ++adjacency.non_manifold;
+      for (std::size_t e = i; e < j; ++e)
+      {
+        neighbours[edges[e].triangle][edges[e].local] = TriangleMesh::kNonManifoldEdge;
+      }
+    }
+    i = j;
+  }
+  return adjacency;
+}
+
+// The components connected through manifold edges: per triangle, its component.
+struct Components
+{
+  std::vector<int> of_triangle;
+  int count = 0;
+};
+
+// Stage 5: consistent winding by breadth-first search over the manifold edges of each
+// component (its seed's winding wins); `flipped` records each triangle's reversals.
+Components windConsistently(std::vector<Eigen::Vector3i>* triangles_in, std::vector<Eigen::Vector3i>* neighbours_in,
+                            std::vector<bool>* flipped)
+{
+  std::vector<Eigen::Vector3i>& triangles = *triangles_in;
+  std::vector<Eigen::Vector3i>& neighbours = *neighbours_in;
+  const int n = static_cast<int>(triangles.size());
+  Components components;
+  std::vector<int>& component = components.of_triangle;
+  component.assign(n, -1);
   for (int seed = 0; seed < n; ++seed)
   {
     if (component[seed] >= 0)
@@ -280,7 +317,7 @@ TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOption
     }
     std::queue<int> queue;
     queue.push(seed);
-    component[seed] = components;
+    component[seed] = components.count;
     while (!queue.empty())
     {
       const int t = queue.front();
@@ -301,26 +338,34 @@ TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOption
           // and edge 2 the old edge 0, so the neighbour row is permuted alike.
           std::swap(triangles[u][1], triangles[u][2]);
           std::swap(neighbours[u][0], neighbours[u][2]);
-          flipped[u] = !flipped[u];
+          (*flipped)[u] = !(*flipped)[u];
         }
-        component[u] = components;
+        component[u] = components.count;
         queue.push(u);
       }
     }
-    ++components;
+    ++components.count;
   }
-  buildAdjacency(&neighbours, &boundary, &non_manifold);
+  return components;
+}
 
-  // Closed components with negative volume are inside out: flip them whole.
-  std::vector<double> volume(components, 0.0);
-  std::vector<bool> closed(components, true);
+// Stage 6: closed components with negative volume (relative to `origin`, so that far-away
+// meshes keep their precision) are inside out: flips them whole. True if any was.
+bool flipInsideOut(const std::vector<Eigen::Vector3d>& welded, const Eigen::Vector3d& origin,
+                   const Components& components, const std::vector<Eigen::Vector3i>& neighbours,
+                   std::vector<Eigen::Vector3i>* triangles_in, std::vector<bool>* flipped)
+{
+  std::vector<Eigen::Vector3i>& triangles = *triangles_in;
+  const std::vector<int>& component = components.of_triangle;
+  const int n = static_cast<int>(triangles.size());
+  std::vector<double> volume(components.count, 0.0);
+  std::vector<bool> closed(components.count, true);
   for (int t = 0; t < n; ++t)
   {
     const Eigen::Vector3d& a = welded[triangles[t][0]];
     const Eigen::Vector3d& b = welded[triangles[t][1]];
     const Eigen::Vector3d& c = welded[triangles[t][2]];
-    // Relative to the first vertex of the box, so that far-away meshes keep their precision.
-    volume[component[t]] += (a - lower).dot((b - lower).cross(c - lower)) / 6.0;
+    volume[component[t]] += (a - origin).dot((b - origin).cross(c - origin)) / 6.0;
     for (int k = 0; k < 3; ++k)
     {
       if (neighbours[t][k] < 0)
@@ -335,20 +380,19 @@ TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOption
     if (closed[component[t]] && volume[component[t]] < 0.0)
     {
       std::swap(triangles[t][1], triangles[t][2]);
-      flipped[t] = !flipped[t];
+      (*flipped)[t] = !(*flipped)[t];
       any_inverted = true;
     }
   }
-  if (any_inverted)
-  {
-    buildAdjacency(&neighbours, &boundary, &non_manifold);
-  }
-  health.flipped_triangles = static_cast<int>(std::count(flipped.begin(), flipped.end(), true));
-  health.boundary_edges = boundary;
-  health.non_manifold_edges = non_manifold;
-  health.components = components;
+  return any_inverted;
+}
+
+// Manifold edges whose two triangles still run them the same way (a non-orientable surface).
+int inconsistentWindingEdges(const std::vector<Eigen::Vector3i>& triangles,
+                             const std::vector<Eigen::Vector3i>& neighbours)
+{
   int conflicts = 0;
-  for (int t = 0; t < n; ++t)
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
@@ -359,67 +403,120 @@ TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOption
       }
     }
   }
-  health.inconsistent_winding_edges = conflicts;
+  return conflicts;
+}
 
-  // Keep only the vertices that triangles use, in their first-use order.
+// Stage 7 (first half): only the vertices that `triangles` use, in their first-use order; the
+// triangles' corners renumbered to them.
+std::vector<Eigen::Vector3d> usedVertices(const std::vector<Eigen::Vector3d>& welded,
+                                          std::vector<Eigen::Vector3i>* triangles)
+{
+  std::vector<Eigen::Vector3d> vertices;
   std::vector<int> compact(welded.size(), -1);
-  for (Eigen::Vector3i& t : triangles)
+  for (Eigen::Vector3i& t : *triangles)
   {
     for (int k = 0; k < 3; ++k)
     {
       if (compact[t[k]] < 0)
       {
-        compact[t[k]] = static_cast<int>(mesh.vertices_.size());
-        mesh.vertices_.push_back(welded[t[k]]);
+        compact[t[k]] = static_cast<int>(vertices.size());
+        vertices.push_back(welded[t[k]]);
       }
       t[k] = compact[t[k]];
     }
   }
-  mesh.triangles_ = std::move(triangles);
-  mesh.neighbours_ = std::move(neighbours);
-  mesh.source_triangle_ = std::move(source);
-  mesh.normals_.resize(n);
-  for (int t = 0; t < n; ++t)
+  return vertices;
+}
+}  // namespace
+
+// Seven stages: checks (1), welding (2), degenerate (3) and duplicate (4) triangles dropped,
+// consistent (5) and outward (6) winding, and the tables (7).
+TriangleMesh TriangleMesh::build(const TriangleSoup& soup, const MeshBuildOptions& options)
+{
+  TriangleMesh mesh;
+  MeshHealth& health = mesh.health_;
+  health.input_vertices = static_cast<int>(soup.vertices.size());
+  health.input_triangles = static_cast<int>(soup.triangles.size());
+  const BoundingBox box = checkedBoundingBox(soup);
+  mesh.bounding_box_diagonal_ = (box.upper - box.lower).norm();
+
+  // Weld duplicate vertices.
+  std::vector<Eigen::Vector3d> welded;
+  const std::vector<int> remap =
+      weld(soup.vertices, options.relative_weld_tolerance * mesh.bounding_box_diagonal_, &welded);
+  health.welded_vertices = health.input_vertices - static_cast<int>(welded.size());
+
+  KeptTriangles kept = dropDegenerate(soup, remap, welded, options, &health);
+  dropDuplicates(&kept, &health);
+  std::vector<Eigen::Vector3i>& triangles = kept.triangles;
+
+  // Manifold adjacency, then consistent winding by breadth-first search over it, then outward.
+  const int n = static_cast<int>(triangles.size());
+  std::vector<bool> flipped(n, false);
+  Adjacency adjacency = adjacencyOf(triangles);
+  const Components components = windConsistently(&triangles, &adjacency.neighbours, &flipped);
+  adjacency = adjacencyOf(triangles);
+  if (flipInsideOut(welded, box.lower, components, adjacency.neighbours, &triangles, &flipped))
   {
-    const Eigen::Vector3d& a = mesh.vertices_[mesh.triangles_[t][0]];
-    mesh.normals_[t] =
-        (mesh.vertices_[mesh.triangles_[t][1]] - a).cross(mesh.vertices_[mesh.triangles_[t][2]] - a).normalized();
+    adjacency = adjacencyOf(triangles);
   }
-  mesh.gradients_.resize(n);
+  health.flipped_triangles = static_cast<int>(std::count(flipped.begin(), flipped.end(), true));
+  health.boundary_edges = adjacency.boundary;
+  health.non_manifold_edges = adjacency.non_manifold;
+  health.components = components.count;
+  health.inconsistent_winding_edges = inconsistentWindingEdges(triangles, adjacency.neighbours);
+
+  mesh.vertices_ = usedVertices(welded, &triangles);
+  mesh.triangles_ = std::move(triangles);
+  mesh.neighbours_ = std::move(adjacency.neighbours);
+  mesh.source_triangle_ = std::move(kept.source);
+  mesh.buildTables();
+  return mesh;
+}
+
+void TriangleMesh::buildTables()
+{
+  const int n = static_cast<int>(triangles_.size());
+  normals_.resize(n);
   for (int t = 0; t < n; ++t)
   {
-    const Eigen::Vector3d& n_t = mesh.normals_[t];
-    const Eigen::Vector3d& a = mesh.corner(t, 0);
-    const Eigen::Vector3d& b = mesh.corner(t, 1);
-    const Eigen::Vector3d& c = mesh.corner(t, 2);
+    const Eigen::Vector3d& a = vertices_[triangles_[t][0]];
+    normals_[t] = (vertices_[triangles_[t][1]] - a).cross(vertices_[triangles_[t][2]] - a).normalized();
+  }
+  gradients_.resize(n);
+  for (int t = 0; t < n; ++t)
+  {
+    const Eigen::Vector3d& n_t = normals_[t];
+    const Eigen::Vector3d& a = corner(t, 0);
+    const Eigen::Vector3d& b = corner(t, 1);
+    const Eigen::Vector3d& c = corner(t, 2);
     const double twice_area = (b - a).cross(c - a).dot(n_t);
     // The gradient of lambda_j is normal x (edge opposite j, from j+1 to j+2) / (2 area).
-    mesh.gradients_[t].first = n_t.cross(c - b) / twice_area;
-    mesh.gradients_[t].second = n_t.cross(a - c) / twice_area;
+    gradients_[t].first = n_t.cross(c - b) / twice_area;
+    gradients_[t].second = n_t.cross(a - c) / twice_area;
   }
-  const int used_vertices = static_cast<int>(mesh.vertices_.size());
-  mesh.vertex_face_offsets_.assign(used_vertices + 1, 0);
-  for (const Eigen::Vector3i& t : mesh.triangles_)
+  const int used_vertices = static_cast<int>(vertices_.size());
+  vertex_face_offsets_.assign(used_vertices + 1, 0);
+  for (const Eigen::Vector3i& t : triangles_)
   {
     for (int k = 0; k < 3; ++k)
     {
-      ++mesh.vertex_face_offsets_[t[k] + 1];
+      ++vertex_face_offsets_[t[k] + 1];
     }
   }
   for (int v = 0; v < used_vertices; ++v)
   {
-    mesh.vertex_face_offsets_[v + 1] += mesh.vertex_face_offsets_[v];
+    vertex_face_offsets_[v + 1] += vertex_face_offsets_[v];
   }
-  mesh.vertex_faces_.resize(mesh.vertex_face_offsets_[used_vertices]);
-  std::vector<int> fill(mesh.vertex_face_offsets_.begin(), mesh.vertex_face_offsets_.end() - 1);
+  vertex_faces_.resize(vertex_face_offsets_[used_vertices]);
+  std::vector<int> fill(vertex_face_offsets_.begin(), vertex_face_offsets_.end() - 1);
   for (int t = 0; t < n; ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
-      mesh.vertex_faces_[fill[mesh.triangles_[t][k]]++] = t;
+      vertex_faces_[fill[triangles_[t][k]]++] = t;
     }
   }
-  return mesh;
 }
 
 std::size_t TriangleMesh::memoryBytes() const

@@ -5,6 +5,9 @@
 // A new contact model is a new file implementing this and one row in that list.
 #pragma once
 
+#include "area_contact.h"
+#include "pad_constraints.h"
+#include "proxy.h"
 #include "sub_god_object_injection.h"
 
 #include "god_finger/physics/contact_model.h"
@@ -14,6 +17,13 @@
 
 namespace god_finger
 {
+// Where a response puts what it adds to this step's solve.
+struct SolverAdditions
+{
+  SubGodObjectInjector* sub_god_objects = nullptr;  // pad_solver: points
+  PadConstraints* pads = nullptr;                   // pad_solver: constraint
+};
+
 class ContactResponse
 {
  public:
@@ -22,9 +32,9 @@ class ContactResponse
   // Not real-time (called on a model change and when a proxy is built).
   virtual void configureProxy(const WorldParams& params, btRigidBody* proxy) const = 0;
   // One contact area, between collision detection and the solver of step `step`: adds
-  // whatever the model adds to the solver. Real-time safe once the injector's lists have grown.
+  // whatever the model adds to the solver into `to`. Real-time safe once their lists have grown.
   virtual void respond(const WorldParams& params, const AreaContact& contact, Proxy* proxy, long step,
-                       SubGodObjectInjector* injector) const = 0;
+                       const SolverAdditions& to) const = 0;
 };
 
 // The response of `model`, from the one list (contact_model.cpp).

@@ -8,7 +8,7 @@
 // island (its group: what rests on it and what it rests on wakes with it), when a proxy or a
 // body moving faster than the sleep speed comes within Bullet's contact threshold of its box,
 // before the step's collision detection; the world then puts back the contact points and impulses
-// the group slept on (GodFingerWorld::Impl::restoreWokenContacts).
+// the group slept on (slept_contacts.h).
 //
 // Units: m (boxes in world). Real-time: lookups and overlap queries allocate nothing; putting a
 // group to sleep and waking one do (a tree node per body, as Bullet's broadphase does on adding

@@ -1,5 +1,5 @@
 // god_finger: the paper's method, the proxy's point plus the sub-god-objects of its contact
-// area (sub_god_object_injection.h), as points or as one pad constraint (pad_constraint.h).
+// area, as points (sub_god_object_injection.h) or as one pad constraint (pad_constraints.h).
 #include "contact_response.h"
 
 namespace god_finger
@@ -15,15 +15,15 @@ class GodFingerResponse : public ContactResponse
     proxy->setSpinningFriction(0.0);
   }
   void respond(const WorldParams& params, const AreaContact& contact, Proxy* proxy, long step,
-               SubGodObjectInjector* injector) const override
+               const SolverAdditions& to) const override
   {
     if (params.pad_solver == PadSolver::kConstraint)
     {
-      injector->injectPad(contact, proxy, step);
+      to.pads->add(contact, proxy, step);
     }
     else
     {
-      injector->inject(contact, *proxy, step);
+      to.sub_god_objects->inject(contact, *proxy, step);
     }
   }
 };

@@ -1,26 +1,26 @@
 #include "god_finger/physics/god_finger_world.h"
 
 #include "bullet_helpers.h"
-#include "collision_shape.h"
 #include "contact_response.h"
+#include "contact_solver.h"
 #include "dormant_bodies.h"
 #include "finger_contact_friction.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/physics/scene_budget.h"
-#include "god_finger/physics/walk_surface.h"
+#include "hooked_world.h"
+#include "pad_constraints.h"
 #include "proxy.h"
+#include "proxy_touches.h"
+#include "scene_body.h"
+#include "slept_contacts.h"
 #include "sub_god_object_injection.h"
-#include "support_pass_solver.h"
-#include "touching_islands.h"
 
 #include <btBulletDynamicsCommon.h>
 
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <functional>
-#include <optional>
 #include <sstream>
 
 namespace god_finger
@@ -29,120 +29,11 @@ namespace
 {
 // Sub-god-objects closer than this to the contact point (m) duplicate it and are not added.
 constexpr double kCoincident = 1e-7;
-// Two touches of one finger on one body whose normals differ by less than this (rad) and whose
-// points are within r_max are one touched region (Impl::coveredByDeeperTouch).
-constexpr double kSameRegionAngle = 20.0 * 3.14159265358979323846 / 180.0;
-
-// The exact walk's surface for a sphere or a cylinder; none for boxes (their 12-triangle walk
-// surface is exact already) and meshes.
-std::optional<PrimitiveSurface> primitiveSurface(const Geometry& geometry)
-{
-  if (geometry.kind == GeometryKind::kSphere)
-  {
-    return PrimitiveSurface{PrimitiveSurface::Kind::kSphere, geometry.radius, 0.0};
-  }
-  if (geometry.kind == GeometryKind::kCylinder)
-  {
-    return PrimitiveSurface{PrimitiveSurface::Kind::kCylinder, geometry.radius, geometry.length};
-  }
-  return std::nullopt;
-}
-
-// Runs a hook between collision detection and the solver (where sub-god-objects join), and
-// decides sleeping with this world's own time (Bullet's is one global, gDeactivationTime).
-class HookedWorld : public btDiscreteDynamicsWorld
-{
- public:
-  HookedWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
-              btCollisionConfiguration* configuration)
-      : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration)
-  {
-    // Islands of touching bodies (touching_islands.h), in Bullet's own storage: the world
-    // destroys and frees its island manager as it made it.
-    m_islandManager->~btSimulationIslandManager();
-    btAlignedFree(m_islandManager);
-    m_islandManager = new (btAlignedAlloc(sizeof(TouchingIslands), 16)) TouchingIslands();
-  }
-  std::function<void()> after_collision;
-  double sleep_time = 0.0;  // s, SleepParams::time; 0: bodies carry DISABLE_DEACTIVATION
-  void performDiscreteCollisionDetection() override
-  {
-    btDiscreteDynamicsWorld::performDiscreteCollisionDetection();
-    if (after_collision)
-    {
-      after_collision();
-    }
-  }
-
- protected:
-  // Bullet's, for awake bodies only: Bullet predicts every dynamic body's motion each step, and
-  // for a sleeping body (zero velocity) that was a fifth of a 1000-box table's step.
-  void predictUnconstraintMotion(btScalar time_step) override
-  {
-    for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i)
-    {
-      btRigidBody* body = m_nonStaticRigidBodies[i];
-      if (body->isActive() && !body->isStaticOrKinematicObject())
-      {
-        body->applyDamping(time_step);
-        body->predictIntegratedTransform(time_step, body->getInterpolationWorldTransform());
-      }
-    }
-  }
-
-  // Bullet's rule (btDiscreteDynamicsWorld::updateActivationState) with sleep_time for
-  // gDeactivationTime: a body slow for longer wants to sleep; its island (simulation island
-  // manager, next step) sleeps when every body in it wants to; a sleeping body keeps zero
-  // velocity.
-  void updateActivationState(btScalar time_step) override
-  {
-    for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i)
-    {
-      btRigidBody* body = m_nonStaticRigidBodies[i];
-      body->updateDeactivation(time_step);
-      const int state = body->getActivationState();
-      if (state == DISABLE_DEACTIVATION || state == DISABLE_SIMULATION)
-      {
-        continue;
-      }
-      const bool wants_sleep =
-          state == ISLAND_SLEEPING || state == WANTS_DEACTIVATION || body->getDeactivationTime() > sleep_time;
-      if (!wants_sleep)
-      {
-        body->setActivationState(ACTIVE_TAG);
-      }
-      else if (state == ACTIVE_TAG)
-      {
-        body->setActivationState(WANTS_DEACTIVATION);
-      }
-      else if (state == ISLAND_SLEEPING)
-      {
-        body->setLinearVelocity(btVector3(0, 0, 0));
-        body->setAngularVelocity(btVector3(0, 0, 0));
-      }
-    }
-  }
-};
 }  // namespace
 
 struct GodFingerWorld::Impl
 {
-  struct Body
-  {
-    std::unique_ptr<TriangleMesh> walk;
-    std::unique_ptr<SurfaceLocator> locator;
-    // Spheres and cylinders: contact areas by exact walks (core/primitive_walk.h); the walk
-    // surface then only serves the collision shape and walkSurface().
-    std::optional<PrimitiveSurface> primitive;
-    std::unique_ptr<CollisionShape> collision;
-    std::unique_ptr<btCompoundShape> placed;  // the collision shape placed in the centre-of-mass frame
-    std::unique_ptr<btRigidBody> rigid;
-    Eigen::Isometry3d com_in_link = Eigen::Isometry3d::Identity();
-    Eigen::Isometry3d geometry_in_com = Eigen::Isometry3d::Identity();
-    btVector3 principal_inertia = btVector3(0, 0, 0);
-    Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
-    Eigen::Vector3d net_force = Eigen::Vector3d::Zero();
-  };
+  using Body = SceneBody;
   WorldParams params;
   SceneDescription scene;
   std::vector<Body> bodies;
@@ -150,9 +41,11 @@ struct GodFingerWorld::Impl
   std::unique_ptr<btDefaultCollisionConfiguration> configuration;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btDbvtBroadphase> broadphase;
-  std::unique_ptr<SupportPassSolver> solver;
+  std::unique_ptr<ContactSolver> solver;
   std::unique_ptr<HookedWorld> world;
   std::unique_ptr<SubGodObjectInjector> injector;
+  // This step's pads (pad_solver: constraint); the solver reads them.
+  PadConstraints pads;
   // Every model's response, made once; `response` is the current model's (a model change
   // while running allocates nothing).
   std::vector<std::pair<ContactModel, std::unique_ptr<ContactResponse>>> responses;
@@ -178,36 +71,12 @@ struct GodFingerWorld::Impl
   DormantBodies dormant;
   std::vector<int> awake;
   std::vector<int> group_of_tag;
-  // The contact points a body had when it fell asleep (with the body on the other side), put
-  // back into its new manifolds in the step it wakes: a woken body rests on the contacts and
-  // impulses it slept on, instead of finding them anew one point a step (GJK gives one), which
-  // made woken piles wobble, wake their neighbours and never sleep. Sleep and wake transitions
-  // only (they allocate).
-  struct SavedContact
-  {
-    const btCollisionObject* other = nullptr;
-    btManifoldPoint point;  // with this body as A
-  };
-  std::vector<std::vector<SavedContact>> saved_contacts;  // by body
-  std::vector<char> falling_asleep;                       // by body, this step
-  std::vector<int> woken;                                 // this step, until their contacts are back
-  // This step's proxy-body touches (the deepest point of each manifold), before merging;
-  // reserved once (kMaxTouches), so that stepping never allocates.
-  struct Touch
-  {
-    btPersistentManifold* manifold = nullptr;
-    int point = 0;
-    bool proxy_is_a = false;
-    int proxy = 0;
-    int body = 0;
-  };
-  static constexpr std::size_t kMaxTouches = 256;
-  std::vector<Touch> touches = []
-  {
-    std::vector<Touch> reserved;
-    reserved.reserve(kMaxTouches);
-    return reserved;
-  }();
+  // The contacts sleeping bodies slept on, put back when they wake (slept_contacts.h); by body,
+  // the bodies falling asleep this step.
+  SleptContacts slept_contacts;
+  std::vector<char> falling_asleep;
+  // This step's proxy-body touches (proxy_touches.h).
+  ProxyTouches touches;
   double time = 0.0;
   double deepest_penetration = 0.0;
   long steps = 0;
@@ -216,30 +85,9 @@ struct GodFingerWorld::Impl
   void buildBodies()
   {
     const double max_edge = params.walk_edge_per_max_radius * params.contact.max_radius;
-    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    for (const BodyDescription& description : scene.bodies)
     {
-      const BodyDescription& description = scene.bodies[i];
-      Body body;
-      body.walk = std::make_unique<TriangleMesh>(makeWalkSurface(description.geometry, max_edge));
-      body.locator = std::make_unique<SurfaceLocator>(*body.walk);
-      body.primitive = primitiveSurface(description.geometry);
-      body.collision = makeCollisionShape(description.geometry, *body.walk, description.is_static);
-      if (!description.is_static)
-      {
-        // Bullet's body frame is the centre of mass on the principal axes of inertia.
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(description.inertia);
-        Eigen::Matrix3d axes = solver.eigenvectors();
-        if (axes.determinant() < 0.0)
-        {
-          axes.col(2) = -axes.col(2);
-        }
-        body.com_in_link = description.inertial_origin;
-        body.com_in_link.linear() = description.inertial_origin.linear() * axes;
-        const Eigen::Vector3d moments = solver.eigenvalues();
-        body.principal_inertia = toBullet(moments);
-      }
-      body.geometry_in_com = body.com_in_link.inverse() * description.collision_origin;
-      bodies.push_back(std::move(body));
+      bodies.push_back(makeSceneBody(description, max_edge));
     }
   }
 
@@ -262,7 +110,7 @@ struct GodFingerWorld::Impl
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
     dispatcher->setNearCallback(&Impl::nearCallback);
     broadphase = std::make_unique<btDbvtBroadphase>();
-    solver = std::make_unique<SupportPassSolver>(params.support_passes);
+    solver = std::make_unique<ContactSolver>(params.support_passes, &pads);
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
     world->setGravity(toBullet(params.gravity));
     world->getSolverInfo().m_numIterations = params.solver_iterations;
@@ -278,25 +126,11 @@ struct GodFingerWorld::Impl
     // Sleeping bodies keep their bounding boxes (static ones never move).
     world->setForceUpdateAllAabbs(false);
     injector = std::make_unique<SubGodObjectInjector>(dispatcher.get());
-    solver->setPadRows(injector->padRows());
     chooseResponse();
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
       Body& body = bodies[i];
-      const BodyDescription& description = scene.bodies[i];
-      body.placed = std::make_unique<btCompoundShape>();
-      body.placed->addChildShape(toBullet(body.geometry_in_com), body.collision->shape);
-      const double mass = description.is_static ? 0.0 : description.mass;
-      btRigidBody::btRigidBodyConstructionInfo info(
-          mass, nullptr, body.placed.get(), description.is_static ? btVector3(0, 0, 0) : body.principal_inertia);
-      info.m_startWorldTransform = toBullet(description.pose * body.com_in_link);
-      info.m_friction = description.material.friction;
-      info.m_rollingFriction = description.material.rolling_friction;
-      info.m_spinningFriction = description.material.spinning_friction;
-      info.m_restitution = description.material.restitution;
-      body.rigid = std::make_unique<btRigidBody>(info);
-      body.rigid->setUserIndex(kKindBody);
-      body.rigid->setUserIndex2(static_cast<int>(i));
+      buildRigidBody(scene.bodies[i], static_cast<int>(i), &body);
       prepareSleep(body.rigid.get());
       world->addRigidBody(body.rigid.get(), kBodyGroup, btBroadphaseProxy::AllFilter);
       body.previous_velocity = Eigen::Vector3d::Zero();
@@ -317,10 +151,8 @@ struct GodFingerWorld::Impl
       }
     }
     group_of_tag.assign(bodies.size() + proxies.size(), -1);
-    saved_contacts.assign(bodies.size(), {});
+    slept_contacts.reset(static_cast<int>(bodies.size()));
     falling_asleep.assign(bodies.size(), 0);
-    woken.clear();
-    woken.reserve(bodies.size());
   }
 
   // Back into Bullet's world, at rest where it slept. Woken by a proxy or a wrench, it stays awake
@@ -337,68 +169,7 @@ struct GodFingerWorld::Impl
       prepareSleep(rigid);
     }
     awake.push_back(index);
-    woken.push_back(index);
-  }
-
-  // The contact point `point` of a manifold whose body A is `a`, as seen with `a` as B instead.
-  static btManifoldPoint swapped(const btManifoldPoint& point)
-  {
-    btManifoldPoint out = point;
-    out.m_localPointA = point.m_localPointB;
-    out.m_localPointB = point.m_localPointA;
-    out.m_positionWorldOnA = point.m_positionWorldOnB;
-    out.m_positionWorldOnB = point.m_positionWorldOnA;
-    out.m_normalWorldOnB = -point.m_normalWorldOnB;
-    out.m_partId0 = point.m_partId1;
-    out.m_partId1 = point.m_partId0;
-    out.m_index0 = point.m_index1;
-    out.m_index1 = point.m_index0;
-    return out;
-  }
-
-  // The step's woken bodies get back the contacts they slept on (after the narrow phase, before
-  // the islands and the solver), where the new manifold lacks them and they still touch.
-  void restoreWokenContacts()
-  {
-    if (woken.empty())
-    {
-      return;
-    }
-    const int manifold_count = dispatcher->getNumManifolds();
-    for (int m = 0; m < manifold_count; ++m)
-    {
-      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-      for (int side = 0; side < 2; ++side)
-      {
-        const btCollisionObject* self = side == 0 ? manifold->getBody0() : manifold->getBody1();
-        const btCollisionObject* other = side == 0 ? manifold->getBody1() : manifold->getBody0();
-        if (self->getUserIndex() != kKindBody)
-        {
-          continue;
-        }
-        std::vector<SavedContact>& saved = saved_contacts[self->getUserIndex2()];
-        for (const SavedContact& contact : saved)
-        {
-          if (contact.other != other)
-          {
-            continue;
-          }
-          btManifoldPoint point = side == 0 ? contact.point : swapped(contact.point);
-          point.m_positionWorldOnA = manifold->getBody0()->getWorldTransform() * point.m_localPointA;
-          point.m_positionWorldOnB = manifold->getBody1()->getWorldTransform() * point.m_localPointB;
-          point.m_distance1 = (point.m_positionWorldOnA - point.m_positionWorldOnB).dot(point.m_normalWorldOnB);
-          if (point.m_distance1 <= manifold->getContactBreakingThreshold() && manifold->getCacheEntry(point) < 0)
-          {
-            manifold->addManifoldPoint(point);
-          }
-        }
-      }
-    }
-    for (const int index : woken)
-    {
-      saved_contacts[index].clear();
-    }
-    woken.clear();
+    slept_contacts.woke(index);
   }
 
   // Before the step's collision detection: every dormant group within Bullet's contact threshold
@@ -445,24 +216,7 @@ struct GodFingerWorld::Impl
     {
       return;
     }
-    const int manifold_count = dispatcher->getNumManifolds();
-    for (int m = 0; m < manifold_count; ++m)
-    {
-      const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-      const btCollisionObject* a = manifold->getBody0();
-      const btCollisionObject* b = manifold->getBody1();
-      for (int p = 0; p < manifold->getNumContacts(); ++p)
-      {
-        if (a->getUserIndex() == kKindBody && falling_asleep[a->getUserIndex2()])
-        {
-          saved_contacts[a->getUserIndex2()].push_back({b, manifold->getContactPoint(p)});
-        }
-        if (b->getUserIndex() == kKindBody && falling_asleep[b->getUserIndex2()])
-        {
-          saved_contacts[b->getUserIndex2()].push_back({a, swapped(manifold->getContactPoint(p))});
-        }
-      }
-    }
+    slept_contacts.save(dispatcher.get(), falling_asleep);
     for (std::size_t k = 0; k < awake.size();)
     {
       const int index = awake[k];
@@ -571,8 +325,9 @@ struct GodFingerWorld::Impl
   // contact; with kGodFinger their sub-god-objects join the solver.
   void injectContactAreas()
   {
-    restoreWokenContacts();
+    slept_contacts.restore(dispatcher.get());
     injector->release();
+    pads.clear();
     touches.clear();
     for (Proxy& proxy : proxies)
     {
@@ -616,59 +371,23 @@ struct GodFingerWorld::Impl
       {
         continue;
       }
-      if (touches.size() < touches.capacity())
-      {
-        touches.push_back({manifold, deepest, proxy_is_a, (proxy_is_a ? a : b)->getUserIndex2(),
-                           (proxy_is_a ? b : a)->getUserIndex2()});
-      }
+      touches.add({manifold, deepest, proxy_is_a, (proxy_is_a ? a : b)->getUserIndex2(),
+                   (proxy_is_a ? b : a)->getUserIndex2()});
     }
     // In the dispatcher's order (a scene where each finger touches each body once is unchanged
     // bit for bit); a touch that another, deeper touch of the same finger and body covers is
     // no area of its own, and its manifold leaves the solver for this step.
     for (std::size_t i = 0; i < touches.size(); ++i)
     {
-      const Touch& touch = touches[i];
+      const ProxyTouch& touch = touches[i];
       btManifoldPoint& contact = touch.manifold->getContactPoint(touch.point);
-      if (coveredByDeeperTouch(i))
+      if (touches.coveredByDeeperTouch(i, params.contact.max_radius))
       {
         touch.manifold->clearManifold();
         continue;
       }
       addContactArea(touch.manifold, contact, touch.proxy_is_a, touch.proxy, touch.body);
     }
-  }
-
-  // One finger touching one body in several places: a concave body collides as a compound of
-  // hulls (collision_shape.h), and where two hulls meet under the finger each gives a contact at
-  // nearly the same point. A touch is covered (and dropped) when another touch of the same
-  // finger and body is deeper (or as deep and earlier), lies within r_max, and its normal is
-  // within kSameRegionAngle: one pad per touched region, walked on the true surface from the
-  // deepest point. Touches of a true concave corner (normals further apart) each keep theirs.
-  bool coveredByDeeperTouch(std::size_t index) const
-  {
-    const Touch& touch = touches[index];
-    const btManifoldPoint& contact = touch.manifold->getContactPoint(touch.point);
-    const btVector3 point = touch.proxy_is_a ? contact.getPositionWorldOnB() : contact.getPositionWorldOnA();
-    const btVector3 normal = (touch.proxy_is_a ? 1.0 : -1.0) * contact.m_normalWorldOnB;
-    for (std::size_t j = 0; j < touches.size(); ++j)
-    {
-      const Touch& other = touches[j];
-      if (j == index || other.proxy != touch.proxy || other.body != touch.body)
-      {
-        continue;
-      }
-      const btManifoldPoint& deeper = other.manifold->getContactPoint(other.point);
-      const bool is_deeper =
-          deeper.getDistance() < contact.getDistance() || (deeper.getDistance() == contact.getDistance() && j < index);
-      const btVector3 other_point = other.proxy_is_a ? deeper.getPositionWorldOnB() : deeper.getPositionWorldOnA();
-      const btVector3 other_normal = (other.proxy_is_a ? 1.0 : -1.0) * deeper.m_normalWorldOnB;
-      if (is_deeper && (other_point - point).length() <= params.contact.max_radius &&
-          other_normal.dot(normal) >= std::cos(kSameRegionAngle))
-      {
-        return true;
-      }
-    }
-    return false;
   }
 
   void addContactArea(btPersistentManifold* manifold, btManifoldPoint& contact, bool proxy_is_a, int proxy_index,
@@ -713,14 +432,8 @@ struct GodFingerWorld::Impl
       return;
     }
     proxy.reference_tangents[body_index] = scratch.first_tangent;
-    PadShape& pad = proxy.pads[body_index];
-    if (pad.last_step != steps - 1)
-    {
-      pad.orientation = to_world.linear();
-    }
-    pad.last_step = steps;
     // The object's rotation relative to the pad since the contact began.
-    const Eigen::Matrix3d object_to_pad = pad.orientation * to_world.linear().transpose();
+    const Eigen::Matrix3d object_to_pad = objectTurnSinceContact(to_world, steps, &proxy.pads[body_index]);
 
     WorldContactArea& area = state.contacts[state.contact_count++];
     area.body = body_index;
@@ -752,7 +465,7 @@ struct GodFingerWorld::Impl
     area_contact.object_to_pad = object_to_pad;
     area_contact.area = &area;
     area_contact.radial_index = radial_index.data();
-    response->respond(params, area_contact, &proxy, steps, injector.get());
+    response->respond(params, area_contact, &proxy, steps, {injector.get(), &pads});
   }
 
   void step()
@@ -779,6 +492,7 @@ struct GodFingerWorld::Impl
     solver->resetCounts();
     world->stepSimulation(dt, 0);
     injector->recordImpulses(&proxies, steps);
+    pads.recordImpulses(steps);
     time = (steps + 1) * dt;
     ++steps;
     for (const int index : awake)
@@ -802,6 +516,7 @@ struct GodFingerWorld::Impl
       return;
     }
     injector->release();
+    pads.clear();
     for (Proxy& proxy : proxies)
     {
       world->removeRigidBody(proxy.rigid.get());
@@ -1057,11 +772,6 @@ int GodFingerWorld::awakeBodyCount() const
     awake += impl_->bodies[index].rigid->isActive() ? 1 : 0;
   }
   return awake;
-}
-
-int GodFingerWorld::solverContactPoints() const
-{
-  return impl_->solver->points();
 }
 
 int GodFingerWorld::solverContactRows() const

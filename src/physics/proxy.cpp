@@ -34,7 +34,6 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->state.proxy_position = proxy->initial;
   proxy->reference_tangents.assign(body_count, Eigen::Vector3d::Zero());
   proxy->warm_starts.assign(body_count, {});
-  proxy->pads.assign(body_count, PadShape());
-  proxy->pad_states.assign(body_count, PadState());
+  proxy->pads.assign(body_count, PadState());
 }
 }  // namespace god_finger

@@ -3,37 +3,8 @@
 #include "bullet_helpers.h"
 #include "god_finger/core/sub_god_object_distance.h"
 
-#include <cmath>
-
 namespace god_finger
 {
-namespace
-{
-// Replaces the fresh solver points by the anchored material points of `warm` (the step before)
-// unless that point slipped (a friction row at its bound: Bullet bounds each direction by mu
-// times the normal impulse) or its anchor lies away from the fresh point (the area moved on).
-void anchorIfSticking(const WarmStart& warm, const btCollisionObject& proxy_object, const btCollisionObject& object,
-                      double area_radius, btVector3* on_object, btVector3* on_proxy)
-{
-  const btVector3 anchored_object = object.getWorldTransform() * toBullet(warm.anchor_on_object);
-  const btVector3 anchored_proxy = proxy_object.getWorldTransform() * toBullet(warm.anchor_on_proxy);
-  const double bound = 0.999 * warm.friction * warm.normal;
-  const bool slipped = std::abs(warm.lateral1) >= bound || std::abs(warm.lateral2) >= bound;
-  const bool moved_on = (anchored_object - *on_object).length() > 0.25 * area_radius;
-  if (!slipped && !moved_on)
-  {
-    *on_object = anchored_object;
-    *on_proxy = anchored_proxy;
-  }
-}
-
-Eigen::Quaterniond orientationOf(const btCollisionObject& object)
-{
-  const btQuaternion q = object.getWorldTransform().getRotation();
-  return Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z());
-}
-}  // namespace
-
 void SubGodObjectInjector::inject(const AreaContact& c, const Proxy& proxy, long step)
 {
   const btCollisionObject* a = c.manifold->getBody0();
@@ -109,73 +80,6 @@ void SubGodObjectInjector::inject(const AreaContact& c, const Proxy& proxy, long
   }
 }
 
-void SubGodObjectInjector::injectPad(const AreaContact& c, Proxy* proxy, long step)
-{
-  btManifoldPoint& contact = *c.contact;
-  const btCollisionObject* a = c.manifold->getBody0();
-  const btCollisionObject* b = c.manifold->getBody1();
-  const btCollisionObject* proxy_object = c.proxy_is_a ? a : b;
-  const btCollisionObject* object = c.proxy_is_a ? b : a;
-  PadState& state = proxy->pad_states[c.body_index];
-  const bool continued = state.linear.step == step - 1;
-  const PadGeometry pad = padGeometry(c.point_world, c.normal_world, *c.area);
-  // The solver point at the centre of pressure, at its tilt-corrected distance, anchored as a
-  // sub-god-object is.
-  const double distance = tiltCorrectedDistance(contact.getDistance(), c.normal_world, c.object_to_pad,
-                                                pad.centre_of_pressure - c.point_world);
-  btVector3 on_object = toBullet(pad.centre_of_pressure);
-  btVector3 on_proxy = on_object + toBullet(c.normal_world) * distance;
-  if (continued)
-  {
-    anchorIfSticking(state.linear, *proxy_object, *object, c.area->radius, &on_object, &on_proxy);
-  }
-  contact.m_positionWorldOnA = c.proxy_is_a ? on_proxy : on_object;
-  contact.m_positionWorldOnB = c.proxy_is_a ? on_object : on_proxy;
-  contact.m_distance1 = distance;
-  contact.m_contactPointFlags |= BT_CONTACT_FLAG_FRICTION_ANCHOR | kPadPointFlag;
-  // The whole pad's compliance on one point: the points layout's true contact and
-  // sub-god-objects in parallel (FingerPadParams is per point), so that both layouts sink alike.
-  if (contact.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING)
-  {
-    const double points = 1.0 + c.area->sub_god_object_count;
-    contact.m_combinedContactStiffness1 = points * btManifoldResult::calculateCombinedContactStiffness(a, b);
-    contact.m_combinedContactDamping1 = points * btManifoldResult::calculateCombinedContactDamping(a, b);
-  }
-  contact.m_index0 = static_cast<int>(pads_.size());
-  contact.m_combinedSpinningFriction = contact.m_combinedFriction * pad.torsional_lever;
-  // Bullet adds the torsional rows only when this is > 0: a point-like area (fewer than three
-  // sub-god-objects, or on a static object, which the non-turning proxy cannot twist) has none.
-  const bool turns = !object->isStaticOrKinematicObject() && pad.support_radius > 0.0;
-  contact.m_combinedRollingFriction = turns ? pad.support_radius : 0.0;
-  if (continued)
-  {
-    contact.m_appliedImpulse = state.linear.normal;
-    contact.m_appliedImpulseLateral1 = state.linear.lateral1;
-    contact.m_appliedImpulseLateral2 = state.linear.lateral2;
-  }
-  // The orientation anchor, and the object's turn since (as body B's turn relative to A).
-  const Eigen::Quaterniond now = orientationOf(*object);
-  if (!continued || state.twist_slipped)
-  {
-    state.object_at_anchor = now;
-    state.torque_impulse.setZero();
-  }
-  const Eigen::AngleAxisd turn(now * state.object_at_anchor.conjugate());
-  PadRows rows;
-  rows.point = &contact;
-  rows.body0 = a;
-  rows.body1 = b;
-  rows.state = &state;
-  rows.turn_since_anchor = (c.proxy_is_a ? 1.0 : -1.0) * turn.angle() * turn.axis();
-  rows.warm_torque_impulse = state.torque_impulse;
-  state.twist_slipped = false;
-  state.torque_impulse.setZero();
-  pads_.push_back(rows);
-  // The anchor as material points, as for a sub-god-object.
-  state.linear.anchor_on_proxy = toEigen(proxy_object->getWorldTransform().invXform(on_proxy));
-  state.linear.anchor_on_object = toEigen(object->getWorldTransform().invXform(on_object));
-}
-
 void SubGodObjectInjector::recordImpulses(std::vector<Proxy>* proxies, long step)
 {
   for (const InjectedPoint& record : points_)
@@ -190,34 +94,11 @@ void SubGodObjectInjector::recordImpulses(std::vector<Proxy>* proxies, long step
     warm.anchor_on_proxy = record.anchor_on_proxy;
     warm.anchor_on_object = record.anchor_on_object;
   }
-  // The solver wrote the torsional impulses and slips (support_pass_solver.cpp). The point
-  // stays in Bullet's manifold: back to a plain contact, so that a step without a contact area
-  // (or another model) does not find it a pad.
-  for (PadRows& rows : pads_)
-  {
-    btManifoldPoint& point = *rows.point;
-    WarmStart& warm = rows.state->linear;
-    warm.step = step;
-    warm.normal = point.m_appliedImpulse;
-    warm.lateral1 = point.m_appliedImpulseLateral1;
-    warm.lateral2 = point.m_appliedImpulseLateral2;
-    warm.friction = point.m_combinedFriction;
-    point.m_contactPointFlags &= ~(kPadPointFlag | BT_CONTACT_FLAG_FRICTION_ANCHOR);
-    point.m_combinedSpinningFriction = btManifoldResult::calculateCombinedSpinningFriction(rows.body0, rows.body1);
-    point.m_combinedRollingFriction = btManifoldResult::calculateCombinedRollingFriction(rows.body0, rows.body1);
-    if (point.m_contactPointFlags & BT_CONTACT_FLAG_CONTACT_STIFFNESS_DAMPING)
-    {
-      point.m_combinedContactStiffness1 = btManifoldResult::calculateCombinedContactStiffness(rows.body0, rows.body1);
-      point.m_combinedContactDamping1 = btManifoldResult::calculateCombinedContactDamping(rows.body0, rows.body1);
-    }
-  }
-  pads_.clear();
 }
 
 void SubGodObjectInjector::release()
 {
   points_.clear();
-  pads_.clear();
   for (btPersistentManifold* manifold : manifolds_)
   {
     dispatcher_->releaseManifold(manifold);

@@ -134,7 +134,7 @@ TEST(Experiment, PinchCylinderStillUnderGodFingerOscillatesUnderGodObject)
   {
     SCOPED_TRACE(padSolverName(solver));
     const ExperimentResult finger = run(Scenario::kPinchCylinder, ContactModel::kGodFinger, solver);
-    // Friction anchors on the sub-god-objects (sub_god_object_injection.h): 1.1 mrad without
+    // Friction anchors on the sub-god-objects (warm_start.h): 1.1 mrad without
     // them (a creep that grew with time), 1e-10 rad with them; the pad constraint's anchored
     // torsional rows hold it to 0.
     EXPECT_LT(finger.metrics.at("rotation_about_normal_rad"), 1e-5);

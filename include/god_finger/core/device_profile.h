@@ -1,7 +1,8 @@
 // A device's profile (config/devices/NAME.yaml): what the hand can take and how the coupling
-// renders for it. Loaded once per interface (under the interface's `profile/` namespace in
-// ROS) and given to everything that renders or simulates that interface: the driver's force
-// guard, the haptic node's local coupling, the world's proxy and the servo loop.
+// renders for it. Loaded once per interface (into the interface's namespace NAME/ in ROS, by
+// launch/interface.launch) and given to everything that renders or simulates that interface:
+// the driver's force guard, the haptic node's local coupling, the world's proxy and the servo
+// loop.
 #pragma once
 
 #include "god_finger/core/force_guard.h"

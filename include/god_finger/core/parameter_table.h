@@ -2,8 +2,8 @@
 // meaning and where it lives in its struct. The struct's member initialiser is the one default
 // (a row reads it from a default-constructed struct). Everything that touches parameters is
 // built from the tables: validation, reading from a ParameterSource (ROS or a map), the CLI
-// flags, the JSON output (parameter_json.h), the README's tables (test/unit/parameter_tables_test checks them)
-// and dynamic_reconfigure (the cfg is checked against the table by the same test).
+// flags, the JSON output (parameter_json.h), the README's tables and dynamic_reconfigure
+// (test/physics/parameter_tables_test checks the README and the cfg against the tables).
 // Adding a parameter is its struct member and one row.
 //
 // Not real-time: reading and printing allocate. Names are as ROS, JSON and the cfg spell them;

@@ -5,7 +5,8 @@
 // Invariants: capacity fixed at construction (the only allocation; elements are copied into
 // preallocated slots, so a T whose copy does not allocate keeps push/pop allocation-free);
 // tryPush never overwrites an unread element; elements come out in the order they went in.
-// tryPush only from the producer, tryPop/size only from the consumer. Real-time safe.
+// tryPush, reserve and commit only from the producer, tryPop only from the consumer; empty and
+// capacity from either. Real-time safe.
 #pragma once
 
 #include <atomic>

@@ -131,6 +131,9 @@ class TriangleMesh
   std::size_t memoryBytes() const;
 
  private:
+  // build()'s last stage: normals, barycentric gradients and the vertex -> faces table, from
+  // vertices_ and triangles_.
+  void buildTables();
   std::vector<Eigen::Vector3d> vertices_;
   std::vector<Eigen::Vector3i> triangles_;
   std::vector<Eigen::Vector3d> normals_;

@@ -35,7 +35,7 @@
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
 // +-0.5 mm drawn from the seed), documented per scenario in experiment.cpp.
-// Contact parameters: the core's, except D0' = 1 mm (see scenarioParams).
+// Contact parameters: the core's defaults (ContactParams; D0' = 1 mm).
 #pragma once
 
 #include "god_finger/core/waypoint_path.h"
@@ -112,12 +112,10 @@ struct ExperimentResult
   std::vector<PoseSample> trajectory;  // see ExperimentOptions::sample_period
 };
 
-// The world parameters a scenario runs with (its contact parameters, documented there).
+// The world parameters a scenario runs with: the defaults (WorldParams), with the options'
+// time step, solver iterations, pad solver and model.
 WorldParams scenarioParams(const ExperimentOptions& options);
 
-// A scenario's set-up without running it (benchmarks step it themselves): its scene, the
-// watched object, the hand's path per finger (device targets in world, m, against time, s),
-// and its own length (s).
 // A script's times: its own length, when the lift ends (metrics "after the lift" start there)
 // and the height it commands.
 struct ScenarioTimes
@@ -134,6 +132,9 @@ struct ScenarioTimes
   Eigen::Vector3d place_target = Eigen::Vector3d::Zero();
 };
 
+// A scenario's set-up without running it (benchmarks step it themselves): its scene, the
+// watched object, the hand's path per finger (device targets in world, m, against time, s),
+// and its own length (s).
 struct ScenarioSetup
 {
   SceneDescription scene;

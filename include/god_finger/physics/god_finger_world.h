@@ -6,9 +6,12 @@
 //     (core/virtual_coupling.h, with its interface's profile);
 //  2. Bullet's collision detection finds the proxies' contacts;
 //  3. kGodFinger: for the deepest contact of each (proxy, object) pair, the contact area is
-//     computed on the object's walk surface and every active sub-god-object is added to the
-//     solver as a contact point with the true contact's normal and depth, in manifolds of our
-//     own (Bullet's manifolds keep at most 4 points and merge close ones);
+//     computed on the object's walk surface and reaches the solver (WorldParams::pad_solver):
+//     by default (constraint) as one pad at its centre of pressure with torsional and tilt rows
+//     bounded by the area (src/physics/pad_constraints.h); with `points` (the paper's way) every
+//     active sub-god-object is a contact point with the true contact's normal and its
+//     tilt-corrected depth, in manifolds of our own (Bullet's keep at most 4 points and merge
+//     close ones; src/physics/sub_god_object_injection.h);
 //  4. the solver runs; the force on the user is the opposite of the coupling force.
 //
 // Sleeping (WorldParams::sleep): a dynamic body at rest, out of every proxy's reach, falls asleep
@@ -133,10 +136,8 @@ class GodFingerWorld
   const TriangleMesh& walkSurface(int body) const;
   // Dynamic bodies awake now (simulated in the next step); static bodies never count.
   int awakeBodyCount() const;
-  // Contact points the solver received in the last step, all pairs (test hook for the
-  // Bullet manifold limits).
-  int solverContactPoints() const;
-  // Of those, points between a proxy and an object.
+  // Contact points between a proxy and an object the solver received in the last step (test
+  // hook for the Bullet manifold limits).
   int solverProxyContactPoints() const;
   // Contact rows (normal, friction, torsional) the solver solved in the last step, all pairs.
   int solverContactRows() const;

@@ -51,7 +51,9 @@ struct PadLoadSetup
   ContactModel model = ContactModel::kGodFinger;
   double normal_force = 2.0;  // N, pressed by the coupling (target below the proxy's rest)
   double friction = 0.8;      // mu of the box (the proxy's is 1; Bullet multiplies them)
-  WorldParams params;         // the world's; model and time step are taken from here too
+  // The world's (time step, pad solver, coupling, ...), except its model, which is `model`, and,
+  // for a tilt, its gravity, which is zero.
+  WorldParams params;
 };
 
 struct PadLoadMeasurement

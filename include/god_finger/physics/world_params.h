@@ -51,7 +51,7 @@ struct FingerPadParams
   double damping = 20.0;   // N s/m per contact point
 };
 
-// How a god_finger contact area reaches the solver (src/physics/pad_constraint.h):
+// How a god_finger contact area reaches the solver (src/physics/pad_constraints.h):
 // kPoints, the paper's way, a contact point per sub-god-object (about 3 (1 + n_SGO) rows per
 // finger); kConstraint, one pad per area at its centre of pressure with torsional and tilt rows
 // bounded by the area (6 rows per finger).
@@ -92,7 +92,7 @@ struct WorldParams
   // no scenario's outcome (bench/REPORT.md, "Physics step"); 0 runs every iteration.
   double solver_tolerance = 1e-5;
   // Passes after them that hold an object resting on something static while a proxy presses it
-  // (src/physics/support_pass_solver.h): without them an object 1000 times lighter than the
+  // (src/physics/support_pass.h): without them an object 1000 times lighter than the
   // proxy sank 7 mm into its support. 0: Bullet's solver alone.
   int support_passes = 2;
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  // m/s^2, finite
@@ -108,10 +108,9 @@ struct WorldParams
   double walk_edge_per_max_radius = 0.5;
 };
 
-// Every parameter of WorldParams that is read by name: model, solver_iterations, the contact
-// table's rows, proxy_mass, proxy_radius, the soft finger's, the pad's, sleeping's and
-// walk_edge_per_max_radius. (time_step comes from the loop's rate, gravity from the scene; the
-// coupling profile comes per interface from its device, deviceProfileTable().)
+// The one table of the parameters of WorldParams read by name (its rows are the list; the
+// README's table is generated from it). Not in it: time_step comes from the loop's rate, gravity
+// from the scene, and the coupling profile per interface from its device (deviceProfileTable()).
 const ParameterTable<WorldParams>& worldParameterTable();
 
 std::string validate(const WorldParams& params);

@@ -1,11 +1,10 @@
 // Parameters shared by the nodes, read in one place each:
 //  - the world (the physics node's and the servo node's private parameters);
 //  - an interface's (a device's) parameters, all in the interface's namespace NAME/, where
-//    interface.launch puts them once: the device profile (config/devices/PROFILE.yaml:
-//    max_force, command_timeout, ramp_time, coupling_stiffness, coupling_damping,
-//    workspace_radius, and the fake handle's), the backend and its parameters (backend, script,
-//    bag, start, index, ...), and the workspace mapping (workspace_scale, force_scale,
-//    workspace_offset [m], workspace_rotation [x, y, z, w]).
+//    interface.launch puts them once: the device profile (config/devices/PROFILE.yaml, the rows
+//    of deviceProfileTable()), the backend (`backend`) and its own parameters (each backend's,
+//    devices/device_registry.h), and the workspace mapping (the rows of
+//    workspaceMappingParameterTable(), workspace_offset [m] and workspace_rotation [x, y, z, w]).
 // The driver, the haptic node, the physics node and the servo node all read an interface from
 // there, so the spring the hand feels is the one that pulls its proxy.
 #pragma once
@@ -20,8 +19,8 @@
 
 namespace god_finger
 {
-// rate (Hz), solver_iterations, model, r_max, d0, alpha, n_sgo, tau_a, friction, walk,
-// proxy_radius, proxy_mass. InputError naming the first bad one.
+// Every row of worldParameterTable(), and the time step from the loop's rate
+// (servoLoopParameterTable()). InputError naming the first bad one.
 WorldParams readWorldParams(const ros::NodeHandle& pnh);
 
 struct InterfaceConfig

@@ -1,4 +1,4 @@
-#include "pad_constraint.h"
+#include "pad_geometry.h"
 
 #include <algorithm>
 

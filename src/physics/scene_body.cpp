@@ -1,0 +1,70 @@
+#include "scene_body.h"
+
+#include "bullet_helpers.h"
+
+#include "god_finger/physics/walk_surface.h"
+
+#include <Eigen/Eigenvalues>
+
+namespace god_finger
+{
+namespace
+{
+// The exact walk's surface for a sphere or a cylinder; none for boxes (their 12-triangle walk
+// surface is exact already) and meshes.
+std::optional<PrimitiveSurface> primitiveSurface(const Geometry& geometry)
+{
+  if (geometry.kind == GeometryKind::kSphere)
+  {
+    return PrimitiveSurface{PrimitiveSurface::Kind::kSphere, geometry.radius, 0.0};
+  }
+  if (geometry.kind == GeometryKind::kCylinder)
+  {
+    return PrimitiveSurface{PrimitiveSurface::Kind::kCylinder, geometry.radius, geometry.length};
+  }
+  return std::nullopt;
+}
+}  // namespace
+
+SceneBody makeSceneBody(const BodyDescription& description, double max_edge)
+{
+  SceneBody body;
+  body.walk = std::make_unique<TriangleMesh>(makeWalkSurface(description.geometry, max_edge));
+  body.locator = std::make_unique<SurfaceLocator>(*body.walk);
+  body.primitive = primitiveSurface(description.geometry);
+  body.collision = makeCollisionShape(description.geometry, *body.walk, description.is_static);
+  if (!description.is_static)
+  {
+    // Bullet's body frame is the centre of mass on the principal axes of inertia.
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(description.inertia);
+    Eigen::Matrix3d axes = solver.eigenvectors();
+    if (axes.determinant() < 0.0)
+    {
+      axes.col(2) = -axes.col(2);
+    }
+    body.com_in_link = description.inertial_origin;
+    body.com_in_link.linear() = description.inertial_origin.linear() * axes;
+    const Eigen::Vector3d moments = solver.eigenvalues();
+    body.principal_inertia = toBullet(moments);
+  }
+  body.geometry_in_com = body.com_in_link.inverse() * description.collision_origin;
+  return body;
+}
+
+void buildRigidBody(const BodyDescription& description, int index, SceneBody* body)
+{
+  body->placed = std::make_unique<btCompoundShape>();
+  body->placed->addChildShape(toBullet(body->geometry_in_com), body->collision->shape);
+  const double mass = description.is_static ? 0.0 : description.mass;
+  btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, body->placed.get(),
+                                                description.is_static ? btVector3(0, 0, 0) : body->principal_inertia);
+  info.m_startWorldTransform = toBullet(description.pose * body->com_in_link);
+  info.m_friction = description.material.friction;
+  info.m_rollingFriction = description.material.rolling_friction;
+  info.m_spinningFriction = description.material.spinning_friction;
+  info.m_restitution = description.material.restitution;
+  body->rigid = std::make_unique<btRigidBody>(info);
+  body->rigid->setUserIndex(kKindBody);
+  body->rigid->setUserIndex2(index);
+}
+}  // namespace god_finger

@@ -1,0 +1,49 @@
+// A scene body as the world keeps it: its walk surface (with its locator, or the exact surface
+// of a sphere or cylinder), its collision shape, its Bullet rigid body and the frames between
+// them. Internal to physics.
+//
+// Frames: the link frame (the scene's), the centre of mass frame on the principal axes of
+// inertia (Bullet's body frame) and the geometry frame (the walk surface's and the collision
+// shape's). Units: SI. Not real-time safe to build; reading it is.
+#pragma once
+
+#include "collision_shape.h"
+
+#include "god_finger/core/primitive_walk.h"
+#include "god_finger/core/surface_locator.h"
+#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/physics/scene_description.h"
+
+#include <btBulletDynamicsCommon.h>
+
+#include <Eigen/Geometry>
+#include <memory>
+#include <optional>
+
+namespace god_finger
+{
+struct SceneBody
+{
+  std::unique_ptr<TriangleMesh> walk;
+  std::unique_ptr<SurfaceLocator> locator;
+  // Spheres and cylinders: contact areas by exact walks (core/primitive_walk.h); the walk
+  // surface then only serves the collision shape and walkSurface().
+  std::optional<PrimitiveSurface> primitive;
+  std::unique_ptr<CollisionShape> collision;
+  std::unique_ptr<btCompoundShape> placed;  // the collision shape placed in the centre-of-mass frame
+  std::unique_ptr<btRigidBody> rigid;
+  Eigen::Isometry3d com_in_link = Eigen::Isometry3d::Identity();
+  Eigen::Isometry3d geometry_in_com = Eigen::Isometry3d::Identity();
+  btVector3 principal_inertia = btVector3(0, 0, 0);
+  Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d net_force = Eigen::Vector3d::Zero();
+};
+
+// The walk surface (a primitive's tessellated with edges of at most `max_edge` m), locator,
+// exact surface, collision shape and frames of `description`; no rigid body yet.
+SceneBody makeSceneBody(const BodyDescription& description, double max_edge);
+
+// (Re)builds `body`'s placed shape and rigid body (scene index `index`, tagged kKindBody) at
+// its description's pose, with its mass, inertia and material; the caller adds it to the world.
+void buildRigidBody(const BodyDescription& description, int index, SceneBody* body);
+}  // namespace god_finger
