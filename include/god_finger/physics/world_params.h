@@ -98,11 +98,16 @@ struct WorldParams
   // Largest edge of the walk surface of a sphere or cylinder, as a fraction of r_max: the
   // tessellation is refined until its edges are no longer (capped at 81920 triangles).
   double walk_edge_per_max_radius = 0.5;
+  // The world's bounds (m): the box around the scene as loaded (every body at its initial pose),
+  // grown by this on every side. A dynamic body whose centre of mass leaves them (off the table,
+  // falling) is put back at its initial pose, at rest, and counted (BodyState::left_world): the
+  // scene stays whole however long it runs. 1 m: far from anything a finger does on a table.
+  double world_margin = 1.0;
 };
 
 // Every parameter of WorldParams that is read by name: model, solver_iterations, the contact
-// table's rows, proxy_mass, proxy_radius, the soft finger's, the pad's, sleeping's and
-// walk_edge_per_max_radius. (time_step comes from the loop's rate, gravity from the scene; the
+// table's rows, proxy_mass, proxy_radius, the soft finger's, the pad's, sleeping's,
+// walk_edge_per_max_radius and world_margin. (time_step comes from the loop's rate, gravity from the scene; the
 // coupling profile comes per interface from its device, deviceProfileTable().)
 const ParameterTable<WorldParams>& worldParameterTable();
 
