@@ -327,6 +327,7 @@ void ServoLoop::readDevices(double time)
   cycle_presses_ += cycle_model ? 1 : 0;
   reset_presses_ += reset ? 1 : 0;
   frame_.tick = tick_;
+  frame_.time = time;
   frame_.read_at = read_at_[0];
   frame_.cycle_presses = cycle_presses_;
   frame_.reset_presses = reset_presses_;
@@ -349,6 +350,7 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
     }
   }
   last_frame_tick_ = frame.tick;
+  const long steps_before = world_->steps();
   applyWorldCommands();
   if (frame.cycle_presses > seen_cycle_presses_)
   {
@@ -363,6 +365,10 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
   {
     seen_reset_presses_ = frame.reset_presses;
     world_->resetAtInterfaces();
+  }
+  if (world_->steps() < steps_before)  // reset: the world's time starts again from 0
+  {
+    world_time_offset_ = frame.time;
   }
   const double step_start = steadySeconds();
   world_->step();
@@ -384,6 +390,7 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
     if (slot)
     {
       world_->snapshot(slot);
+      slot->time += world_time_offset_;  // on the loop's clock (snapshots())
       snapshots_.commit();
     }
     else

@@ -231,6 +231,48 @@ TEST(ServoLoop, ButtonZeroCyclesTheModelAndButtonOneResets)
   EXPECT_EQ(loop->world().steps(), 10);  // reset at tick 50 (whose step is the first), ticks 51-59
 }
 
+// Issue 18: time never goes backwards. A reset (the command, or button 1) sends the world's time
+// to 0 while the loop's clock (/clock on simulated time) goes on: the snapshots' time, which
+// stamps TF, markers and contact areas, stays on the loop's clock; before any reset it is the
+// world's own time.
+TEST(ServoLoop, SnapshotTimeNeverGoesBackAcrossAReset)
+{
+  auto device = std::make_unique<ScriptedDevice>();
+  device->buttons = [](double t) { return (t >= 0.1995 && t < 0.2005) ? 2u : 0u; };  // button 1 at tick 200
+  auto loop = makeLoop(std::move(device));
+  std::vector<double> times;
+  ServoSample sample;
+  WorldSnapshot snapshot;
+  for (int k = 0; k < 300; ++k)
+  {
+    if (k == 100)
+    {
+      ServoCommand reset;
+      reset.kind = ServoCommand::Kind::kReset;
+      ASSERT_TRUE(loop->post(reset));
+    }
+    loop->tick(k * loop->period());
+    while (loop->samples().tryPop(&sample))
+    {
+    }
+    while (loop->snapshots().tryPop(&snapshot))
+    {
+      if (k < 100)
+      {
+        EXPECT_EQ(snapshot.time, loop->world().time()) << "tick " << k;  // unchanged before a reset
+      }
+      times.push_back(snapshot.time);
+    }
+  }
+  ASSERT_GE(times.size(), 3u);
+  for (std::size_t i = 1; i < times.size(); ++i)
+  {
+    ASSERT_GT(times[i], times[i - 1]) << "snapshot " << i;
+  }
+  EXPECT_NEAR(loop->world().time(), 0.1, 1e-9);           // the button's reset at tick 200, 100 steps since
+  EXPECT_NEAR(times.back(), 289 * loop->period(), 1e-9);  // the last snapshot: tick 288, after its step
+}
+
 TEST(ServoLoop, NonFiniteReadingsAreRejectedAndTheLastTargetStays)
 {
   auto device = std::make_unique<ScriptedDevice>();

@@ -227,6 +227,10 @@ class ServoLoop
   {
     return samples_;
   }
+  // The world after a step, every snapshot_every ticks. Its `time` is on the loop's clock: the
+  // world's time plus the loop time of the last reset (0 before any), so that it never goes
+  // back when a reset (a command, button 1) sends the world's own time to 0 while the loop's
+  // clock, /clock on simulated time, goes on; before a reset it is the world's time exactly.
   SpscQueue<WorldSnapshot>& snapshots()
   {
     return snapshots_;
@@ -261,6 +265,7 @@ class ServoLoop
   struct TargetFrame
   {
     long tick = -1;
+    double time = 0.0;                        // s, the loop time of that tick
     double read_at = 0.0;                     // s, steadySeconds() of the first device's reading
     long cycle_presses = 0;                   // ticks on which button 0 was pressed, since the loop began
     long reset_presses = 0;                   // same, button 1
@@ -351,7 +356,8 @@ class ServoLoop
   long seen_cycle_presses_ = 0;
   long seen_reset_presses_ = 0;
   long next_snapshot_tick_ = 0;
-  TargetFrame seam_frame_;  // simulated time: the targets of the late step in progress
+  double world_time_offset_ = 0.0;  // s: loop time of the frame the last reset was applied in
+  TargetFrame seam_frame_;          // simulated time: the targets of the late step in progress
   bool seam_busy_ = false;
   long seam_ready_tick_ = 0;
   StepResult seam_result_;
