@@ -11,6 +11,7 @@
 #include "god_finger/ros/conversions.h"
 #include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/interface_parameters.h"
+#include "god_finger/ros/left_world_report.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 #include "god_finger/ros/reconfigure.h"
@@ -76,7 +77,8 @@ struct PhysicsNode::Impl
   long overruns = 0;
   std::unique_ptr<LiveReconfigure> reconfigure;
   std::vector<double> step_us;
-  WorldSnapshot snapshot;  // read by publishScene
+  WorldSnapshot snapshot;      // read by publishScene
+  LeftWorldReport left_world;  // guarded by mutex
 
   void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
   {
@@ -255,6 +257,9 @@ struct PhysicsNode::Impl
     contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
     marker_publisher.publish(markerMessage(scene, snapshot, world->params().coupling.proxy_radius, stamp));
     broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
+    std::lock_guard<std::mutex> lock(mutex);
+    left_world.update(scene, snapshot, stamp.toSec(),
+                      [](const std::string& line) { ROS_WARN("physics: %s", line.c_str()); });
   }
 
   void publishDiagnostics(double seconds, long steps)
@@ -277,6 +282,7 @@ struct PhysicsNode::Impl
     add("step_us_median", jsonNumber(percentile(step_us, 0.5)));
     add("step_us_p99", jsonNumber(percentile(step_us, 0.99)));
     add("contact_model", contactModelName(world->contactModel()));
+    add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)
     step_us.clear();
     array.status.push_back(status);
     diagnostics_publisher.publish(array);

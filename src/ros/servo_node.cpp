@@ -13,6 +13,7 @@
 #include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/hand_marker.h"
 #include "god_finger/ros/interface_parameters.h"
+#include "god_finger/ros/left_world_report.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 #include "god_finger/ros/reconfigure.h"
@@ -79,6 +80,7 @@ struct ServoNode::Impl
   std::thread publisher_thread;
   std::atomic<bool> publishing{true};
   LoopStatistics statistics;
+  LeftWorldReport left_world;  // the publisher thread's
   long last_ticks = 0;
   double last_ticks_at = -1.0;
   long last_dropped = 0;
@@ -272,6 +274,7 @@ struct ServoNode::Impl
     add("physics_steps", std::to_string(counters.physics_steps.load()));
     add("skipped_targets", std::to_string(counters.skipped_targets.load()));
     add("contact_model", contactModelName(static_cast<ContactModel>(counters.model.load())));
+    add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
     statistics.clear();
@@ -325,6 +328,8 @@ struct ServoNode::Impl
         contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
         marker_publisher.publish(markerMessage(scene, snapshot, loop->world().params().coupling.proxy_radius, stamp));
         broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
+        left_world.update(scene, snapshot, stamp.toSec(),
+                          [](const std::string& line) { ROS_WARN("servo: %s", line.c_str()); });
       }
       showLoopModel();
       const double now = steadySeconds();
