@@ -1012,6 +1012,16 @@ void GodFingerWorld::setContactParams(const ContactParams& params)
   impl_->wakeAll();
 }
 
+void GodFingerWorld::setPadSolver(PadSolver solver)
+{
+  if (solver != PadSolver::kPoints && solver != PadSolver::kConstraint)
+  {
+    throw InputError("pad solver " + std::to_string(static_cast<int>(solver)) + " is not one of " + padSolverNames());
+  }
+  impl_->params.pad_solver = solver;
+  impl_->wakeAll();
+}
+
 const WorldParams& GodFingerWorld::params() const
 {
   return impl_->params;

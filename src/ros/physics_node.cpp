@@ -153,6 +153,10 @@ struct PhysicsNode::Impl
       return false;
     }
     world->setContactParams(applied.contact);
+    if (applied.pad_solver != world->params().pad_solver)
+    {
+      world->setPadSolver(applied.pad_solver);
+    }
     if (model_changed)
     {
       world->setContactModel(applied.model);
@@ -282,6 +286,7 @@ struct PhysicsNode::Impl
     add("step_us_median", jsonNumber(percentile(step_us, 0.5)));
     add("step_us_p99", jsonNumber(percentile(step_us, 0.99)));
     add("contact_model", contactModelName(world->contactModel()));
+    add("pad_solver", padSolverName(world->params().pad_solver));
     add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)
     step_us.clear();
     array.status.push_back(status);

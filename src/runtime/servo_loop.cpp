@@ -103,6 +103,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
     guards_.emplace_back(interface.profile.guard);
   }
   counters_.model = static_cast<int>(world_->contactModel());
+  counters_.pad_solver = static_cast<int>(world_->params().pad_solver);
   sem_init(&physics_wake_, 0, 0);
 }
 
@@ -183,6 +184,11 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   {
     why = validate(command.contact);
   }
+  else if (command.kind == ServoCommand::Kind::kSetPadSolver && command.pad_solver != PadSolver::kPoints &&
+           command.pad_solver != PadSolver::kConstraint)
+  {
+    why = "pad solver " + std::to_string(static_cast<int>(command.pad_solver)) + " is not one of " + padSolverNames();
+  }
   else if (command.kind == ServoCommand::Kind::kHandTarget &&
            (command.interface < 0 || command.interface >= static_cast<int>(interfaces_.size()) ||
             !command.hand_target.allFinite()))
@@ -253,6 +259,9 @@ void ServoLoop::applyWorldCommands()
       case ServoCommand::Kind::kReset:
         world_->resetAtInterfaces();
         break;
+      case ServoCommand::Kind::kSetPadSolver:
+        world_->setPadSolver(command.pad_solver);  // validated by post()
+        break;
       case ServoCommand::Kind::kHandTarget:  // never queued here (post() sends them to the haptic side)
       case ServoCommand::Kind::kStopForce:
       case ServoCommand::Kind::kResumeForce:
@@ -260,6 +269,7 @@ void ServoLoop::applyWorldCommands()
     }
   }
   counters_.model = static_cast<int>(world_->contactModel());
+  counters_.pad_solver = static_cast<int>(world_->params().pad_solver);
 }
 
 template <class T>

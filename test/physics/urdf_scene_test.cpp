@@ -61,7 +61,7 @@ TEST(UrdfScene, ShippedSphereSceneHasAStaticTableAndAFreeBall)
 
 TEST(UrdfScene, EveryShippedSceneLoads)
 {
-  for (const char* name : {"table_sphere", "table_cylinder", "table_box", "table_torus", "rails_plate"})
+  for (const char* name : {"table_ball", "table_sphere", "table_cylinder", "table_box", "table_torus", "rails_plate"})
   {
     SCOPED_TRACE(name);
     const SceneDescription scene = loadUrdfScene(kScenes + "/" + name + ".urdf");

@@ -220,6 +220,36 @@ TEST(ServoLoop, CommandsAreAppliedBetweenTwoSteps)
       0.005);
 }
 
+// Issue 18: the pad solver changes live, between two steps, like the other parameters; a value
+// that names none is refused by post().
+TEST(ServoLoop, ThePadSolverChangesBetweenTwoSteps)
+{
+  auto loop = makeLoop(pressingHand());
+  runTicks(*loop, 600);  // pressing the ball
+  EXPECT_EQ(loop->world().params().pad_solver, PadSolver::kConstraint);
+  const int rows_constraint = loop->world().solverContactRows();
+  ServoCommand command;
+  command.kind = ServoCommand::Kind::kSetPadSolver;
+  command.pad_solver = PadSolver::kPoints;
+  ASSERT_TRUE(loop->post(command));
+  EXPECT_EQ(loop->world().params().pad_solver, PadSolver::kConstraint);  // not before the next tick
+  runTicks(*loop, 1, 600);
+  EXPECT_EQ(loop->world().params().pad_solver, PadSolver::kPoints);
+  EXPECT_EQ(static_cast<PadSolver>(loop->counters().pad_solver.load()), PadSolver::kPoints);
+  runTicks(*loop, 100, 601);
+  // The paper's points: a row set per sub-god-object, more than the pad's rows.
+  EXPECT_GT(loop->world().solverContactRows(), rows_constraint);
+  EXPECT_LT(loop->world().interfaceState(0).user_force.norm(), 20.0);
+  EXPECT_TRUE(loop->world().interfaceState(0).proxy_position.allFinite());
+
+  ServoCommand bad;
+  bad.kind = ServoCommand::Kind::kSetPadSolver;
+  bad.pad_solver = static_cast<PadSolver>(7);
+  std::string error;
+  EXPECT_FALSE(loop->post(bad, &error));
+  EXPECT_EQ(error, "pad solver 7 is not one of points, constraint");
+}
+
 TEST(ServoLoop, ButtonZeroCyclesTheModelAndButtonOneResets)
 {
   auto device = std::make_unique<ScriptedDevice>();

@@ -125,6 +125,9 @@ class GodFingerWorld
   ContactModel contactModel() const;
   // Throws InputError on invalid parameters; keeps the old ones then.
   void setContactParams(const ContactParams& params);
+  // god_finger's pad solver (WorldParams::pad_solver), from the next step; wakes every body.
+  // Throws InputError on a value that names none.
+  void setPadSolver(PadSolver solver);
   const WorldParams& params() const;
 
   int interfaceCount() const;

@@ -167,10 +167,12 @@ struct ServoCommand
     kHandTarget,
     kStopForce,    // every guard's output to zero at once (ForceGuard::stop), haptic side
     kResumeForce,  // force back with the soft start (ForceGuard::resume)
+    kSetPadSolver,
   };
   Kind kind = Kind::kReset;
   ContactModel model = ContactModel::kGodFinger;
-  ContactParams contact;  // validated by post()
+  ContactParams contact;                            // validated by post()
+  PadSolver pad_solver = WorldParams().pad_solver;  // kSetPadSolver, validated by post()
   int interface = 0;
   Eigen::Vector3d hand_target = Eigen::Vector3d::Zero();  // m, device frame
 };
@@ -189,9 +191,10 @@ struct ServoCounters
   std::atomic<long> physics_steps{0};    // steps taken
   std::atomic<long> skipped_targets{0};  // targets the physics skipped, being late
   std::atomic<int> model{static_cast<int>(ContactModel::kGodFinger)};
-  std::atomic<bool> realtime{false};       // the haptic thread got SCHED_FIFO
-  std::atomic<bool> failed{false};         // a device failed; the loop stopped
-  std::atomic<bool> force_stopped{false};  // kStopForce applied, no kResumeForce since
+  std::atomic<int> pad_solver{static_cast<int>(WorldParams().pad_solver)};  // the world's, after each step's commands
+  std::atomic<bool> realtime{false};                                        // the haptic thread got SCHED_FIFO
+  std::atomic<bool> failed{false};                                          // a device failed; the loop stopped
+  std::atomic<bool> force_stopped{false};                                   // kStopForce applied, no kResumeForce since
 };
 
 class ServoLoop
