@@ -11,12 +11,12 @@
 #include "god_finger/ros/conversions.h"
 #include "god_finger/ros/diagnostics.h"
 #include "god_finger/ros/interface_parameters.h"
-#include "god_finger/ros/left_world_report.h"
 #include "god_finger/ros/parameters.h"
 #include "god_finger/ros/queues.h"
 #include "god_finger/ros/reconfigure.h"
 #include "god_finger/ros/scene_parameter.h"
 #include "god_finger/ros/world_messages.h"
+#include "god_finger/runtime/left_world_report.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/server.h>

@@ -1,4 +1,4 @@
-#include "god_finger/ros/left_world_report.h"
+#include "god_finger/runtime/left_world_report.h"
 
 #include <cstdio>
 

@@ -1,8 +1,9 @@
 // Bodies that left the world (WorldParams::world_margin: put back at their start, counted in
 // BodyState::left_world): one warning per catch naming the body and the session time, and the
 // diagnostics value `left_world` that scripts/summarize_session reads. Session time: seconds
-// since the first snapshot the report saw (simulated time: the clock). Not real-time (logs and
-// allocates): the nodes' publishing side, one report per world.
+// since the first snapshot the report saw (simulated time: the clock). No ROS inside (the nodes
+// pass their log call). Not real-time (formats and allocates): the nodes' publishing side, one
+// report per world.
 #pragma once
 
 #include "god_finger/physics/god_finger_world.h"
