@@ -40,7 +40,7 @@ import time
 
 import rosbag
 
-BALL_CENTRE_Z = 0.04  # m, table_sphere: ball of radius 4 cm resting on the table
+BALL_CENTRE_Z = 0.04  # m, the demo's table_ball (table_sphere's geometry): ball of radius 4 cm on the table
 SURFACE = 0.04 + 0.003  # ball radius + proxy radius (m)
 STIFFNESS = 400.0  # N/m, config/devices/fake.yaml
 TICKS = os.sysconf("SC_CLK_TCK")

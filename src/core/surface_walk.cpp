@@ -338,7 +338,9 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
   int crossings = 0;
   int stalled = 0;
   if (face < 0 || face >= mesh.triangleCount() || !start.barycentric.allFinite() || !direction.allFinite() ||
-      !std::isfinite(distance) || distance < 0.0)
+      !std::isfinite(distance) || distance < 0.0 ||
+      !(std::abs(start.barycentric.sum() - 1.0) <= kBarycentricTolerance) ||
+      !(start.barycentric.minCoeff() >= -kBarycentricTolerance))
   {
     WalkResult invalid;
     invalid.stop = WalkStop::kInvalidInput;

@@ -1,4 +1,5 @@
 #include "god_finger/mesh_io/mesh_loader.h"
+#include "god_finger/mesh_io/assimp_scene.h"
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/memory_budget.h"
@@ -39,11 +40,21 @@ void appendNodeMeshes(const aiScene& scene, const aiNode& node, const aiMatrix4x
 {
   for (unsigned int m = 0; m < node.mNumMeshes; ++m)
   {
-    if (node.mMeshes[m] >= scene.mNumMeshes || scene.mMeshes[node.mMeshes[m]] == nullptr)
+    if (node.mMeshes == nullptr || scene.mMeshes == nullptr || node.mMeshes[m] >= scene.mNumMeshes ||
+        scene.mMeshes[node.mMeshes[m]] == nullptr)
     {
       throw InputError("a node refers to a mesh that is not in the file");
     }
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
+    const std::string name = "mesh " + std::to_string(node.mMeshes[m]) + " has ";
+    if (mesh.mNumVertices > 0 && mesh.mVertices == nullptr)
+    {
+      throw InputError(name + std::to_string(mesh.mNumVertices) + " vertices but no positions");
+    }
+    if (mesh.mNumFaces > 0 && mesh.mFaces == nullptr)
+    {
+      throw InputError(name + std::to_string(mesh.mNumFaces) + " faces but no face list");
+    }
     PolygonSoup polygons;
     polygons.vertices.reserve(mesh.mNumVertices);
     for (unsigned int v = 0; v < mesh.mNumVertices; ++v)
@@ -65,6 +76,14 @@ void appendNodeMeshes(const aiScene& scene, const aiNode& node, const aiMatrix4x
   }
 }
 
+void checkChildren(const aiNode& node)
+{
+  if (node.mNumChildren > 0 && node.mChildren == nullptr)
+  {
+    throw InputError("a node has " + std::to_string(node.mNumChildren) + " children but no list of them");
+  }
+}
+
 // The node's meshes and its descendants', `transform` as in appendNodeMeshes.
 void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& transform, const Eigen::Vector3d& scale,
              TriangleSoup* soup, int depth)
@@ -74,6 +93,7 @@ void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& transf
     throw InputError("node hierarchy deeper than 1000");
   }
   appendNodeMeshes(scene, node, transform, scale, soup);
+  checkChildren(node);
   for (unsigned int c = 0; c < node.mNumChildren; ++c)
   {
     if (node.mChildren[c] != nullptr)
@@ -93,6 +113,7 @@ void collectFromRoot(const aiScene& scene, const Eigen::Vector3d& scale, Triangl
 {
   const aiNode& root = *scene.mRootNode;
   appendNodeMeshes(scene, root, root.mTransformation, scale, soup);
+  checkChildren(root);
   const ai_real unit = static_cast<ai_real>(std::cbrt(std::abs(root.mTransformation.Determinant())));
   aiMatrix4x4 below_root;
   below_root.a1 = below_root.b2 = below_root.c3 = unit;
@@ -196,12 +217,17 @@ void loadInto(const std::string& path, const Eigen::Vector3d& scale, TriangleSou
     std::string reason = importer.GetErrorString();
     throw InputError("unreadable: " + (reason.empty() ? std::string("assimp could not read it") : reason));
   }
-  if (scene->mRootNode != nullptr)
-  {
-    collectFromRoot(*scene, scale, soup);
-  }
+  appendAssimpScene(*scene, scale, soup);
 }
 }  // namespace
+
+void appendAssimpScene(const aiScene& scene, const Eigen::Vector3d& scale, TriangleSoup* soup)
+{
+  if (scene.mRootNode != nullptr)
+  {
+    collectFromRoot(scene, scale, soup);
+  }
+}
 
 TriangleSoup loadTriangleSoup(const std::string& path, const Eigen::Vector3d& scale)
 {

@@ -375,6 +375,10 @@ PolygonSoup readPly(const std::string& bytes, const DeclaredSizeCheck& check_siz
   bool has_vertices = false;
   for (const Element& element : elements)
   {
+    if (element.name == "vertex" && element.count == 0)
+    {
+      throw InputError("PLY file declares no vertices (element vertex 0)");
+    }
     if (element.count == 0)
     {
       continue;

@@ -7,9 +7,15 @@
 
 namespace god_finger
 {
-void appendTriangulated(const PolygonSoup& polygons, TriangleSoup* soup)
+void appendTriangulated(const PolygonSoup& polygons, TriangleSoup* soup, long long max_vertices)
 {
   const long long vertex_count = static_cast<long long>(polygons.vertices.size());
+  const long long total = static_cast<long long>(soup->vertices.size()) + vertex_count;
+  if (total > max_vertices)
+  {
+    throw InputError("mesh has " + std::to_string(total) + " vertices, more than the " + std::to_string(max_vertices) +
+                     " its triangles can index");
+  }
   std::vector<std::array<int, 3>> triangles;
   std::vector<Eigen::Vector3d> corners;
   std::vector<std::array<int, 3>> polygon_triangles;

@@ -16,6 +16,7 @@
 #include "scene_body.h"
 #include "slept_contacts.h"
 #include "sub_god_object_injection.h"
+#include "world_bounds.h"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -35,6 +36,7 @@ struct GodFingerWorld::Impl
 {
   using Body = SceneBody;
   WorldParams params;
+  Eigen::AlignedBox3d bounds;  // world_bounds.h: set by buildWorld
   SceneDescription scene;
   std::vector<Body> bodies;
   std::vector<Proxy> proxies;
@@ -136,6 +138,15 @@ struct GodFingerWorld::Impl
       body.previous_velocity = Eigen::Vector3d::Zero();
       body.net_force = Eigen::Vector3d::Zero();
     }
+    Eigen::AlignedBox3d scene_box;
+    for (const Body& body : bodies)
+    {
+      btVector3 min;
+      btVector3 max;
+      body.rigid->getAabb(min, max);
+      scene_box.extend(toEigen(min)).extend(toEigen(max));
+    }
+    bounds = worldBounds(scene_box, params.world_margin);
     for (std::size_t i = 0; i < proxies.size(); ++i)
     {
       addProxyToWorld(static_cast<int>(i));
@@ -243,6 +254,23 @@ struct GodFingerWorld::Impl
       awake.pop_back();
     }
     std::fill(group_of_tag.begin(), group_of_tag.end(), -1);
+  }
+
+  // After the step: an awake body outside the world's bounds goes back to its start (world_bounds.h).
+  void catchEscapees()
+  {
+    for (const int index : awake)
+    {
+      Body& body = bodies[index];
+      const btTransform start = toBullet(scene.bodies[index].pose * body.com_in_link);
+      if (catchIfOutside(bounds, start, body.rigid.get(), world.get()))
+      {
+        prepareSleep(body.rigid.get());
+        body.net_force.setZero();
+        ++body.left_world;
+        body.left_world_at = time;
+      }
+    }
   }
 
   // A dynamic body starts with a full sleep timer, less the time a free fall from rest takes to
@@ -502,6 +530,7 @@ struct GodFingerWorld::Impl
           scene.bodies[index].mass * (toEigen(body.rigid->getLinearVelocity()) - body.previous_velocity) / dt;
     }
     removeSleepers();
+    catchEscapees();
     for (Proxy& proxy : proxies)
     {
       proxy.state.proxy_position = toEigen(proxy.rigid->getWorldTransform().getOrigin());
@@ -698,6 +727,16 @@ void GodFingerWorld::setContactParams(const ContactParams& params)
   impl_->wakeAll();
 }
 
+void GodFingerWorld::setPadSolver(PadSolver solver)
+{
+  if (solver != PadSolver::kPoints && solver != PadSolver::kConstraint)
+  {
+    throw InputError("pad solver " + std::to_string(static_cast<int>(solver)) + " is not one of " + padSolverNames());
+  }
+  impl_->params.pad_solver = solver;
+  impl_->wakeAll();
+}
+
 const WorldParams& GodFingerWorld::params() const
 {
   return impl_->params;
@@ -734,6 +773,8 @@ BodyState GodFingerWorld::bodyState(int body) const
   state.angular_velocity = toEigen(b.rigid->getAngularVelocity());
   state.net_force = b.net_force;
   state.asleep = impl_->dormant.dormant(body) || b.rigid->getActivationState() == ISLAND_SLEEPING;
+  state.left_world = b.left_world;
+  state.left_world_at = b.left_world_at;
   return state;
 }
 

@@ -37,6 +37,8 @@ struct SceneBody
   btVector3 principal_inertia = btVector3(0, 0, 0);
   Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d net_force = Eigen::Vector3d::Zero();
+  int left_world = 0;           // BodyState::left_world (kept across resets)
+  double left_world_at = -1.0;  // s, world time
 };
 
 // The walk surface (a primitive's tessellated with edges of at most `max_edge` m), locator,

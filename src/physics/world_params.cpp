@@ -88,6 +88,9 @@ const ParameterTable<WorldParams>& worldParameterTable()
         realRow<P>("walk_edge_per_max_radius", "dimensionless", openClosed(0.0, 10.0),
                    "largest edge of a sphere's or cylinder's walk surface, as a fraction of r_max",
                    [](P& p) -> double& { return p.walk_edge_per_max_radius; }),
+        realRow<P>("world_margin", "m", openClosed(0.0, 1e6),
+                   "a body whose centre of mass leaves the scene's box grown by this is put back at its start",
+                   [](P& p) -> double& { return p.world_margin; }),
     };
     rows.insert(rows.end(), more.begin(), more.end());
     return rows;

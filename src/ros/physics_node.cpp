@@ -16,6 +16,7 @@
 #include "god_finger/ros/reconfigure.h"
 #include "god_finger/ros/scene_parameter.h"
 #include "god_finger/ros/world_messages.h"
+#include "god_finger/runtime/left_world_report.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <dynamic_reconfigure/server.h>
@@ -76,7 +77,8 @@ struct PhysicsNode::Impl
   long overruns = 0;
   std::unique_ptr<LiveReconfigure> reconfigure;
   std::vector<double> step_us;
-  WorldSnapshot snapshot;  // read by publishScene
+  WorldSnapshot snapshot;      // read by publishScene
+  LeftWorldReport left_world;  // guarded by mutex
 
   void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
   {
@@ -151,6 +153,10 @@ struct PhysicsNode::Impl
       return false;
     }
     world->setContactParams(applied.contact);
+    if (applied.pad_solver != world->params().pad_solver)
+    {
+      world->setPadSolver(applied.pad_solver);
+    }
     if (model_changed)
     {
       world->setContactModel(applied.model);
@@ -255,6 +261,9 @@ struct PhysicsNode::Impl
     contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
     marker_publisher.publish(markerMessage(scene, snapshot, world->params().coupling.proxy_radius, stamp));
     broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
+    std::lock_guard<std::mutex> lock(mutex);
+    left_world.update(scene, snapshot, stamp.toSec(),
+                      [](const std::string& line) { ROS_WARN("physics: %s", line.c_str()); });
   }
 
   void publishDiagnostics(double seconds, long steps)
@@ -277,6 +286,8 @@ struct PhysicsNode::Impl
     add("step_us_median", jsonNumber(percentile(step_us, 0.5)));
     add("step_us_p99", jsonNumber(percentile(step_us, 0.99)));
     add("contact_model", contactModelName(world->contactModel()));
+    add("pad_solver", padSolverName(world->params().pad_solver));
+    add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)
     step_us.clear();
     array.status.push_back(status);
     diagnostics_publisher.publish(array);

@@ -18,6 +18,7 @@
 #include "god_finger/ros/reconfigure.h"
 #include "god_finger/ros/servo_setup.h"
 #include "god_finger/ros/world_messages.h"
+#include "god_finger/runtime/left_world_report.h"
 #include "god_finger/runtime/loop_statistics.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_loop.h"
@@ -73,12 +74,14 @@ struct ServoNode::Impl
   // world -> NAME_device of every interface (ros/device_frame.h): the interactive handle's frame.
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster;
   std::unique_ptr<LiveReconfigure> reconfigure;
-  int shown_model = -1;      // the loop's model the publisher thread last saw (counters().model)
-  ContactParams contact;     // the last contact parameters sent to the loop
-  WorldParams world_params;  // what the loop was built with (the base of a reconfiguration)
+  int shown_model = -1;                           // the loop's model the publisher thread last saw (counters().model)
+  ContactParams contact;                          // the last contact parameters sent to the loop
+  PadSolver pad_solver = PadSolver::kConstraint;  // the last pad solver sent to the loop
+  WorldParams world_params;                       // what the loop was built with (the base of a reconfiguration)
   std::thread publisher_thread;
   std::atomic<bool> publishing{true};
   LoopStatistics statistics;
+  LeftWorldReport left_world;  // the publisher thread's
   long last_ticks = 0;
   double last_ticks_at = -1.0;
   long last_dropped = 0;
@@ -149,6 +152,7 @@ struct ServoNode::Impl
     params.kind = ServoCommand::Kind::kSetContactParams;
     WorldParams base = world_params;
     base.contact = contact;
+    base.pad_solver = pad_solver;
     WorldParams applied;
     if (!worldFromConfig(config, base, &applied, error))
     {
@@ -160,6 +164,17 @@ struct ServoNode::Impl
       return false;
     }
     contact = params.contact;
+    if (applied.pad_solver != pad_solver)
+    {
+      ServoCommand solver;
+      solver.kind = ServoCommand::Kind::kSetPadSolver;
+      solver.pad_solver = applied.pad_solver;
+      if (!loop->post(solver, error))
+      {
+        return false;
+      }
+      pad_solver = applied.pad_solver;
+    }
     if (model_changed)
     {
       ServoCommand model;
@@ -272,6 +287,8 @@ struct ServoNode::Impl
     add("physics_steps", std::to_string(counters.physics_steps.load()));
     add("skipped_targets", std::to_string(counters.skipped_targets.load()));
     add("contact_model", contactModelName(static_cast<ContactModel>(counters.model.load())));
+    add("pad_solver", padSolverName(static_cast<PadSolver>(counters.pad_solver.load())));
+    add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
     statistics.clear();
@@ -325,6 +342,8 @@ struct ServoNode::Impl
         contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
         marker_publisher.publish(markerMessage(scene, snapshot, loop->world().params().coupling.proxy_radius, stamp));
         broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
+        left_world.update(scene, snapshot, stamp.toSec(),
+                          [](const std::string& line) { ROS_WARN("servo: %s", line.c_str()); });
       }
       showLoopModel();
       const double now = steadySeconds();
@@ -355,6 +374,7 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   impl.names = setup.names;
   impl.sim_time = impl.loop->params().simulated_time;
   impl.contact = setup.world_params.contact;
+  impl.pad_solver = setup.world_params.pad_solver;
   impl.world_params = setup.world_params;
   const WorldParams& world_params = setup.world_params;
   const std::string& scene_path = setup.scene_path;

@@ -103,6 +103,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
     guards_.emplace_back(interface.profile.guard);
   }
   counters_.model = static_cast<int>(world_->contactModel());
+  counters_.pad_solver = static_cast<int>(world_->params().pad_solver);
   sem_init(&physics_wake_, 0, 0);
 }
 
@@ -183,6 +184,11 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   {
     why = validate(command.contact);
   }
+  else if (command.kind == ServoCommand::Kind::kSetPadSolver && command.pad_solver != PadSolver::kPoints &&
+           command.pad_solver != PadSolver::kConstraint)
+  {
+    why = "pad solver " + std::to_string(static_cast<int>(command.pad_solver)) + " is not one of " + padSolverNames();
+  }
   else if (command.kind == ServoCommand::Kind::kHandTarget &&
            (command.interface < 0 || command.interface >= static_cast<int>(interfaces_.size()) ||
             !command.hand_target.allFinite()))
@@ -253,6 +259,9 @@ void ServoLoop::applyWorldCommands()
       case ServoCommand::Kind::kReset:
         world_->resetAtInterfaces();
         break;
+      case ServoCommand::Kind::kSetPadSolver:
+        world_->setPadSolver(command.pad_solver);  // validated by post()
+        break;
       case ServoCommand::Kind::kHandTarget:  // never queued here (post() sends them to the haptic side)
       case ServoCommand::Kind::kStopForce:
       case ServoCommand::Kind::kResumeForce:
@@ -260,6 +269,7 @@ void ServoLoop::applyWorldCommands()
     }
   }
   counters_.model = static_cast<int>(world_->contactModel());
+  counters_.pad_solver = static_cast<int>(world_->params().pad_solver);
 }
 
 template <class T>
@@ -327,6 +337,7 @@ void ServoLoop::readDevices(double time)
   cycle_presses_ += cycle_model ? 1 : 0;
   reset_presses_ += reset ? 1 : 0;
   frame_.tick = tick_;
+  frame_.time = time;
   frame_.read_at = read_at_[0];
   frame_.cycle_presses = cycle_presses_;
   frame_.reset_presses = reset_presses_;
@@ -349,6 +360,7 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
     }
   }
   last_frame_tick_ = frame.tick;
+  const long steps_before = world_->steps();
   applyWorldCommands();
   if (frame.cycle_presses > seen_cycle_presses_)
   {
@@ -363,6 +375,10 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
   {
     seen_reset_presses_ = frame.reset_presses;
     world_->resetAtInterfaces();
+  }
+  if (world_->steps() < steps_before)  // reset: the world's time starts again from 0
+  {
+    world_time_offset_ = frame.time;
   }
   const double step_start = steadySeconds();
   world_->step();
@@ -384,6 +400,7 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
     if (slot)
     {
       world_->snapshot(slot);
+      slot->time += world_time_offset_;  // on the loop's clock (snapshots())
       snapshots_.commit();
     }
     else

@@ -161,6 +161,8 @@ TEST(PlyReader, CorruptFilesGiveOneClearLine)
             "PLY header line 5: unknown property type 'quad'");
   EXPECT_EQ(errorOf(readPly, replaced("element vertex 5", "element vertex -5")),
             "PLY header line 4: element count '-5' is not a whole number");
+  EXPECT_EQ(errorOf(readPly, replaced("element vertex 5", "element vertex 0")),
+            "PLY file declares no vertices (element vertex 0)");
   EXPECT_EQ(errorOf(readPly, replaced("property float x", "property float w")),
             "PLY vertex element lacks an x, y or z property");
   EXPECT_EQ(errorOf(readPly, replaced("vertex_indices", "corners")), "PLY face element has no vertex_indices list");

@@ -4,6 +4,7 @@
 #include "god_finger/core/contact_sampling.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
+#include "god_finger/mesh_io/polygon_soup.h"
 
 #include <gtest/gtest.h>
 
@@ -182,6 +183,32 @@ double shoelaceArea(const Outline& outline)
     twice += outline[j][0] * outline[i][1] - outline[i][0] * outline[j][1];
   }
   return 0.5 * std::abs(twice);
+}
+
+// Issue 18: triangles index the soup's vertices with int; a mesh with more vertices than that
+// (here a limit of 5 stands for INT_MAX) is refused with the count, and the soup is unchanged.
+TEST(PolygonFaces, MoreVerticesThanTrianglesCanIndexAreRefused)
+{
+  PolygonSoup quad;
+  quad.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  quad.corners = {0, 1, 2, 3};
+  quad.endFace();
+  TriangleSoup soup;
+  soup.vertices = {{5, 5, 5}, {6, 6, 6}};
+  try
+  {
+    appendTriangulated(quad, &soup, 5);
+    FAIL() << "6 vertices accepted with a limit of 5";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(), "mesh has 6 vertices, more than the 5 its triangles can index");
+  }
+  EXPECT_EQ(soup.vertices.size(), 2u);
+  EXPECT_TRUE(soup.triangles.empty());
+  appendTriangulated(quad, &soup, 6);
+  EXPECT_EQ(soup.vertices.size(), 6u);
+  EXPECT_EQ(soup.triangles.size(), 2u);
 }
 
 TEST(PolygonFaces, ConcaveFacesLoadAsExactCoversInEveryFormat)

@@ -61,7 +61,7 @@ TEST(UrdfScene, ShippedSphereSceneHasAStaticTableAndAFreeBall)
 
 TEST(UrdfScene, EveryShippedSceneLoads)
 {
-  for (const char* name : {"table_sphere", "table_cylinder", "table_box", "table_torus", "rails_plate"})
+  for (const char* name : {"table_ball", "table_sphere", "table_cylinder", "table_box", "table_torus", "rails_plate"})
   {
     SCOPED_TRACE(name);
     const SceneDescription scene = loadUrdfScene(kScenes + "/" + name + ".urdf");
@@ -218,6 +218,27 @@ TEST(UrdfScene, WithoutAResolverPackagesAreTheFoldersAboveTheUrdfThatNameThem)
   const int torus = scene.find("torus");
   ASSERT_GE(torus, 0);
   EXPECT_NE(scene.bodies[torus].geometry.mesh_path.find("/urdf/meshes/torus.dae"), std::string::npos);
+}
+TEST(UrdfScene, FileUrlsAndRelativePathsFindMeshesOutsideThePackage)
+{
+  // file:// takes an absolute path; a bare path is relative to the URDF's folder.
+  const std::string meshes = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/meshes";
+  const SceneDescription by_url = parseUrdfScene(sceneWith("<collision><geometry><mesh filename='file://" + meshes +
+                                                           "/box.stl'/></geometry></collision>" + kGoodInertial),
+                                                 "/nonexistent", "test.urdf");
+  EXPECT_EQ(by_url.bodies[by_url.find("thing")].geometry.mesh_path, meshes + "/box.stl");
+  EXPECT_EQ(errorOf(sceneWith("<collision><geometry><mesh filename='file:///no/such/box.stl'/></geometry></collision>" +
+                              kGoodInertial)),
+            "URDF 'test.urdf': link 'thing': mesh 'file:///no/such/box.stl' not found (looked for "
+            "'/no/such/box.stl')");
+  // A user's scene outside urdf/scenes (own_scene.test launches it): package:// and relative.
+  const SceneDescription own =
+      loadUrdfScene(std::string(GOD_FINGER_SOURCE_DIR) + "/test/data/own_scene/own_scene.urdf");
+  ASSERT_EQ(own.bodies.size(), 3u);
+  EXPECT_NE(own.bodies[own.find("own_widget")].geometry.mesh_path.find("/urdf/meshes/box.stl"), std::string::npos);
+  EXPECT_EQ(own.bodies[own.find("own_pebble")].geometry.mesh_path,
+            std::string(GOD_FINGER_SOURCE_DIR) + "/test/data/own_scene/../../../urdf/meshes/sphere.obj");
+  EXPECT_DOUBLE_EQ(own.bodies[own.find("own_pebble")].material.rolling_friction, 0.002);
 }
 }  // namespace
 }  // namespace god_finger

@@ -2,7 +2,8 @@
 """rostest: dynamic_reconfigure of the simulation (~node: the servo node by default, the
 physics node in the topic topologies) while it runs. The finger presses on the
 ball; a smaller r_max shrinks the published contact area at once; the model switches; a bad
-walk variant is refused and the previous one stays. Then the user's sequence of issue 18: the
+walk variant is refused and the previous one stays; the pad solver switches (its diagnostics
+value), a bad one is refused. Then the user's sequence of issue 18: the
 set_contact_model service switches the model, and a later `dynparam set` of r_max keeps it (the
 server shows the model in force, and one entry's change resets no other)."""
 import sys
@@ -22,6 +23,7 @@ class Reconfigure(RosTestSupport, unittest.TestCase):
         self.radius = None
         self.model = None
         self.diagnostics = 0  # messages that carried a contact model
+        self.pad_solver = None
         rospy.Subscriber("/contact_areas", ContactAreaArray, self.on_areas, queue_size=10)
         rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=10)
 
@@ -35,6 +37,8 @@ class Reconfigure(RosTestSupport, unittest.TestCase):
                 if pair.key == "contact_model":
                     self.model = pair.value
                     self.diagnostics += 1
+                if pair.key == "pad_solver":
+                    self.pad_solver = pair.value
 
 
     def wait_for_diagnostics(self, count, what):
@@ -60,6 +64,16 @@ class Reconfigure(RosTestSupport, unittest.TestCase):
         self.assertEqual(refused["walk"], "unfold")
         self.assertAlmostEqual(refused["r_max"], 0.004)
         self.assertEqual(refused["model"], "god_object")
+
+        # Issue 18: the pad solver changes live too, and a bad one is refused.
+        self.wait_for(lambda: self.pad_solver == "constraint", 5.0, "the default pad solver in /diagnostics")
+        self.assertEqual(client.update_configuration({"pad_solver": "points"})["pad_solver"], "points")
+        self.wait_for(lambda: self.pad_solver == "points", 5.0, "pad_solver points in /diagnostics")
+        refused = client.update_configuration({"pad_solver": "sideways"})
+        self.assertEqual(refused["pad_solver"], "points")
+        self.run_command(["rosrun", "dynamic_reconfigure", "dynparam", "set", node, "pad_solver", "constraint"])
+        self.wait_for(lambda: self.pad_solver == "constraint", 5.0, "pad_solver constraint in /diagnostics")
+        self.assertEqual(client.get_configuration(timeout=5)["pad_solver"], "constraint")
 
         # Issue 18: the service switches the model, and a later change of r_max keeps it.
         client.update_configuration({"model": "god_finger"})

@@ -220,6 +220,36 @@ TEST(ServoLoop, CommandsAreAppliedBetweenTwoSteps)
       0.005);
 }
 
+// Issue 18: the pad solver changes live, between two steps, like the other parameters; a value
+// that names none is refused by post().
+TEST(ServoLoop, ThePadSolverChangesBetweenTwoSteps)
+{
+  auto loop = makeLoop(pressingHand());
+  runTicks(*loop, 600);  // pressing the ball
+  EXPECT_EQ(loop->world().params().pad_solver, PadSolver::kConstraint);
+  const int rows_constraint = loop->world().solverContactRows();
+  ServoCommand command;
+  command.kind = ServoCommand::Kind::kSetPadSolver;
+  command.pad_solver = PadSolver::kPoints;
+  ASSERT_TRUE(loop->post(command));
+  EXPECT_EQ(loop->world().params().pad_solver, PadSolver::kConstraint);  // not before the next tick
+  runTicks(*loop, 1, 600);
+  EXPECT_EQ(loop->world().params().pad_solver, PadSolver::kPoints);
+  EXPECT_EQ(static_cast<PadSolver>(loop->counters().pad_solver.load()), PadSolver::kPoints);
+  runTicks(*loop, 100, 601);
+  // The paper's points: a row set per sub-god-object, more than the pad's rows.
+  EXPECT_GT(loop->world().solverContactRows(), rows_constraint);
+  EXPECT_LT(loop->world().interfaceState(0).user_force.norm(), 20.0);
+  EXPECT_TRUE(loop->world().interfaceState(0).proxy_position.allFinite());
+
+  ServoCommand bad;
+  bad.kind = ServoCommand::Kind::kSetPadSolver;
+  bad.pad_solver = static_cast<PadSolver>(7);
+  std::string error;
+  EXPECT_FALSE(loop->post(bad, &error));
+  EXPECT_EQ(error, "pad solver 7 is not one of points, constraint");
+}
+
 TEST(ServoLoop, ButtonZeroCyclesTheModelAndButtonOneResets)
 {
   auto device = std::make_unique<ScriptedDevice>();
@@ -229,6 +259,48 @@ TEST(ServoLoop, ButtonZeroCyclesTheModelAndButtonOneResets)
   EXPECT_EQ(loop->world().contactModel(), ContactModel::kGodFinger);  // one press: one step along the list
   runTicks(*loop, 30, 30);
   EXPECT_EQ(loop->world().steps(), 10);  // reset at tick 50 (whose step is the first), ticks 51-59
+}
+
+// Issue 18: time never goes backwards. A reset (the command, or button 1) sends the world's time
+// to 0 while the loop's clock (/clock on simulated time) goes on: the snapshots' time, which
+// stamps TF, markers and contact areas, stays on the loop's clock; before any reset it is the
+// world's own time.
+TEST(ServoLoop, SnapshotTimeNeverGoesBackAcrossAReset)
+{
+  auto device = std::make_unique<ScriptedDevice>();
+  device->buttons = [](double t) { return (t >= 0.1995 && t < 0.2005) ? 2u : 0u; };  // button 1 at tick 200
+  auto loop = makeLoop(std::move(device));
+  std::vector<double> times;
+  ServoSample sample;
+  WorldSnapshot snapshot;
+  for (int k = 0; k < 300; ++k)
+  {
+    if (k == 100)
+    {
+      ServoCommand reset;
+      reset.kind = ServoCommand::Kind::kReset;
+      ASSERT_TRUE(loop->post(reset));
+    }
+    loop->tick(k * loop->period());
+    while (loop->samples().tryPop(&sample))
+    {
+    }
+    while (loop->snapshots().tryPop(&snapshot))
+    {
+      if (k < 100)
+      {
+        EXPECT_EQ(snapshot.time, loop->world().time()) << "tick " << k;  // unchanged before a reset
+      }
+      times.push_back(snapshot.time);
+    }
+  }
+  ASSERT_GE(times.size(), 3u);
+  for (std::size_t i = 1; i < times.size(); ++i)
+  {
+    ASSERT_GT(times[i], times[i - 1]) << "snapshot " << i;
+  }
+  EXPECT_NEAR(loop->world().time(), 0.1, 1e-9);           // the button's reset at tick 200, 100 steps since
+  EXPECT_NEAR(times.back(), 289 * loop->period(), 1e-9);  // the last snapshot: tick 288, after its step
 }
 
 TEST(ServoLoop, NonFiniteReadingsAreRejectedAndTheLastTargetStays)

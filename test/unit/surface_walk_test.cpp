@@ -42,6 +42,24 @@ TriangleMesh valley(double angle)
   return TriangleMesh::build(soup);
 }
 
+// Issue 18: a start whose barycentric coordinates do not sum to 1 (or lie outside the face) is
+// not a point of the mesh: refused as invalid input, not walked from somewhere off the surface.
+TEST(SurfaceWalk, AStartWhoseBarycentricsDoNotSumToOneIsRefused)
+{
+  const TriangleMesh mesh = valley(0.0);
+  SurfaceLocation start;
+  start.face = 0;
+  start.barycentric = Eigen::Vector3d(0.5, 0.5, 0.5);  // sums to 1.5
+  const WalkLimits limits = limitsFor(WalkVariant::kUnfold);
+  EXPECT_EQ(walkSurface(mesh, start, Eigen::Vector3d::UnitX(), 0.1, limits).stop, WalkStop::kInvalidInput);
+  EXPECT_STREQ(walkStopName(WalkStop::kInvalidInput), "invalid_input");
+  start.barycentric = Eigen::Vector3d(1.2, -0.1, -0.1);  // sums to 1, outside the face
+  EXPECT_EQ(walkSurface(mesh, start, Eigen::Vector3d::UnitX(), 0.1, limits).stop, WalkStop::kInvalidInput);
+  // Within the tolerance of a snapped location: walked.
+  start.barycentric = Eigen::Vector3d(0.3, 0.3, 0.4 - 2e-7);
+  EXPECT_EQ(walkSurface(mesh, start, Eigen::Vector3d::UnitX(), 0.01, limits).stop, WalkStop::kDistanceReached);
+}
+
 TEST(SurfaceWalk, ConcaveCreaseUnfoldsAndProjects)
 {
   const double angle = 30.0 * kDegree;

@@ -37,9 +37,15 @@ enum class WalkStop : std::uint8_t
   kDirectionLost,        // direction degenerate on the new face (projection variant at a fold)
   kCrossingCap,          // max_crossings reached, or no progress
   kDropped,              // start: the radial vector's face is beyond tau_a or the friction cone
-  kInvalidInput,         // non-finite input, or a location not on the mesh
+  kInvalidInput,         // non-finite input, a location not on the mesh, or barycentric coordinates
+                         // that do not sum to 1 or lie outside [0, 1] (kBarycentricTolerance)
 };
 const char* walkStopName(WalkStop stop);
+
+// How far a start location's barycentric coordinates may sum from 1, or fall below 0
+// (dimensionless): a location snapped to a feature (surface_location.h, feature tolerance 1e-7)
+// is off by at most 2e-7; more is not a point of the face, and walkSurface refuses it.
+constexpr double kBarycentricTolerance = 1e-6;
 
 struct WalkResult
 {

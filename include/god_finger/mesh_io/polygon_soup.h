@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace god_finger
@@ -45,5 +46,8 @@ constexpr int kMaxFaceCorners = 4096;
 // its best-fit plane (core/polygon_triangulation.h); faces of fewer than 3 corners (points,
 // lines) are skipped. Throws InputError ("face F refers to vertex V of N", "face F has K
 // corners, more than 4096", or the triangulation's reason for face F) and leaves `soup` as it was.
-void appendTriangulated(const PolygonSoup& polygons, TriangleSoup* soup);
+// The soup's triangles index its vertices with int: more than `max_vertices` (INT_MAX; smaller
+// only in tests) vertices in all is refused the same way, naming the count.
+void appendTriangulated(const PolygonSoup& polygons, TriangleSoup* soup,
+                        long long max_vertices = std::numeric_limits<int>::max());
 }  // namespace god_finger

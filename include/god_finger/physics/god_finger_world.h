@@ -66,6 +66,11 @@ struct BodyState
   Eigen::Vector3d net_force =
       Eigen::Vector3d::Zero();  // N on the centre of mass, m dv/dt over the last step (gravity included)
   bool asleep = false;          // sleeping (WorldParams::sleep): not simulated until woken
+  // Times it left the world's bounds (WorldParams::world_margin) and was put back at its initial
+  // pose, at rest, since the world was made (a reset does not clear them); the world time (s)
+  // of the last, -1 if never.
+  int left_world = 0;
+  double left_world_at = -1.0;
 };
 
 // Everything an observer shows of a world at one step (markers, TF, contact-area messages),
@@ -123,6 +128,9 @@ class GodFingerWorld
   ContactModel contactModel() const;
   // Throws InputError on invalid parameters; keeps the old ones then.
   void setContactParams(const ContactParams& params);
+  // god_finger's pad solver (WorldParams::pad_solver), from the next step; wakes every body.
+  // Throws InputError on a value that names none.
+  void setPadSolver(PadSolver solver);
   const WorldParams& params() const;
 
   int interfaceCount() const;

@@ -106,6 +106,11 @@ struct WorldParams
   // Largest edge of the walk surface of a sphere or cylinder, as a fraction of r_max: the
   // tessellation is refined until its edges are no longer (capped at 81920 triangles).
   double walk_edge_per_max_radius = 0.5;
+  // The world's bounds (m): the box around the scene as loaded (every body at its initial pose),
+  // grown by this on every side. A dynamic body whose centre of mass leaves them (off the table,
+  // falling) is put back at its initial pose, at rest, and counted (BodyState::left_world): the
+  // scene stays whole however long it runs. 1 m: far from anything a finger does on a table.
+  double world_margin = 1.0;
 };
 
 // The one table of the parameters of WorldParams read by name (its rows are the list; the

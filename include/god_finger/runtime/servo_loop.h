@@ -167,10 +167,12 @@ struct ServoCommand
     kHandTarget,
     kStopForce,    // every guard's output to zero at once (ForceGuard::stop), haptic side
     kResumeForce,  // force back with the soft start (ForceGuard::resume)
+    kSetPadSolver,
   };
   Kind kind = Kind::kReset;
   ContactModel model = ContactModel::kGodFinger;
-  ContactParams contact;  // validated by post()
+  ContactParams contact;                            // validated by post()
+  PadSolver pad_solver = WorldParams().pad_solver;  // kSetPadSolver, validated by post()
   int interface = 0;
   Eigen::Vector3d hand_target = Eigen::Vector3d::Zero();  // m, device frame
 };
@@ -189,9 +191,10 @@ struct ServoCounters
   std::atomic<long> physics_steps{0};    // steps taken
   std::atomic<long> skipped_targets{0};  // targets the physics skipped, being late
   std::atomic<int> model{static_cast<int>(ContactModel::kGodFinger)};
-  std::atomic<bool> realtime{false};       // the haptic thread got SCHED_FIFO
-  std::atomic<bool> failed{false};         // a device failed; the loop stopped
-  std::atomic<bool> force_stopped{false};  // kStopForce applied, no kResumeForce since
+  std::atomic<int> pad_solver{static_cast<int>(WorldParams().pad_solver)};  // the world's, after each step's commands
+  std::atomic<bool> realtime{false};                                        // the haptic thread got SCHED_FIFO
+  std::atomic<bool> failed{false};                                          // a device failed; the loop stopped
+  std::atomic<bool> force_stopped{false};                                   // kStopForce applied, no kResumeForce since
 };
 
 class ServoLoop
@@ -227,6 +230,10 @@ class ServoLoop
   {
     return samples_;
   }
+  // The world after a step, every snapshot_every ticks. Its `time` is on the loop's clock: the
+  // world's time plus the loop time of the last reset (0 before any), so that it never goes
+  // back when a reset (a command, button 1) sends the world's own time to 0 while the loop's
+  // clock, /clock on simulated time, goes on; before a reset it is the world's time exactly.
   SpscQueue<WorldSnapshot>& snapshots()
   {
     return snapshots_;
@@ -261,6 +268,7 @@ class ServoLoop
   struct TargetFrame
   {
     long tick = -1;
+    double time = 0.0;                        // s, the loop time of that tick
     double read_at = 0.0;                     // s, steadySeconds() of the first device's reading
     long cycle_presses = 0;                   // ticks on which button 0 was pressed, since the loop began
     long reset_presses = 0;                   // same, button 1
@@ -351,7 +359,8 @@ class ServoLoop
   long seen_cycle_presses_ = 0;
   long seen_reset_presses_ = 0;
   long next_snapshot_tick_ = 0;
-  TargetFrame seam_frame_;  // simulated time: the targets of the late step in progress
+  double world_time_offset_ = 0.0;  // s: loop time of the frame the last reset was applied in
+  TargetFrame seam_frame_;          // simulated time: the targets of the late step in progress
   bool seam_busy_ = false;
   long seam_ready_tick_ = 0;
   StepResult seam_result_;

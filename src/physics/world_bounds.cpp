@@ -1,0 +1,32 @@
+#include "world_bounds.h"
+
+#include "bullet_helpers.h"
+
+namespace god_finger
+{
+Eigen::AlignedBox3d worldBounds(const Eigen::AlignedBox3d& scene_box, double margin)
+{
+  const Eigen::Vector3d grow = Eigen::Vector3d::Constant(margin);
+  return Eigen::AlignedBox3d(scene_box.min() - grow, scene_box.max() + grow);
+}
+
+bool catchIfOutside(const Eigen::AlignedBox3d& bounds, const btTransform& start, btRigidBody* rigid,
+                    btDiscreteDynamicsWorld* world)
+{
+  const Eigen::Vector3d centre = toEigen(rigid->getCenterOfMassPosition());
+  if (centre.allFinite() && bounds.contains(centre))
+  {
+    return false;
+  }
+  rigid->setCenterOfMassTransform(start);  // the world and interpolation transforms
+  rigid->setLinearVelocity(btVector3(0, 0, 0));
+  rigid->setAngularVelocity(btVector3(0, 0, 0));
+  rigid->setInterpolationLinearVelocity(btVector3(0, 0, 0));
+  rigid->setInterpolationAngularVelocity(btVector3(0, 0, 0));
+  rigid->clearForces();
+  world->updateSingleAabb(rigid);
+  world->getBroadphase()->getOverlappingPairCache()->cleanProxyFromPairs(rigid->getBroadphaseHandle(),
+                                                                         world->getDispatcher());
+  return true;
+}
+}  // namespace god_finger

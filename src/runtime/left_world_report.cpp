@@ -1,0 +1,54 @@
+#include "god_finger/runtime/left_world_report.h"
+
+#include <cstdio>
+
+namespace god_finger
+{
+void LeftWorldReport::update(const SceneDescription& scene, const WorldSnapshot& snapshot, double stamp,
+                             const std::function<void(const std::string&)>& warn)
+{
+  if (start_ < 0.0)
+  {
+    start_ = stamp;
+  }
+  if (seen_.size() != snapshot.bodies.size())
+  {
+    seen_.assign(snapshot.bodies.size(), 0);
+    at_.assign(snapshot.bodies.size(), -1.0);
+    names_.clear();
+    for (std::size_t i = 0; i < snapshot.bodies.size() && i < scene.bodies.size(); ++i)
+    {
+      names_.push_back(scene.bodies[i].name);
+    }
+    names_.resize(snapshot.bodies.size());
+  }
+  for (std::size_t i = 0; i < snapshot.bodies.size(); ++i)
+  {
+    const int count = snapshot.bodies[i].left_world;
+    if (count == seen_[i])
+    {
+      continue;
+    }
+    seen_[i] = count;
+    at_[i] = stamp - start_;
+    char line[256];
+    std::snprintf(line, sizeof(line), "left the world at t = %.3f s: put back at its start (world_margin)", at_[i]);
+    warn("body '" + names_[i] + "' " + line);
+  }
+}
+
+std::string LeftWorldReport::diagnosticValue() const
+{
+  std::string value;
+  for (std::size_t i = 0; i < seen_.size(); ++i)
+  {
+    if (seen_[i] > 0)
+    {
+      char entry[64];
+      std::snprintf(entry, sizeof(entry), " (%d) at %.3f s", seen_[i], at_[i]);
+      value += (value.empty() ? "" : "; ") + names_[i] + entry;
+    }
+  }
+  return value.empty() ? "none" : value;
+}
+}  // namespace god_finger
