@@ -46,8 +46,7 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
                        "' has the hardware backend '" + backend_name +
                        "': a person's hand does not run on simulated time");
     }
-    DeviceContext context(device_params);
-    context.max_force = config.profile.guard.max_force;
+    DeviceContext context(device_params, config.profile.coupling.max_force);
     context.script_start = script_start;
     context.read_track = readBagTrack;
     context.default_track_topic = interface_nh.resolveName("device/state");
