@@ -8,16 +8,32 @@
 
 namespace god_finger
 {
+namespace
+{
+// "god_object|god_finger|soft_finger": the one list (physics/contact_model.h).
+std::string modelChoices()
+{
+  std::string choices;
+  for (const ContactModel model : contactModels())
+  {
+    choices += (choices.empty() ? "" : "|") + std::string(contactModelName(model));
+  }
+  return choices;
+}
+}  // namespace
+
 const char* experimentToolUsage()
 {
   static const std::string usage =
       "usage: god_finger_experiment --scenario " + scenarioNames("|") +
       "\n"
-      "                             --model god_object|god_finger|soft_finger\n"
+      "                             --model " +
+      modelChoices() +
+      "\n"
       "                             [--duration S] [--dt S] [--csv FILE] [--seed N] [--fast]\n"
       "                             [--push-height M] [--scenes DIR] [--hand ideal|fake]\n"
       "                             [--pad-solver points|constraint]\n"
-      "       god_finger_experiment --list-scenarios\n"
+      "       god_finger_experiment --list-scenarios | --list-models\n"
       "Runs the scenario's scripted hand motion in the physics world and prints one JSON object:\n"
       "scenario, model, duration_s, steps, step_us_median, step_us_p99, max_penetration_m, nan,\n"
       "metrics. --duration 0 (default) runs the scenario's own length; --fast lifts ten times\n"
@@ -25,7 +41,8 @@ const char* experimentToolUsage()
       "default 0.0125 m); --csv writes the time series. --hand ideal (default) puts each interface\n"
       "where the script says; --hand fake runs the servo loop on simulated time with the fake\n"
       "device's handle held by the scripted hand, as a ROS session on the servo loop does.\n"
-      "--list-scenarios prints the scenario names, one a line (the one list scripts read).\n";
+      "--list-scenarios prints the scenario names, --list-models the contact models', one a line\n"
+      "(the one lists scripts read).\n";
   return usage.c_str();
 }
 
@@ -47,6 +64,11 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
     if (option == "--list-scenarios")
     {
       options->list_scenarios = true;
+      return "";
+    }
+    if (option == "--list-models")
+    {
+      options->list_models = true;
       return "";
     }
     if (option == "--fast")

@@ -145,6 +145,15 @@ TEST(ContactModels, TheCfgAndTheToolsListTheOneListInItsOrder)
     usage_list += (usage_list.empty() ? "" : "|") + std::string(contactModelName(model));
   }
   EXPECT_NE(runTool("--help").out.find("--model " + usage_list), std::string::npos);
+  // Scripts (scripts/demo, scripts/plot_experiment) read the models from the tool.
+  std::string lines;
+  for (ContactModel model : contactModels())
+  {
+    lines += std::string(contactModelName(model)) + "\n";
+  }
+  const test::ToolRun run = runTool("--list-models");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, lines);
 }
 }  // namespace
 }  // namespace god_finger
