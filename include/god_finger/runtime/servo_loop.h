@@ -53,8 +53,9 @@
 //    while the hand presses.
 //
 // Threads and clocks:
-//  - Real time (CLOCK_MONOTONIC, absolute deadlines, so the rate does not drift; a late period
-//    is an overrun, counted; far behind, the schedule restarts from now): the haptic thread
+//  - Real time (CLOCK_MONOTONIC, the deadlines of runtime/fixed_rate_schedule.h, so the rate
+//    does not drift; a late period is an overrun, counted; far behind, the schedule restarts
+//    from now): the haptic thread
 //    (SCHED_FIFO `realtime_priority`) does the device I/O and never waits for the physics; the
 //    physics thread (SCHED_FIFO realtime_priority - 1, normal scheduling when that is 0) steps
 //    when new targets are posted (a POSIX semaphore, whose post is lock-free). Mailboxes:
