@@ -106,12 +106,7 @@ std::string validate(const WorldParams& params)
   {
     return "parameter 'gravity' must be finite (m/s^2)";
   }
-  if (!isContactModel(params.model))
-  {
-    return "parameter 'model' = " + std::to_string(static_cast<int>(params.model)) + " is not one of " +
-           contactModelNames();
-  }
-  const std::string contact_error = validate(params.contact);  // also checks the walk variant
+  const std::string contact_error = validate(params.contact);
   if (!contact_error.empty())
   {
     return contact_error;

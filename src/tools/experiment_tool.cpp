@@ -1,5 +1,6 @@
 #include "experiment_tool.h"
 
+#include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/runtime/servo_experiment.h"
 
@@ -85,7 +86,6 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
       return "option '" + option + "' needs a value";
     }
     const std::string value = argv[++i];
-    double number = 0.0;
     long long integer = 0;
     if (option == "--scenario")
     {
@@ -103,36 +103,12 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
       }
       have_model = true;
     }
-    else if (option == "--duration" || option == "--dt")
-    {
-      if (!parseDouble(value, &number) || !std::isfinite(number))
-      {
-        return "option '" + option + "' = '" + value + "' is not a number (s)";
-      }
-      if (option == "--duration" && !(number >= 0.0 && number <= 3600.0))
-      {
-        return "option '--duration' = '" + value + "' is out of range [0, 3600] (s)";
-      }
-      if (option == "--dt" && !(number >= 1e-5 && number <= 0.01))
-      {
-        return "option '--dt' = '" + value + "' is out of range [1e-05, 0.01] (s)";
-      }
-      (option == "--duration" ? experiment.duration : experiment.time_step) = number;
-    }
     else if (option == "--pad-solver")
     {
       if (!parsePadSolver(value, &experiment.pad_solver))
       {
         return "option '--pad-solver' = '" + value + "' is not one of " + padSolverNames();
       }
-    }
-    else if (option == "--push-height")
-    {
-      if (!parseDouble(value, &number) || !(number >= 0.0 && number <= 0.04))
-      {
-        return "option '--push-height' = '" + value + "' is out of range [0, 0.04] (m)";
-      }
-      experiment.push_height = number;
     }
     else if (option == "--seed")
     {
@@ -160,7 +136,18 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
     }
     else
     {
-      return "unknown option '" + option + "' (see --help)";
+      try
+      {
+        // --dt, --duration, --push-height: the rows of experimentOptionTable(), ranges checked.
+        if (!parseFlag(experimentOptionTable(), option, value, &experiment))
+        {
+          return "unknown option '" + option + "' (see --help)";
+        }
+      }
+      catch (const InputError& error)
+      {
+        return error.what();
+      }
     }
   }
   if (!have_scenario || !have_model)

@@ -161,6 +161,19 @@ TEST(ParameterTables, TheCfgEnumsAreTheChoicesOfTheirRows)
   EXPECT_GE(enums, 2);  // model and walk
 }
 
+TEST(ParameterTables, AChoiceThatIsNoneOfItsRowsChoicesIsRefusedByName)
+{
+  ContactParams contact;
+  contact.walk = static_cast<WalkVariant>(7);
+  EXPECT_EQ(validate(contact), "parameter 'walk' = 'unknown' is not one of project, unfold");
+  WorldParams world;
+  world.model = static_cast<ContactModel>(9);
+  EXPECT_EQ(validate(world), "parameter 'model' = 'unknown' is not one of " + contactModelNames());
+  world = WorldParams();
+  world.contact.walk = static_cast<WalkVariant>(-1);
+  EXPECT_EQ(validate(world), "parameter 'walk' = 'unknown' is not one of project, unfold");
+}
+
 TEST(ParameterTables, DefaultsAreValidAndEveryBoundIsEnforcedWithTheParameterNamed)
 {
   EXPECT_EQ(validate(ContactParams{}), "");
