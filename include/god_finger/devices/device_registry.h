@@ -36,7 +36,8 @@ struct DeviceContext
 struct DeviceBackend
 {
   const char* name;
-  const char* profile;  // config/devices/PROFILE.yaml: force limit, coupling, workspace
+  const char* profile;  // config/devices/PROFILE.yaml: force limit, coupling, workspace (launch/interface.launch
+                        // loads it; test/ros/launch_profiles_test.py checks that it does)
   bool simulated;       // needs no hardware (can run on simulated time, in lockstep)
   bool hand_target;     // moved by a hand the user drags (setHandTarget): the nodes add an rviz marker
   std::unique_ptr<HapticDevice> (*make)(const DeviceContext& context);
