@@ -370,7 +370,7 @@ const ParameterTable<ExperimentOptions>& experimentOptionTable()
 {
   using P = ExperimentOptions;
   static const ParameterTable<P> table = {
-      realRow<P>("dt", "s", closed(1e-5, 0.01), "the world's fixed step", [](P& p) -> double& { return p.time_step; }),
+      realRow<P>("dt", "s", timeStepRange(), "the world's fixed step", [](P& p) -> double& { return p.time_step; }),
       realRow<P>("duration", "s", closed(0.0, 3600.0), "how long to run (0: the scenario's own length)",
                  [](P& p) -> double& { return p.duration; }),
       realRow<P>("push_height", "m", closed(0.0, 0.04), "slide: the hand's height above the ball's centre",

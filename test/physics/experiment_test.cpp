@@ -206,7 +206,7 @@ TEST(Experiment, BadOptionsAreRejected)
   EXPECT_THROW(runExperiment(options), InputError);
   options.scenes_dir = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
   options.time_step = 0.0;
-  EXPECT_EQ(validateRows(experimentOptionTable(), options), "parameter 'dt' = 0 is out of range [1e-05, 0.01] (s)");
+  EXPECT_EQ(validateRows(experimentOptionTable(), options), "parameter 'dt' = 0 is out of range [1e-05, 0.1] (s)");
   EXPECT_THROW(runExperiment(options), InputError);
   options.time_step = 1e-3;
   options.duration = -1.0;

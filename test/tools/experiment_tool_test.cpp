@@ -65,7 +65,7 @@ TEST(ExperimentTool, BadOptionsGiveOneLineAndExitCode2)
       {"--scenario slide", "missing option '--model'"},
       {"--scenario roll --model god_finger", "option '--scenario' = 'roll' is not one of"},
       {"--scenario slide --model point", "option '--model' = 'point' is not one of"},
-      {"--scenario slide --model god_finger --dt 0", "parameter '--dt' = 0 is out of range [1e-05, 0.01] (s)"},
+      {"--scenario slide --model god_finger --dt 0", "parameter '--dt' = 0 is out of range [1e-05, 0.1] (s)"},
       {"--scenario slide --model god_finger --dt abc", "parameter '--dt' must be a number (s)"},
       {"--scenario slide --model god_finger --duration -1",
        "parameter '--duration' = -1 is out of range [0, 3600] (s)"},
