@@ -9,7 +9,14 @@ namespace god_finger
 {
 const char* walkVariantName(WalkVariant variant)
 {
-  return variant == WalkVariant::kProject ? "project" : "unfold";
+  switch (variant)
+  {
+    case WalkVariant::kProject:
+      return "project";
+    case WalkVariant::kUnfold:
+      return "unfold";
+  }
+  return "unknown";  // not a variant: validate() refuses it by name
 }
 
 bool parseWalkVariant(const std::string& text, WalkVariant* variant)
@@ -63,11 +70,7 @@ const ParameterTable<ContactParams>& contactParameterTable()
 
 std::string validate(const ContactParams& params)
 {
-  if (params.walk != WalkVariant::kProject && params.walk != WalkVariant::kUnfold)
-  {
-    return "parameter 'walk' = " + std::to_string(static_cast<int>(params.walk)) + " is not 'project' or 'unfold'";
-  }
-  return validateRows(contactParameterTable(), params);
+  return validateRows(contactParameterTable(), params);  // the walk row refuses a value that is no variant
 }
 
 void validateOrThrow(const ContactParams& params)

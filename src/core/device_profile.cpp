@@ -27,7 +27,6 @@ DeviceProfile readDeviceProfile(const ParameterSource& source)
 {
   DeviceProfile profile;
   readRows(source, deviceProfileTable(), &profile);
-  profile.guard.max_force = profile.coupling.max_force;
   return profile;
 }
 }  // namespace god_finger

@@ -37,14 +37,18 @@ const ParameterTable<ForceGuardParams>& forceGuardParameterTable()
 
 std::string validate(const ForceGuardParams& params)
 {
-  const CouplingProfile limit{1.0, 0.0, params.max_force};
-  const std::string error = validateRows(couplingParameterTable(), limit);
-  return error.empty() ? validateRows(forceGuardParameterTable(), params) : error;
+  return validateRows(forceGuardParameterTable(), params);
 }
 
-ForceGuard::ForceGuard(const ForceGuardParams& params) : params_(params)
+ForceGuard::ForceGuard(double max_force, const ForceGuardParams& params) : max_force_(max_force), params_(params)
 {
-  const std::string error = validate(params);
+  CouplingProfile limit;  // only its max_force row matters; the others keep their valid defaults
+  limit.max_force = max_force;
+  std::string error = validate(limit);
+  if (error.empty())
+  {
+    error = validate(params);
+  }
   if (!error.empty())
   {
     throw InputError(error);
@@ -64,9 +68,9 @@ bool ForceGuard::command(double time, const Eigen::Vector3d& force)
   }
   const double magnitude = force.norm();
   last_force_ = force;
-  if (magnitude > params_.max_force)
+  if (magnitude > max_force_)
   {
-    last_force_ *= params_.max_force / magnitude;
+    last_force_ *= max_force_ / magnitude;
     ++saturated_;
   }
   last_command_time_ = time;
@@ -111,8 +115,8 @@ Eigen::Vector3d ForceGuard::output(double time)
   }
   // 4. Continuous budget.
   const double decay = std::exp(-dt / params_.thermal_time_constant);
-  const double continuous = std::min(params_.continuous_force, params_.max_force);
-  if (continuous < params_.max_force && decay < 1.0)
+  const double continuous = std::min(params_.continuous_force, max_force_);
+  if (continuous < max_force_ && decay < 1.0)
   {
     const double cap2 = (continuous * continuous - decay * load_) / (1.0 - decay);
     const double cap = cap2 > 0.0 ? std::sqrt(cap2) : 0.0;

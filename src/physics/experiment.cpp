@@ -405,23 +405,27 @@ ScenarioSetup loadScenario(const ExperimentOptions& options)
   return setup;
 }
 
+const ParameterTable<ExperimentOptions>& experimentOptionTable()
+{
+  using P = ExperimentOptions;
+  static const ParameterTable<P> table = {
+      realRow<P>("dt", "s", timeStepRange(), "the world's fixed step", [](P& p) -> double& { return p.time_step; }),
+      realRow<P>("duration", "s", closed(0.0, 3600.0), "how long to run (0: the scenario's own length)",
+                 [](P& p) -> double& { return p.duration; }),
+      realRow<P>("push_height", "m", closed(0.0, 0.04), "slide: the hand's height above the ball's centre",
+                 [](P& p) -> double& { return p.push_height; }),
+  };
+  return table;
+}
+
 namespace
 {
 void checkOptions(const ExperimentOptions& options)
 {
-  if (!(options.time_step >= 1e-5 && options.time_step <= 0.01))
+  const std::string error = validateRows(experimentOptionTable(), options);
+  if (!error.empty())
   {
-    throw InputError("option 'dt' = " + std::to_string(options.time_step) + " is out of range [1e-05, 0.01] (s)");
-  }
-  if (!(options.duration <= 3600.0) || std::isnan(options.duration))
-  {
-    throw InputError("option 'duration' = " + std::to_string(options.duration) +
-                     " is out of range (0, 3600] (s; 0 for the scenario's own)");
-  }
-  if (!(options.push_height >= 0.0 && options.push_height <= 0.04))
-  {
-    throw InputError("option 'push-height' = " + std::to_string(options.push_height) +
-                     " is out of range [0, 0.04] (m)");
+    throw InputError(error);
   }
 }
 }  // namespace

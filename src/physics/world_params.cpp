@@ -98,23 +98,28 @@ const ParameterTable<WorldParams>& worldParameterTable()
   return table;
 }
 
+ParameterRange timeStepRange()
+{
+  return closed(1e-5, 0.1);
+}
+
 std::string validate(const WorldParams& params)
 {
-  // Written as !(in range) so that NaN is out of range.
-  if (!(params.time_step >= 1e-5 && params.time_step <= 0.1))
+  using P = WorldParams;
+  static const ParameterTable<P> step = {
+      realRow<P>("time_step", "s", timeStepRange(), "the world's fixed step (the servo loop's period, 1 / rate)",
+                 [](P& p) -> double& { return p.time_step; }),
+  };
+  const std::string step_error = validateRows(step, params);
+  if (!step_error.empty())
   {
-    return outOfRange("time_step", params.time_step, "[1e-05, 0.1]", "s");
+    return step_error;
   }
   if (!params.gravity.allFinite())
   {
     return "parameter 'gravity' must be finite (m/s^2)";
   }
-  if (!isContactModel(params.model))
-  {
-    return "parameter 'model' = " + std::to_string(static_cast<int>(params.model)) + " is not one of " +
-           contactModelNames();
-  }
-  const std::string contact_error = validate(params.contact);  // also checks the walk variant
+  const std::string contact_error = validate(params.contact);
   if (!contact_error.empty())
   {
     return contact_error;

@@ -1,4 +1,4 @@
-#include "god_finger/ros/bag_track.h"
+#include "bag_track.h"
 
 #include "god_finger/DeviceState.h"
 #include "god_finger/core/input_error.h"

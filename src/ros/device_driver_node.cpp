@@ -1,18 +1,21 @@
 #include "god_finger/ros/device_driver_node.h"
-#include "god_finger/ros/node_parameters.h"
+#include "node_parameters.h"
 
+#include "bag_track.h"
+#include "diagnostics.h"
 #include "god_finger/DeviceState.h"
 #include "god_finger/core/force_guard.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/spsc_queue.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/device_registry.h"
-#include "god_finger/ros/bag_track.h"
-#include "god_finger/ros/diagnostics.h"
-#include "god_finger/ros/hand_marker.h"
-#include "god_finger/ros/interface_parameters.h"
-#include "god_finger/ros/parameters.h"
-#include "god_finger/ros/queues.h"
-#include "god_finger/ros/realtime.h"
+#include "god_finger/runtime/fixed_rate_schedule.h"
+#include "god_finger/runtime/servo_clock.h"
+#include "hand_marker.h"
+#include "interface_parameters.h"
+#include "parameters.h"
+#include "queues.h"
+#include "realtime.h"
 
 #include <XmlRpcValue.h>
 #include <diagnostic_msgs/DiagnosticArray.h>
@@ -20,16 +23,37 @@
 #include <ros/ros.h>
 #include <std_srvs/SetBool.h>
 
+#include <semaphore.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <mutex>
 #include <thread>
 
 namespace god_finger
 {
+namespace
+{
+// One tick of the device loop, handed to the publisher thread.
+struct DriverSample
+{
+  ros::Time stamp;  // when the device was read (wall clock)
+  DeviceReading reading;
+  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();  // N, device frame
+};
+// Ticks of samples the publisher thread may lag behind (a second at 1 kHz); beyond it a sample
+// is dropped (counted) rather than the loop waiting.
+constexpr std::size_t kSampleQueueTicks = 1000;
+}  // namespace
+
+// Threads: the device loop (real-time priority when permitted) reads the device, takes the
+// guard's output and leaves a sample in a preallocated queue: it allocates nothing, logs
+// nothing and takes one lock, `mutex`, which the other threads hold only around a call of the
+// guard. The publisher thread (normal priority) turns samples into device/state messages and
+// publishes the diagnostics; ROS callbacks (force commands, stop_force) command the guard.
 struct DeviceDriverNode::Impl
 {
   std::unique_ptr<HapticDevice> device;
@@ -42,14 +66,20 @@ struct DeviceDriverNode::Impl
   ros::Subscriber force_subscriber;
   ros::ServiceServer stop_service;  // stop_force, in the interface's namespace
   std::unique_ptr<interactive_markers::InteractiveMarkerServer> marker_server;
-  std::mutex mutex;  // guards the guard
+  std::mutex mutex;  // guards the guard, and nothing else
   std::thread thread;
+  std::thread publisher_thread;
   std::atomic<bool> running{true};
   std::chrono::steady_clock::time_point epoch = std::chrono::steady_clock::now();
-  long overruns = 0;
+  SpscQueue<DriverSample> samples{kSampleQueueTicks};  // device loop -> publisher thread
+  sem_t samples_ready;                                 // posted by the loop per sample (lock-free)
+  std::atomic<long> ticks{0};
+  std::atomic<long> overruns{0};
+  std::atomic<long> dropped{0};        // samples the publisher thread had no room for
+  std::mutex trips_mutex;              // guards round_trips_us (callback and publisher threads)
   std::vector<double> round_trips_us;  // since the last diagnostics
-  long published = 0;
-  std::FILE* timing = nullptr;  // ~timing_csv: every round trip (us), for the bench
+  std::uint32_t published = 0;         // publisher thread only
+  std::FILE* timing = nullptr;         // ~timing_csv: every round trip (us), for the bench (callback thread)
 
   double now() const
   {
@@ -61,18 +91,27 @@ struct DeviceDriverNode::Impl
     const Eigen::Vector3d force(message->vector.x, message->vector.y, message->vector.z);
     // The command is stamped with the device state it answers: the loop's round trip.
     const double round_trip = (ros::Time::now() - message->header.stamp).toSec();
-    std::lock_guard<std::mutex> lock(mutex);
+    bool accepted = true;
+    long rejected = 0;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      accepted = guard->command(now(), force);
+      rejected = guard->rejected();
+    }
+    if (!accepted)
+    {
+      ROS_WARN_THROTTLE(1.0, "device_driver: rejected a non-finite force command (%ld so far)", rejected);
+    }
     if (!message->header.stamp.isZero() && round_trip >= 0.0 && round_trip < 10.0)
     {
-      round_trips_us.push_back(1e6 * round_trip);
-      if (timing)  // the bench's file, written here in the callback thread, not in the device loop
+      {
+        std::lock_guard<std::mutex> lock(trips_mutex);
+        round_trips_us.push_back(1e6 * round_trip);
+      }
+      if (timing)  // the bench's file, written here in the callback thread, under no lock the loop takes
       {
         std::fprintf(timing, "%.3f\n", 1e6 * round_trip);
       }
-    }
-    if (!guard->command(now(), force))
-    {
-      ROS_WARN_THROTTLE(1.0, "device_driver: rejected a non-finite force command (%ld so far)", guard->rejected());
     }
   }
 
@@ -115,12 +154,16 @@ struct DeviceDriverNode::Impl
       saturated = guard->saturated();
       stopped = guard->stopped();
       budget_limited = guard->budgetLimited();
+    }
+    {
+      std::lock_guard<std::mutex> lock(trips_mutex);
       trips.swap(round_trips_us);
     }
     status.message = timed_out ? "no force commands: output ramped to zero" : "running";
     auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", std::to_string(rate));
-    add("overruns", std::to_string(overruns));
+    add("overruns", std::to_string(overruns.load()));
+    add("dropped_states", std::to_string(dropped.load()));
     add("rejected_commands", std::to_string(rejected));
     add("saturated_commands", std::to_string(saturated));
     add("force_stopped", stopped ? "true" : "false");
@@ -138,14 +181,9 @@ struct DeviceDriverNode::Impl
   void loop()
   {
     requestRealTimePriority(realtime_priority, ros::this_node::getName() + " (device loop)");
-    using Clock = std::chrono::steady_clock;
-    const auto step = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period));
-    auto next = Clock::now();
-    auto diagnostics_start = next;
-    long ticks = 0;
+    FixedRateSchedule schedule(period, steadySeconds());
     while (running && ros::ok())
     {
-      next += step;
       const double t = now();
       Eigen::Vector3d force;
       {
@@ -163,40 +201,77 @@ struct DeviceDriverNode::Impl
         ros::shutdown();
         return;
       }
-      god_finger::DeviceStatePtr state(new god_finger::DeviceState);
-      state->header.stamp = ros::Time::now();
-      state->header.seq = static_cast<std::uint32_t>(++published);  // gap-free: a recording can be checked
-      state->header.frame_id = frame;
-      state->position.x = reading.position.x();
-      state->position.y = reading.position.y();
-      state->position.z = reading.position.z();
-      state->velocity.x = reading.velocity.x();
-      state->velocity.y = reading.velocity.y();
-      state->velocity.z = reading.velocity.z();
-      state->buttons = reading.buttons;
-      state->applied_force.x = force.x();
-      state->applied_force.y = force.y();
-      state->applied_force.z = force.z();
-      state_publisher.publish(state);
-      ++ticks;
-      const auto after = Clock::now();
-      if (after - diagnostics_start >= std::chrono::seconds(1))
+      DriverSample* sample = samples.reserve();
+      if (sample)
       {
-        publishDiagnostics(ticks / std::chrono::duration<double>(after - diagnostics_start).count());
-        diagnostics_start = after;
-        ticks = 0;
-      }
-      if (after > next)
-      {
-        ++overruns;
-        if (after - next > 10 * step)
-        {
-          next = after;
-        }
+        sample->stamp = ros::Time::now();
+        sample->reading = reading;
+        sample->applied_force = force;
+        samples.commit();
+        sem_post(&samples_ready);
       }
       else
       {
-        std::this_thread::sleep_until(next);
+        ++dropped;
+      }
+      ++ticks;
+      const double after = steadySeconds();
+      const double next = schedule.tickEnded(after);
+      overruns.store(schedule.overruns());
+      if (next > after)
+      {
+        sleepUntil(next);
+      }
+    }
+  }
+
+  void publishSample(const DriverSample& sample)
+  {
+    god_finger::DeviceStatePtr state(new god_finger::DeviceState);
+    state->header.stamp = sample.stamp;
+    state->header.seq = ++published;  // gap-free: a recording can be checked
+    state->header.frame_id = frame;
+    state->position.x = sample.reading.position.x();
+    state->position.y = sample.reading.position.y();
+    state->position.z = sample.reading.position.z();
+    state->velocity.x = sample.reading.velocity.x();
+    state->velocity.y = sample.reading.velocity.y();
+    state->velocity.z = sample.reading.velocity.z();
+    state->buttons = sample.reading.buttons;
+    state->applied_force.x = sample.applied_force.x();
+    state->applied_force.y = sample.applied_force.y();
+    state->applied_force.z = sample.applied_force.z();
+    state_publisher.publish(state);
+  }
+
+  // The publisher thread: every sample the loop leaves as device/state, the diagnostics at 1 Hz.
+  void publish()
+  {
+    double diagnostics_start = steadySeconds();
+    long diagnostics_ticks = ticks.load();
+    DriverSample sample;
+    while (running && ros::ok())
+    {
+      timespec wake;
+      clock_gettime(CLOCK_REALTIME, &wake);
+      wake.tv_nsec += 20000000;  // 20 ms: looks at `running` at least that often
+      if (wake.tv_nsec >= 1000000000)
+      {
+        wake.tv_nsec -= 1000000000;
+        ++wake.tv_sec;
+      }
+      sem_timedwait(&samples_ready, &wake);
+      while (samples.tryPop(&sample))
+      {
+        publishSample(sample);
+      }
+      const double now_s = steadySeconds();
+      if (now_s - diagnostics_start >= 1.0)
+      {
+        const long now_ticks = ticks.load();
+        publishDiagnostics((now_ticks - diagnostics_ticks) / (now_s - diagnostics_start));
+        diagnostics_start = now_s;
+        diagnostics_ticks = now_ticks;
       }
     }
   }
@@ -215,12 +290,11 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   const RosParameterSource interface_params(nh);
   const LayeredParameterSource device_params(private_params, interface_params);
   const InterfaceConfig config = readInterfaceConfig(device_params, nh.getNamespace());
-  impl.guard = std::make_unique<ForceGuard>(config.profile.guard);
+  impl.guard = std::make_unique<ForceGuard>(config.profile.coupling.max_force, config.profile.guard);
   const std::string backend_name = readString(device_params, "backend", "fake");
   const DeviceBackend& backend = findDeviceBackend(backend_name, device_params.fullName("backend"));
   impl.frame = readString(pnh, "frame", "device");
-  DeviceContext context(device_params);
-  context.max_force = config.profile.guard.max_force;
+  DeviceContext context(device_params, config.profile.coupling.max_force);
   context.script_start = sharedScriptStart(pnh, impl.now());
   context.read_track = readBagTrack;
   context.default_track_topic = nh.resolveName("device/state");
@@ -239,7 +313,9 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.stop_service = nh.advertiseService("stop_force", &Impl::onStopForce, &impl);
   impl.timing = openTimingCsv(pnh, "latency_us");
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend_name.c_str(), 1.0 / impl.period,
-           config.profile.guard.max_force);
+           config.profile.coupling.max_force);
+  sem_init(&impl.samples_ready, 0, 0);
+  impl.publisher_thread = std::thread([this]() { impl_->publish(); });
   impl.thread = std::thread([this]() { impl_->loop(); });
 }
 
@@ -250,6 +326,11 @@ DeviceDriverNode::~DeviceDriverNode()
   {
     impl_->thread.join();
   }
+  if (impl_->publisher_thread.joinable())
+  {
+    impl_->publisher_thread.join();
+  }
+  sem_destroy(&impl_->samples_ready);
   if (impl_->timing)
   {
     std::fclose(impl_->timing);

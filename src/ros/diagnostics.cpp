@@ -1,7 +1,7 @@
-#include "god_finger/ros/diagnostics.h"
+#include "diagnostics.h"
 
 #include "god_finger/core/input_error.h"
-#include "god_finger/ros/parameters.h"
+#include "parameters.h"
 
 namespace god_finger
 {

@@ -1,8 +1,8 @@
-#include "god_finger/ros/hand_marker.h"
-#include "god_finger/ros/node_parameters.h"
+#include "hand_marker.h"
+#include "node_parameters.h"
 
 #include "god_finger/core/text_numbers.h"
-#include "god_finger/ros/parameters.h"
+#include "parameters.h"
 
 #include <ros/ros.h>
 

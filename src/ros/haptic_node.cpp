@@ -1,6 +1,8 @@
 #include "god_finger/ros/haptic_node.h"
-#include "god_finger/ros/node_parameters.h"
+#include "node_parameters.h"
 
+#include "device_frame.h"
+#include "diagnostics.h"
 #include "god_finger/DeviceState.h"
 #include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
@@ -9,11 +11,9 @@
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/ros/conversions.h"
-#include "god_finger/ros/device_frame.h"
-#include "god_finger/ros/diagnostics.h"
-#include "god_finger/ros/interface_parameters.h"
-#include "god_finger/ros/parameters.h"
-#include "god_finger/ros/queues.h"
+#include "interface_parameters.h"
+#include "parameters.h"
+#include "queues.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>

@@ -1,8 +1,8 @@
-#include "god_finger/ros/interface_parameters.h"
+#include "interface_parameters.h"
 
 #include "god_finger/core/input_error.h"
-#include "god_finger/ros/node_parameters.h"
-#include "god_finger/ros/parameters.h"
+#include "node_parameters.h"
+#include "parameters.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "god_finger/ros/markers.h"
+#include "markers.h"
 
 #include "god_finger/ros/conversions.h"
 

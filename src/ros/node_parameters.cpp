@@ -1,6 +1,6 @@
-#include "god_finger/ros/node_parameters.h"
+#include "node_parameters.h"
 
-#include "god_finger/ros/parameters.h"
+#include "parameters.h"
 
 namespace god_finger
 {

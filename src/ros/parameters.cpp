@@ -1,4 +1,4 @@
-#include "god_finger/ros/parameters.h"
+#include "parameters.h"
 
 #include <XmlRpcValue.h>
 

@@ -1,31 +1,29 @@
 #include "god_finger/ros/physics_node.h"
-#include "god_finger/ros/node_parameters.h"
+#include "node_parameters.h"
 
+#include "diagnostics.h"
 #include "god_finger/ContactAreaArray.h"
-#include "god_finger/GodFingerConfig.h"
-#include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/physics/urdf_scene.h"
 #include "god_finger/ros/conversions.h"
-#include "god_finger/ros/diagnostics.h"
-#include "god_finger/ros/interface_parameters.h"
-#include "god_finger/ros/parameters.h"
-#include "god_finger/ros/queues.h"
-#include "god_finger/ros/reconfigure.h"
-#include "god_finger/ros/scene_parameter.h"
-#include "god_finger/ros/world_messages.h"
+#include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/left_world_report.h"
+#include "god_finger/runtime/servo_clock.h"
+#include "interface_parameters.h"
+#include "parameters.h"
+#include "queues.h"
+#include "scene_parameter.h"
+#include "world_messages.h"
+#include "world_services.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
-#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
-#include <std_srvs/Trigger.h>
 #include <tf2_ros/transform_broadcaster.h>
 
 #include <atomic>
@@ -56,6 +54,12 @@ struct PhysicsNode::Impl
     ros::Time target_stamp;  // of the pose the target came from: feedback carries it on
     bool have_target = false;
     bool fresh = false;  // a pose came since the last step
+    // What the last step left for this interface's publishers: copied under the lock by step(),
+    // published after it by publishStep() (loop thread only).
+    bool stepped = false;  // in the world, so feedback and proxy are published
+    ros::Time feedback_stamp;
+    Eigen::Vector3d user_force = Eigen::Vector3d::Zero();      // N, world
+    Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world
   };
 
   ros::NodeHandle nh;
@@ -67,18 +71,17 @@ struct PhysicsNode::Impl
   ros::Publisher contact_publisher;
   ros::Publisher marker_publisher;
   ros::Publisher diagnostics_publisher;
-  ros::ServiceServer reset_service;
-  ros::ServiceServer model_service;
   tf2_ros::TransformBroadcaster broadcaster;
   double publish_period = 1.0 / 60.0;
   std::thread thread;
   std::atomic<bool> running{true};
   long rejected_poses = 0;
   long overruns = 0;
-  std::unique_ptr<LiveReconfigure> reconfigure;
-  std::vector<double> step_us;
-  WorldSnapshot snapshot;      // read by publishScene
-  LeftWorldReport left_world;  // guarded by mutex
+  std::unique_ptr<WorldServices> services;  // reset_scene, set_contact_model, dynamic_reconfigure
+  std::vector<double> step_us;              // since the last diagnostics (under `mutex`)
+  std::vector<double> step_us_read;         // publishDiagnostics' swap partner: both keep their capacity
+  WorldSnapshot snapshot;                   // read by publishScene
+  LeftWorldReport left_world;               // guarded by mutex
 
   void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
   {
@@ -133,51 +136,39 @@ struct PhysicsNode::Impl
     return any;
   }
 
-  bool onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
+  // A world command of the services (world_services.h), applied at once under the lock.
+  bool apply(const ServoCommand& command, std::string* error)
   {
     std::lock_guard<std::mutex> lock(mutex);
-    world->reset();
-    response.success = true;
-    response.message = "scene reset";
-    return true;
+    switch (command.kind)
+    {
+      case ServoCommand::Kind::kReset:
+        world->resetAtInterfaces();
+        return true;
+      case ServoCommand::Kind::kSetContactModel:
+        world->setContactModel(command.model);
+        return true;
+      case ServoCommand::Kind::kSetPadSolver:
+        world->setPadSolver(command.pad_solver);
+        return true;
+      case ServoCommand::Kind::kSetContactParams:
+        try
+        {
+          world->setContactParams(command.contact);
+        }
+        catch (const InputError& bad)
+        {
+          *error = bad.what();
+          return false;
+        }
+        return true;
+      default:
+        *error = "the physics node has no device: it takes no force or hand commands";
+        return false;
+    }
   }
 
-  // dynamic_reconfigure: the method's parameters, and the model when the reconfiguration
-  // changes it (the service may have changed it since), applied together if valid.
-  bool applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
-  {
-    WorldParams applied;
-    std::lock_guard<std::mutex> lock(mutex);
-    if (!worldFromConfig(config, world->params(), &applied, error))
-    {
-      return false;
-    }
-    world->setContactParams(applied.contact);
-    if (applied.pad_solver != world->params().pad_solver)
-    {
-      world->setPadSolver(applied.pad_solver);
-    }
-    if (model_changed)
-    {
-      world->setContactModel(applied.model);
-    }
-    return true;
-  }
-
-  // The haptic node's button comes through here too.
-  bool onSetModel(god_finger::SetContactModel::Request& request, god_finger::SetContactModel::Response& response)
-  {
-    reconfigure->serveSetModel(request, response,
-                               [this](ContactModel model, std::string*)
-                               {
-                                 std::lock_guard<std::mutex> lock(mutex);
-                                 world->setContactModel(model);
-                                 return true;
-                               });
-    return true;
-  }
-
-  // One step under the lock; publishes the per-step messages.
+  // One step; leaves the per-step messages' contents in the interfaces (publishStep()).
   // Called with `mutex` held.
   void step()
   {
@@ -225,28 +216,46 @@ struct PhysicsNode::Impl
     const auto start = std::chrono::steady_clock::now();
     world->step();
     step_us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
-    const ros::Time stamp = ros::Time::now();
-    for (const Interface& interface : interfaces)
+    for (Interface& interface : interfaces)
     {
-      if (interface.index < 0)
+      interface.stepped = interface.index >= 0;
+      if (!interface.stepped)
       {
         continue;
       }
       const InterfaceState& state = world->interfaceState(interface.index);
+      interface.feedback_stamp = interface.target_stamp;
+      interface.user_force = state.user_force;
+      interface.proxy_position = state.proxy_position;
+    }
+  }
+
+  // The per-step messages of what step() left, published without the lock (loop thread).
+  void publishStep()
+  {
+    const ros::Time stamp = ros::Time::now();
+    for (const Interface& interface : interfaces)
+    {
+      if (!interface.stepped)
+      {
+        continue;
+      }
       // Stamped with the pose it answers (the device state's time, through the haptic node),
       // so that the driver can measure the whole round trip.
       interface.feedback_publisher.publish(
-          feedbackMessage(interface.target_stamp.isZero() ? stamp : interface.target_stamp, state.user_force));
-      interface.proxy_publisher.publish(proxyMessage(stamp, state.proxy_position));
+          feedbackMessage(interface.feedback_stamp.isZero() ? stamp : interface.feedback_stamp, interface.user_force));
+      interface.proxy_publisher.publish(proxyMessage(stamp, interface.proxy_position));
     }
   }
 
   void publishScene()
   {
     std::vector<std::string> names(interfaces.size());
+    double proxy_radius = 0.0;
     {
       std::lock_guard<std::mutex> lock(mutex);
       world->snapshot(&snapshot);
+      proxy_radius = world->params().coupling.proxy_radius;
       // The snapshot lists the world's interfaces, which are added in the order poses came.
       for (const Interface& interface : interfaces)
       {
@@ -259,36 +268,49 @@ struct PhysicsNode::Impl
     const ros::Time stamp = ros::Time::now();
     const SceneDescription& scene = world->scene();
     contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
-    marker_publisher.publish(markerMessage(scene, snapshot, world->params().coupling.proxy_radius, stamp));
+    marker_publisher.publish(markerMessage(scene, snapshot, proxy_radius, stamp));
     broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
     std::lock_guard<std::mutex> lock(mutex);
     left_world.update(scene, snapshot, stamp.toSec(),
                       [](const std::string& line) { ROS_WARN("physics: %s", line.c_str()); });
   }
 
+  // Reads the counters and the world under the lock, publishes after it.
   void publishDiagnostics(double seconds, long steps)
   {
-    std::lock_guard<std::mutex> lock(mutex);
+    double wanted = 0.0;
+    ContactModel model;
+    long rejected = 0;
+    PadSolver solver = PadSolver::kConstraint;
+    std::string left;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      step_us_read.clear();
+      step_us_read.swap(step_us);
+      wanted = 1.0 / world->params().time_step;
+      model = world->contactModel();
+      rejected = rejected_poses;
+      solver = world->params().pad_solver;
+      left = left_world.diagnosticValue();
+    }
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus status;
     status.name = ros::this_node::getName() + ": physics loop";
     status.hardware_id = "god_finger";
     const double rate = steps / seconds;
-    const double wanted = 1.0 / world->params().time_step;
     status.level =
         rate < 0.95 * wanted ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
     status.message = status.level == diagnostic_msgs::DiagnosticStatus::OK ? "running" : "below its rate";
     auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", jsonNumber(rate));
     add("overruns", std::to_string(overruns));
-    add("rejected_poses", std::to_string(rejected_poses));
-    add("step_us_median", jsonNumber(percentile(step_us, 0.5)));
-    add("step_us_p99", jsonNumber(percentile(step_us, 0.99)));
-    add("contact_model", contactModelName(world->contactModel()));
-    add("pad_solver", padSolverName(world->params().pad_solver));
-    add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)
-    step_us.clear();
+    add("rejected_poses", std::to_string(rejected));
+    add("step_us_median", jsonNumber(percentile(step_us_read, 0.5)));
+    add("step_us_p99", jsonNumber(percentile(step_us_read, 0.99)));
+    add("contact_model", contactModelName(model));
+    add("pad_solver", padSolverName(solver));
+    add("left_world", left);  // bodies put back at their start (world_margin)
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
   }
@@ -296,26 +318,33 @@ struct PhysicsNode::Impl
   // Fixed-step at 1/time_step on average, but each step is taken as soon as every interface's
   // new pose is in (so the feedback answers the freshest pose without waiting for a timer
   // tick), never earlier than half a period before its slot and never later than half a period
-  // after it. A step that ends after that latest moment is an overrun.
+  // after it. A step (and its publishing) that ends after that latest moment, the schedule's
+  // deadline (runtime/fixed_rate_schedule.h), is an overrun.
   void loop()
   {
-    using Clock = std::chrono::steady_clock;
-    const auto period =
-        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(world->params().time_step));
+    using Clock = std::chrono::steady_clock;  // CLOCK_MONOTONIC, as steadySeconds()
+    const double period_s = world->params().time_step;
+    const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period_s));
     const auto publish_every =
         std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(publish_period));
-    auto slot = Clock::now() + period;
-    auto next_publish = slot;
-    auto diagnostics_start = slot;
+    // The first slot one period from now; its deadline half a period after it.
+    FixedRateSchedule schedule(period_s, steadySeconds() + period_s / 2);
+    auto next_publish = Clock::now() + period;
+    auto diagnostics_start = next_publish;
     long diagnostics_steps = 0;
     while (running && ros::ok())
     {
-      std::this_thread::sleep_until(slot - period / 2);
+      const double deadline = schedule.deadline();
+      sleepUntil(deadline - period_s);
       {
         std::unique_lock<std::mutex> lock(mutex);
-        pose_arrived.wait_until(lock, slot + period / 2, [this] { return allPosesFresh() || !running; });
+        pose_arrived.wait_until(
+            lock,
+            Clock::time_point(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline))),
+            [this] { return allPosesFresh() || !running; });
         step();
       }
+      publishStep();
       ++diagnostics_steps;
       const auto now = Clock::now();
       if (now >= next_publish)
@@ -329,16 +358,8 @@ struct PhysicsNode::Impl
         diagnostics_start = now;
         diagnostics_steps = 0;
       }
-      const auto after = Clock::now();
-      if (after > slot + period / 2)
-      {
-        ++overruns;
-      }
-      slot += period;
-      if (after - slot > 10 * period)
-      {
-        slot = after + period;  // far behind (a debugger, a suspended process): do not race to catch up
-      }
+      schedule.tickEnded(steadySeconds());  // the next step's window opens at the deadline or now
+      overruns = schedule.overruns();
     }
   }
 };
@@ -376,15 +397,9 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-  // Starts from the parameters read above (the same private names), so it changes nothing
-  // until someone reconfigures.
-  impl.reconfigure = std::make_unique<LiveReconfigure>(
-      pnh, params,
-      [this](const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
-      { return impl_->applyConfig(config, model_changed, error); },
+  impl.services = std::make_unique<WorldServices>(
+      nh, pnh, params, [this](const ServoCommand& command, std::string* error) { return impl_->apply(command, error); },
       "physics");
-  impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);
-  impl.model_service = nh.advertiseService("set_contact_model", &Impl::onSetModel, &impl);
   ROS_INFO("physics: scene '%s' (%d bodies), %zu interface(s), %.0f Hz, model %s", scene_path.c_str(),
            impl.world->bodyCount(), names.size(), 1.0 / params.time_step, contactModelName(params.model));
   impl.thread = std::thread([this]() { impl_->loop(); });

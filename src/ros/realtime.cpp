@@ -1,4 +1,4 @@
-#include "god_finger/ros/realtime.h"
+#include "realtime.h"
 
 #include <ros/console.h>
 

@@ -1,8 +1,8 @@
-#include "god_finger/ros/scene_parameter.h"
+#include "scene_parameter.h"
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/physics/urdf_scene.h"
-#include "god_finger/ros/parameters.h"
+#include "parameters.h"
 
 #include <ros/package.h>
 

@@ -1,30 +1,28 @@
 #include "god_finger/ros/servo_node.h"
-#include "god_finger/ros/node_parameters.h"
+#include "node_parameters.h"
 
+#include "bag_track.h"
+#include "device_frame.h"
+#include "diagnostics.h"
 #include "god_finger/DeviceState.h"
-#include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/physics/urdf_scene.h"
-#include "god_finger/ros/bag_track.h"
 #include "god_finger/ros/conversions.h"
-#include "god_finger/ros/device_frame.h"
-#include "god_finger/ros/diagnostics.h"
-#include "god_finger/ros/hand_marker.h"
-#include "god_finger/ros/interface_parameters.h"
-#include "god_finger/ros/parameters.h"
-#include "god_finger/ros/queues.h"
-#include "god_finger/ros/reconfigure.h"
-#include "god_finger/ros/servo_setup.h"
-#include "god_finger/ros/world_messages.h"
 #include "god_finger/runtime/left_world_report.h"
 #include "god_finger/runtime/loop_statistics.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_loop.h"
+#include "hand_marker.h"
+#include "interface_parameters.h"
+#include "parameters.h"
+#include "queues.h"
+#include "servo_setup.h"
+#include "world_messages.h"
+#include "world_services.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
-#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/Vector3Stamped.h>
@@ -32,7 +30,6 @@
 #include <ros/ros.h>
 #include <rosgraph_msgs/Clock.h>
 #include <std_srvs/SetBool.h>
-#include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
@@ -67,17 +64,12 @@ struct ServoNode::Impl
   ros::Publisher contact_publisher;
   ros::Publisher marker_publisher;
   ros::Publisher diagnostics_publisher;
-  ros::ServiceServer reset_service;
-  ros::ServiceServer model_service;
   ros::ServiceServer stop_service;  // /stop_force
   tf2_ros::TransformBroadcaster broadcaster;
   // world -> NAME_device of every interface (ros/device_frame.h): the interactive handle's frame.
   std::unique_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster;
-  std::unique_ptr<LiveReconfigure> reconfigure;
-  int shown_model = -1;                           // the loop's model the publisher thread last saw (counters().model)
-  ContactParams contact;                          // the last contact parameters sent to the loop
-  PadSolver pad_solver = PadSolver::kConstraint;  // the last pad solver sent to the loop
-  WorldParams world_params;                       // what the loop was built with (the base of a reconfiguration)
+  std::unique_ptr<WorldServices> services;  // reset_scene, set_contact_model, dynamic_reconfigure
+  int shown_model = -1;                     // the loop's model the publisher thread last saw (counters().model)
   std::thread publisher_thread;
   std::atomic<bool> publishing{true};
   LoopStatistics statistics;
@@ -100,25 +92,6 @@ struct ServoNode::Impl
     return sim_time ? stampOf(sample.time) : ros::Time(sample.read_at + steady_to_ros);
   }
 
-  void post(const ServoCommand& command, const char* what)
-  {
-    std::string error;
-    if (!loop->post(command, &error))
-    {
-      ROS_WARN("servo: %s refused (%s)", what, error.c_str());
-    }
-  }
-
-  bool onReset(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response)
-  {
-    ServoCommand command;
-    command.kind = ServoCommand::Kind::kReset;
-    std::string error;
-    response.success = loop->post(command, &error);
-    response.message = response.success ? "scene reset" : error;
-    return true;
-  }
-
   // /stop_force: true stops every device's force at once (the guards output zero), false
   // resumes it with the guards' soft start.
   bool onStopForce(std_srvs::SetBool::Request& request, std_srvs::SetBool::Response& response)
@@ -131,60 +104,6 @@ struct ServoNode::Impl
     return true;
   }
 
-  bool onSetModel(god_finger::SetContactModel::Request& request, god_finger::SetContactModel::Response& response)
-  {
-    reconfigure->serveSetModel(request, response,
-                               [this](ContactModel model, std::string* error)
-                               {
-                                 ServoCommand command;
-                                 command.kind = ServoCommand::Kind::kSetContactModel;
-                                 command.model = model;
-                                 return loop->post(command, error);
-                               });
-    return true;
-  }
-
-  // The model is sent only when the reconfiguration changes it: the loop's may have changed
-  // since (a button) and is not the configuration's to undo.
-  bool applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
-  {
-    ServoCommand params;
-    params.kind = ServoCommand::Kind::kSetContactParams;
-    WorldParams base = world_params;
-    base.contact = contact;
-    base.pad_solver = pad_solver;
-    WorldParams applied;
-    if (!worldFromConfig(config, base, &applied, error))
-    {
-      return false;
-    }
-    params.contact = applied.contact;
-    if (!loop->post(params, error))
-    {
-      return false;
-    }
-    contact = params.contact;
-    if (applied.pad_solver != pad_solver)
-    {
-      ServoCommand solver;
-      solver.kind = ServoCommand::Kind::kSetPadSolver;
-      solver.pad_solver = applied.pad_solver;
-      if (!loop->post(solver, error))
-      {
-        return false;
-      }
-      pad_solver = applied.pad_solver;
-    }
-    if (model_changed)
-    {
-      ServoCommand model;
-      model.kind = ServoCommand::Kind::kSetContactModel;
-      model.model = applied.model;
-      post(model, "contact model");
-    }
-    return true;
-  }
-
   // The loop's model changed (a command, or a device button, which only the loop sees): the
   // reconfiguration server shows it.
   void showLoopModel()
@@ -193,7 +112,7 @@ struct ServoNode::Impl
     if (model != shown_model)
     {
       shown_model = model;
-      reconfigure->showModel(static_cast<ContactModel>(model));
+      services->showModel(static_cast<ContactModel>(model));
     }
   }
 
@@ -373,9 +292,6 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   impl.loop = std::move(setup.loop);
   impl.names = setup.names;
   impl.sim_time = impl.loop->params().simulated_time;
-  impl.contact = setup.world_params.contact;
-  impl.pad_solver = setup.world_params.pad_solver;
-  impl.world_params = setup.world_params;
   const WorldParams& world_params = setup.world_params;
   const std::string& scene_path = setup.scene_path;
   const ServoLoopParams& loop_params = impl.loop->params();
@@ -423,14 +339,10 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-  impl.reconfigure = std::make_unique<LiveReconfigure>(
-      pnh, world_params,
-      [this](const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
-      { return impl_->applyConfig(config, model_changed, error); },
-      "servo");
+  impl.services = std::make_unique<WorldServices>(
+      nh, pnh, world_params,
+      [this](const ServoCommand& command, std::string* error) { return impl_->loop->post(command, error); }, "servo");
   impl.shown_model = static_cast<int>(world_params.model);
-  impl.reset_service = nh.advertiseService("reset_scene", &Impl::onReset, &impl);
-  impl.model_service = nh.advertiseService("set_contact_model", &Impl::onSetModel, &impl);
   impl.stop_service = nh.advertiseService("/stop_force", &Impl::onStopForce, &impl);
   ROS_INFO("servo: scene '%s' (%d bodies), %zu interface(s), %.0f Hz on %s, model %s", scene_path.c_str(),
            impl.loop->world().bodyCount(), impl.names.size(), loop_params.rate,

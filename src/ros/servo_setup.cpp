@@ -1,14 +1,14 @@
-#include "god_finger/ros/servo_setup.h"
+#include "servo_setup.h"
 
+#include "bag_track.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/physics/urdf_scene.h"
-#include "god_finger/ros/bag_track.h"
-#include "god_finger/ros/hand_marker.h"
-#include "god_finger/ros/interface_parameters.h"
-#include "god_finger/ros/node_parameters.h"
-#include "god_finger/ros/parameters.h"
-#include "god_finger/ros/scene_parameter.h"
+#include "hand_marker.h"
+#include "interface_parameters.h"
+#include "node_parameters.h"
+#include "parameters.h"
+#include "scene_parameter.h"
 
 #include <cmath>
 
@@ -46,8 +46,7 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
                        "' has the hardware backend '" + backend_name +
                        "': a person's hand does not run on simulated time");
     }
-    DeviceContext context(device_params);
-    context.max_force = config.profile.guard.max_force;
+    DeviceContext context(device_params, config.profile.coupling.max_force);
     context.script_start = script_start;
     context.read_track = readBagTrack;
     context.default_track_topic = interface_nh.resolveName("device/state");

@@ -1,7 +1,7 @@
-#include "god_finger/ros/world_messages.h"
+#include "world_messages.h"
 
 #include "god_finger/ros/conversions.h"
-#include "god_finger/ros/markers.h"
+#include "markers.h"
 
 namespace god_finger
 {

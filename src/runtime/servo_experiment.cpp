@@ -20,7 +20,6 @@ ExperimentResult runServoExperiment(const ExperimentOptions& options, const Fake
     device->setScriptStart(0.0);
     interface.device = std::move(device);
     interface.profile.coupling = params.coupling;  // the scenario's coupling, as the ideal hand's
-    interface.profile.guard.max_force = params.coupling.max_force;
     interfaces.push_back(std::move(interface));
   }
   ServoLoopParams loop_params;

@@ -2,6 +2,7 @@
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/workspace_bound.h"
+#include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
 
 #include <cmath>
@@ -100,7 +101,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
     {
       throw InputError("interface '" + interface.name + "' has no device");
     }
-    guards_.emplace_back(interface.profile.guard);
+    guards_.emplace_back(interface.profile.coupling.max_force, interface.profile.guard);
   }
   counters_.model = static_cast<int>(world_->contactModel());
   counters_.pad_solver = static_cast<int>(world_->params().pad_solver);
@@ -638,8 +639,10 @@ void ServoLoop::runTicks()
   }
   const double period = 1.0 / params_.rate;
   const double pace = params_.simulated_time ? params_.real_time_factor : 1.0;
-  double epoch = steadySeconds();
-  long scheduled = 0;  // ticks since epoch
+  // On the wall clock at `pace` (none when pace <= 0: as fast as it goes).
+  FixedRateSchedule schedule(pace > 0.0 ? period / pace : period, steadySeconds());
+  long scheduled = 0;                                       // ticks since the start
+  const long earlier_overruns = counters_.overruns.load();  // of an earlier start()
   while (running_)
   {
     try
@@ -673,19 +676,13 @@ void ServoLoop::runTicks()
     {
       continue;
     }
-    const double deadline = epoch + scheduled * period / pace;
     const double now = steadySeconds();
-    if (now > deadline)
+    const double next = schedule.tickEnded(now);
+    counters_.overruns.store(earlier_overruns + schedule.overruns());
+    if (next > now)
     {
-      ++counters_.overruns;
-      if (now - deadline > 10.0 * period / pace)
-      {
-        // Far behind (a debugger, a suspended process): restart the schedule instead of racing.
-        epoch = now - scheduled * period / pace;
-      }
-      continue;
+      sleepUntil(next);
     }
-    sleepUntil(deadline);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "experiment_tool.h"
 
+#include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/runtime/servo_experiment.h"
 
@@ -8,16 +9,32 @@
 
 namespace god_finger
 {
+namespace
+{
+// "god_object|god_finger|soft_finger": the one list (physics/contact_model.h).
+std::string modelChoices()
+{
+  std::string choices;
+  for (const ContactModel model : contactModels())
+  {
+    choices += (choices.empty() ? "" : "|") + std::string(contactModelName(model));
+  }
+  return choices;
+}
+}  // namespace
+
 const char* experimentToolUsage()
 {
   static const std::string usage =
       "usage: god_finger_experiment --scenario " + scenarioNames("|") +
       "\n"
-      "                             --model god_object|god_finger|soft_finger\n"
+      "                             --model " +
+      modelChoices() +
+      "\n"
       "                             [--duration S] [--dt S] [--csv FILE] [--seed N] [--fast]\n"
       "                             [--push-height M] [--scenes DIR] [--hand ideal|fake]\n"
       "                             [--pad-solver points|constraint]\n"
-      "       god_finger_experiment --list-scenarios\n"
+      "       god_finger_experiment --list-scenarios | --list-models\n"
       "Runs the scenario's scripted hand motion in the physics world and prints one JSON object:\n"
       "scenario, model, duration_s, steps, step_us_median, step_us_p99, max_penetration_m, nan,\n"
       "metrics. --duration 0 (default) runs the scenario's own length; --fast lifts ten times\n"
@@ -25,7 +42,8 @@ const char* experimentToolUsage()
       "default 0.0125 m); --csv writes the time series. --hand ideal (default) puts each interface\n"
       "where the script says; --hand fake runs the servo loop on simulated time with the fake\n"
       "device's handle held by the scripted hand, as a ROS session on the servo loop does.\n"
-      "--list-scenarios prints the scenario names, one a line (the one list scripts read).\n";
+      "--list-scenarios prints the scenario names, --list-models the contact models', one a line\n"
+      "(the one lists scripts read).\n";
   return usage.c_str();
 }
 
@@ -49,6 +67,11 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
       options->list_scenarios = true;
       return "";
     }
+    if (option == "--list-models")
+    {
+      options->list_models = true;
+      return "";
+    }
     if (option == "--fast")
     {
       experiment.fast = true;
@@ -63,7 +86,6 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
       return "option '" + option + "' needs a value";
     }
     const std::string value = argv[++i];
-    double number = 0.0;
     long long integer = 0;
     if (option == "--scenario")
     {
@@ -81,36 +103,12 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
       }
       have_model = true;
     }
-    else if (option == "--duration" || option == "--dt")
-    {
-      if (!parseDouble(value, &number) || !std::isfinite(number))
-      {
-        return "option '" + option + "' = '" + value + "' is not a number (s)";
-      }
-      if (option == "--duration" && !(number >= 0.0 && number <= 3600.0))
-      {
-        return "option '--duration' = '" + value + "' is out of range [0, 3600] (s)";
-      }
-      if (option == "--dt" && !(number >= 1e-5 && number <= 0.01))
-      {
-        return "option '--dt' = '" + value + "' is out of range [1e-05, 0.01] (s)";
-      }
-      (option == "--duration" ? experiment.duration : experiment.time_step) = number;
-    }
     else if (option == "--pad-solver")
     {
       if (!parsePadSolver(value, &experiment.pad_solver))
       {
         return "option '--pad-solver' = '" + value + "' is not one of " + padSolverNames();
       }
-    }
-    else if (option == "--push-height")
-    {
-      if (!parseDouble(value, &number) || !(number >= 0.0 && number <= 0.04))
-      {
-        return "option '--push-height' = '" + value + "' is out of range [0, 0.04] (m)";
-      }
-      experiment.push_height = number;
     }
     else if (option == "--seed")
     {
@@ -138,7 +136,18 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
     }
     else
     {
-      return "unknown option '" + option + "' (see --help)";
+      try
+      {
+        // --dt, --duration, --push-height: the rows of experimentOptionTable(), ranges checked.
+        if (!parseFlag(experimentOptionTable(), option, value, &experiment))
+        {
+          return "unknown option '" + option + "' (see --help)";
+        }
+      }
+      catch (const InputError& error)
+      {
+        return error.what();
+      }
     }
   }
   if (!have_scenario || !have_model)

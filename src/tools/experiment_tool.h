@@ -15,6 +15,7 @@ struct ExperimentToolOptions
   bool fake_hand = false;  // --hand fake: the servo loop with the fake device's handle
   bool help = false;
   bool list_scenarios = false;  // --list-scenarios: print the scenario names, one a line, for scripts
+  bool list_models = false;     // --list-models: print the contact model names, one a line, for scripts
 };
 
 // Empty string on success, else one line saying what is wrong. `default_scenes_dir` is used

@@ -26,5 +26,13 @@ int main(int argc, char** argv)
     std::cout << god_finger::scenarioNames("\n") << "\n";
     return 0;
   }
+  if (options.list_models)
+  {
+    for (const god_finger::ContactModel model : god_finger::contactModels())
+    {
+      std::cout << god_finger::contactModelName(model) << "\n";
+    }
+    return 0;
+  }
   return god_finger::runExperimentTool(options, std::cout, std::cerr);
 }

@@ -9,6 +9,8 @@ namespace god_finger
 {
 namespace
 {
+constexpr double kMaxForce = 8.0;  // N: a device profile's limit (the Falcon caps it at 8.9)
+
 TEST(DeviceRegistry, ListsEveryBackendOnce)
 {
   EXPECT_EQ(deviceBackendNames(), "fake, interactive, replay, falcon, omni");
@@ -37,7 +39,7 @@ TEST(DeviceRegistry, FakeDeviceFollowsItsScriptFromTheSharedStart)
   script.items.push_back(ParameterValue::of(std::vector<double>{0.0, 0.0, 0.0, 0.1}));
   script.items.push_back(ParameterValue::of(std::vector<double>{1.0, 0.0, 0.0, 0.05}));
   params.set("script", script);
-  DeviceContext context(params);
+  DeviceContext context(params, kMaxForce);
   context.script_start = 2.0;
   auto device = makeDevice(findDeviceBackend("fake", "backend"), context);
   device->start();
@@ -56,13 +58,13 @@ TEST(DeviceRegistry, EachBackendChecksItsOwnParameters)
 {
   MapParameterSource params("/finger/");
   params.set("handle_mass", ParameterValue::of(0.0));
-  DeviceContext context(params);
+  DeviceContext context(params, kMaxForce);
   EXPECT_THROW(makeDevice(findDeviceBackend("fake", "backend"), context), InputError);
   MapParameterSource falcon("/left/");
   falcon.set("index", ParameterValue::ofInteger(20));
   try
   {
-    makeDevice(findDeviceBackend("falcon", "backend"), DeviceContext(falcon));
+    makeDevice(findDeviceBackend("falcon", "backend"), DeviceContext(falcon, kMaxForce));
     FAIL();
   }
   catch (const InputError& error)
@@ -72,7 +74,7 @@ TEST(DeviceRegistry, EachBackendChecksItsOwnParameters)
   MapParameterSource replay;
   try
   {
-    makeDevice(findDeviceBackend("replay", "backend"), DeviceContext(replay));
+    makeDevice(findDeviceBackend("replay", "backend"), DeviceContext(replay, kMaxForce));
     FAIL();
   }
   catch (const InputError& error)
@@ -81,7 +83,7 @@ TEST(DeviceRegistry, EachBackendChecksItsOwnParameters)
   }
 #ifndef GOD_FINGER_HAVE_NIFALCON
   MapParameterSource plain;
-  EXPECT_THROW(makeDevice(findDeviceBackend("falcon", "backend"), DeviceContext(plain)), DeviceError);
+  EXPECT_THROW(makeDevice(findDeviceBackend("falcon", "backend"), DeviceContext(plain, kMaxForce)), DeviceError);
 #endif
 }
 }  // namespace

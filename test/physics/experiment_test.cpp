@@ -231,8 +231,12 @@ TEST(Experiment, BadOptionsAreRejected)
   EXPECT_THROW(runExperiment(options), InputError);
   options.scenes_dir = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
   options.time_step = 0.0;
+  EXPECT_EQ(validateRows(experimentOptionTable(), options), "parameter 'dt' = 0 is out of range [1e-05, 0.1] (s)");
   EXPECT_THROW(runExperiment(options), InputError);
   options.time_step = 1e-3;
+  options.duration = -1.0;
+  EXPECT_THROW(runExperiment(options), InputError);
+  options.duration = 0.0;
   options.push_height = 0.1;
   EXPECT_THROW(runExperiment(options), InputError);
   options.push_height = 0.01;

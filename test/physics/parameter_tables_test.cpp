@@ -106,6 +106,74 @@ TEST(ParameterTables, TheCfgFollowsTheWorldTable)
   EXPECT_GE(entries, 8);
 }
 
+// The names of a choice's entries, "a, b, c", as a set.
+std::set<std::string> choiceSet(const std::string& names)
+{
+  std::set<std::string> set;
+  std::stringstream in(names);
+  for (std::string name; std::getline(in, name, ',');)
+  {
+    set.insert(name.substr(name.find_first_not_of(' ')));
+  }
+  return set;
+}
+
+TEST(ParameterTables, TheCfgEnumsAreTheChoicesOfTheirRows)
+{
+  // gen.add("name", str_t, 0, ..., edit_method=VAR) and VAR = gen.enum([gen.const("a", ...), ...], ...):
+  // a contact model (or walk) added to its list and not to the cfg fails here.
+  const std::string cfg = readSource("cfg/GodFinger.cfg");
+  // Each gen.add( call runs to the next one (or the end).
+  const std::regex add("gen\\.add\\(\"(\\w+)\"((?:(?!gen\\.add)[\\s\\S])*)");
+  const std::regex edit("edit_method=(\\w+)\\)");
+  int enums = 0;
+  for (std::sregex_iterator it(cfg.begin(), cfg.end(), add), end; it != end; ++it)
+  {
+    const std::string call = (*it)[2];
+    std::smatch method;
+    if (!std::regex_search(call, method, edit))
+    {
+      continue;
+    }
+    ++enums;
+    const std::string name = (*it)[1];
+    const std::string variable = method[1];
+    const ParameterRow<WorldParams>* row = nullptr;
+    for (const auto& candidate : worldParameterTable())
+    {
+      row = name == candidate.name ? &candidate : row;
+    }
+    ASSERT_NE(row, nullptr) << "cfg entry '" << name << "' is no row of worldParameterTable()";
+    ASSERT_EQ(row->kind, ParameterRow<WorldParams>::Kind::kChoice) << name;
+    const std::size_t start = cfg.find(variable + " = gen.enum([");
+    ASSERT_NE(start, std::string::npos) << name << ": no enum " << variable;
+    const std::string list = cfg.substr(start, cfg.find("],", start) - start);
+    std::set<std::string> constants;
+    const std::regex constant("gen\\.const\\(\"(\\w+)\", str_t, \"(\\w+)\"");
+    for (std::sregex_iterator c(list.begin(), list.end(), constant), none; c != none; ++c)
+    {
+      EXPECT_EQ((*c)[1].str(), (*c)[2].str()) << name << ": an entry's name is its value";
+      constants.insert((*c)[2]);
+    }
+    EXPECT_EQ(constants, choiceSet(row->choices))
+        << name << ": the cfg's enum " << variable << " must list the row's choices, " << row->choices;
+  }
+  EXPECT_GE(enums, 2);  // model and walk
+}
+
+TEST(ParameterTables, AChoiceThatIsNoneOfItsRowsChoicesIsRefusedByName)
+{
+  ContactParams contact;
+  contact.walk = static_cast<WalkVariant>(7);
+  EXPECT_EQ(validate(contact), "parameter 'walk' = 'unknown' is not one of project, unfold");
+  WorldParams world;
+  world.model = static_cast<ContactModel>(9);
+  EXPECT_EQ(validate(world), "parameter 'model' = 'unknown' is not one of " + contactModelNames());
+  world = WorldParams();
+  world.contact.walk = static_cast<WalkVariant>(-1);
+  EXPECT_EQ(validate(world), "parameter 'walk' = 'unknown' is not one of project, unfold");
+}
+
 TEST(ParameterTables, DefaultsAreValidAndEveryBoundIsEnforcedWithTheParameterNamed)
 {
   EXPECT_EQ(validate(ContactParams{}), "");

@@ -11,6 +11,7 @@ import rospy
 import rostest
 from geometry_msgs.msg import WrenchStamped
 from god_finger.msg import ContactAreaArray, DeviceState
+from ros_test_support import drag_marker
 from visualization_msgs.msg import InteractiveMarkerFeedback
 
 
@@ -48,22 +49,7 @@ class Interactive(unittest.TestCase):
 
     def drag_to(self, x, y, z, seconds):
         """Drags in 20 mouse events over `seconds`, from where the handle is."""
-        start = self.state
-        for k in range(1, 21):
-            feedback = InteractiveMarkerFeedback()
-            feedback.header.frame_id = "finger_device"
-            feedback.client_id = "/rviz/InteractiveMarkers"
-            feedback.marker_name = "hand"
-            feedback.event_type = InteractiveMarkerFeedback.POSE_UPDATE
-            s = k / 20.0
-            feedback.pose.position.x = start.x + s * (x - start.x)
-            feedback.pose.position.y = start.y + s * (y - start.y)
-            feedback.pose.position.z = start.z + s * (z - start.z)
-            feedback.pose.orientation.w = 1.0
-            self.drag.publish(feedback)
-            # Paces the drag (mouse events spread over `seconds`, as a hand drags), not a
-            # synchronisation: the tests below wait on what the drag does.
-            time.sleep(seconds / 20.0)
+        drag_marker(self.drag, self.state, x, y, z, seconds)
 
     def test_marker_moves_the_finger_onto_the_ball(self):
         self.wait_for(lambda: self.state is not None, 30.0, "a device state")

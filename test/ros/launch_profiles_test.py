@@ -7,6 +7,7 @@ the haptic node, the physics node and the servo node all read it from
 (ros/interface_parameters.h), and no node may carry a private coupling or force limit of its
 own that would override it."""
 import os
+import re
 import subprocess
 import sys
 import unittest
@@ -19,7 +20,21 @@ from roslib.packages import find_node
 
 PACKAGE = rospkg.RosPack().get_path("god_finger")
 PROFILE_KEYS = ("coupling_stiffness", "coupling_damping", "max_force")
-SIMULATED = {"fake": "fake", "interactive": "fake", "replay": "fake", "falcon": "falcon", "omni": "omni"}
+
+
+def backend_profiles():
+    """Every device backend and its profile, from the one table: deviceBackends() in
+    src/devices/registry/device_registry.cpp, rows {"name", "profile", simulated, hand_target,
+    factory}. interface.launch must load that profile for each backend."""
+    with open(os.path.join(PACKAGE, "src", "devices", "registry", "device_registry.cpp")) as f:
+        source = f.read()
+    rows = re.findall(r'\{"(\w+)", "(\w+)", (?:true|false), (?:true|false), make\w+\}', source)
+    if len(rows) < 2:
+        raise AssertionError("no backend rows found in device_registry.cpp: has the table's shape changed?")
+    return dict(rows)
+
+
+PROFILES = backend_profiles()
 
 
 def scenarios():
@@ -40,7 +55,7 @@ def launches():
     cases = []
     scenario_names = scenarios()
     for topology in ("servo", "nodelets", "processes"):
-        for device in SIMULATED:
+        for device in PROFILES:
             cases.append(("demo.launch", ["device:=" + device, "topology:=" + topology, "bag:=/tmp/none.bag"]))
             cases.append(("demo.launch", ["scene:=table_clutter", "device:=" + device, "topology:=" + topology,
                                           "bag:=/tmp/none.bag"]))
@@ -69,7 +84,7 @@ class LaunchProfiles(unittest.TestCase):
             self.assertTrue(interfaces, "%s %s: no interface" % (launch, args))
             for interface in interfaces:
                 backend = params[interface + "/backend"]
-                expected = profile(SIMULATED[backend])
+                expected = profile(PROFILES[backend])
                 for key in PROFILE_KEYS:
                     self.assertEqual(params.get(interface + "/" + key), expected[key],
                                      "%s %s: %s/%s" % (launch, args, interface, key))

@@ -1,7 +1,30 @@
 """What the Python rostests share: waiting on a condition with a deadline (never sleeping to
-synchronise), and running a command as a user types it. A mixin for unittest.TestCase."""
+synchronise), running a command as a user types it, and dragging the interactive device's rviz
+marker as a user does. A mixin for unittest.TestCase."""
 import subprocess
 import time
+
+from visualization_msgs.msg import InteractiveMarkerFeedback
+
+
+def drag_marker(publisher, start, x, y, z, seconds):
+    """Drags the interactive device's marker (device frame, m) from `start` (a point) to (x, y,
+    z) in 20 mouse events over `seconds`, as rviz sends them on NAME/device_marker/feedback."""
+    for k in range(1, 21):
+        feedback = InteractiveMarkerFeedback()
+        feedback.header.frame_id = "finger_device"
+        feedback.client_id = "/rviz/InteractiveMarkers"
+        feedback.marker_name = "hand"
+        feedback.event_type = InteractiveMarkerFeedback.POSE_UPDATE
+        s = k / 20.0
+        feedback.pose.position.x = start.x + s * (x - start.x)
+        feedback.pose.position.y = start.y + s * (y - start.y)
+        feedback.pose.position.z = start.z + s * (z - start.z)
+        feedback.pose.orientation.w = 1.0
+        publisher.publish(feedback)
+        # Paces the drag (mouse events spread over `seconds`, as a hand drags), not a
+        # synchronisation: the tests wait on what the drag does.
+        time.sleep(seconds / 20.0)
 
 
 class RosTestSupport:

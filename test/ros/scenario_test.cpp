@@ -10,7 +10,7 @@
 //                     never turned more than 0.02 rad)
 // ~interface names one interface: its device/state is subscribed so that the servo, which
 // waits for a subscriber there (wait_for_subscribers), starts once the test listens.
-#include "god_finger/ros/servo_setup.h"
+#include "servo_setup.h"
 
 #include <god_finger/DeviceState.h>
 #include <gtest/gtest.h>

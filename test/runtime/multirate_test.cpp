@@ -39,7 +39,6 @@ DeviceProfile falcon()
   profile.coupling.stiffness = kStiffness;
   profile.coupling.damping = kDamping;
   profile.coupling.max_force = kMaxForce;
-  profile.guard.max_force = kMaxForce;
   // The presses below begin at t = 0, inside the guard's soft start (0.5 s): its ramp-in, a
   // time-varying gain, would give the hand energy in every run, on time or not. These cases
   // measure the multi-rate scheme, so the ramp-in is off here (force_guard_test and

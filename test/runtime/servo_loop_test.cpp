@@ -153,7 +153,7 @@ TEST(ServoLoop, TheHandFeelsTheReactionOfTheForceThatPullsTheProxy)
   // Falcon's 5 cm: the case is about the coupling, so the Falcon's wall stays out of it.
   falcon.workspace_radius = test::shippedDeviceProfile("fake").workspace_radius;
   const double k = falcon.coupling.stiffness;
-  const double max_force = falcon.guard.max_force;
+  const double max_force = falcon.coupling.max_force;
   ASSERT_NE(k, WorldParams().coupling.stiffness) << "the case would not show which coupling the loop uses";
   auto loop = makeLoop(pressingHand(), falcon);
   EXPECT_EQ(loop->world().coupling(0).stiffness, k);
@@ -506,7 +506,7 @@ TEST(ServoLoop, AReadingOutsideTheWorkspaceIsClampedAndPushedBack)
   }
   EXPECT_TRUE(last.interface_position.isApprox(Eigen::Vector3d(0, 0, 0.1)));
   // The wall: k_c (0.2 - 0.1) = 40 N down, saturated to max_force; the proxy exerts nothing.
-  const double max_force = profile.guard.max_force;
+  const double max_force = profile.coupling.max_force;
   EXPECT_NEAR(last.commanded_force.z(), -max_force, 1e-9);
   EXPECT_NEAR(last.commanded_force.head<2>().norm(), 0.0, 1e-9);
   EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);  // applied, the soft start over
@@ -522,7 +522,7 @@ TEST(ServoLoop, StopForceZeroesAndResumeRampsIn)
   device->position = [](double) { return Eigen::Vector3d(0, 0, 0.2); };  // the wall: a constant force
   ScriptedDevice* hand = device.get();
   auto loop = makeLoop(std::move(device), profile);
-  const double max_force = profile.guard.max_force;
+  const double max_force = profile.coupling.max_force;
   runTicks(*loop, 700);
   EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);
   ServoCommand stop;
@@ -560,7 +560,7 @@ TEST(ServoLoop, ButtonTwoStopsAndResumesTheForce)
   device->buttons = [](double t) { return (t >= 0.7 && t < 0.72) || (t >= 0.9 && t < 0.92) ? 4u : 0u; };
   ScriptedDevice* hand = device.get();
   auto loop = makeLoop(std::move(device), profile);
-  const double max_force = profile.guard.max_force;
+  const double max_force = profile.coupling.max_force;
   runTicks(*loop, 700);
   drain(*loop);
   EXPECT_NEAR(hand->last_force.z(), -max_force, 1e-9);

@@ -65,11 +65,13 @@ TEST(ExperimentTool, BadOptionsGiveOneLineAndExitCode2)
       {"--scenario slide", "missing option '--model'"},
       {"--scenario roll --model god_finger", "option '--scenario' = 'roll' is not one of"},
       {"--scenario slide --model point", "option '--model' = 'point' is not one of"},
-      {"--scenario slide --model god_finger --dt 0", "option '--dt' = '0' is out of range"},
-      {"--scenario slide --model god_finger --dt abc", "option '--dt' = 'abc' is not a number"},
-      {"--scenario slide --model god_finger --duration -1", "option '--duration' = '-1' is out of range"},
+      {"--scenario slide --model god_finger --dt 0", "parameter '--dt' = 0 is out of range [1e-05, 0.1] (s)"},
+      {"--scenario slide --model god_finger --dt abc", "parameter '--dt' must be a number (s)"},
+      {"--scenario slide --model god_finger --duration -1",
+       "parameter '--duration' = -1 is out of range [0, 3600] (s)"},
       {"--scenario slide --model god_finger --seed -3", "option '--seed' = '-3' is not a non-negative integer"},
-      {"--scenario slide --model god_finger --push-height 1", "option '--push-height' = '1' is out of range"},
+      {"--scenario slide --model god_finger --push-height 1",
+       "parameter '--push-height' = 1 is out of range [0, 0.04] (m)"},
       {"--scenario slide --model god_finger --frobnicate 1", "unknown option '--frobnicate'"},
       {"--scenario slide --model god_finger --seed", "option '--seed' needs a value"},
       {"--scenario slide --model god_finger --scenes /nonexistent", "URDF '/nonexistent/table_sphere.urdf'"},
@@ -145,6 +147,15 @@ TEST(ContactModels, TheCfgAndTheToolsListTheOneListInItsOrder)
     usage_list += (usage_list.empty() ? "" : "|") + std::string(contactModelName(model));
   }
   EXPECT_NE(runTool("--help").out.find("--model " + usage_list), std::string::npos);
+  // Scripts (scripts/demo, scripts/plot_experiment) read the models from the tool.
+  std::string lines;
+  for (ContactModel model : contactModels())
+  {
+    lines += std::string(contactModelName(model)) + "\n";
+  }
+  const test::ToolRun run = runTool("--list-models");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(run.out, lines);
 }
 }  // namespace
 }  // namespace god_finger

@@ -11,6 +11,9 @@ namespace god_finger
 {
 namespace
 {
+// The device limit of the tests that do not test saturation (N).
+constexpr double kMaxForce = 8.0;
+
 // The rules that are not under test off: no soft start, a rate limit that never binds.
 ForceGuardParams immediate()
 {
@@ -22,9 +25,7 @@ ForceGuardParams immediate()
 
 TEST(ForceGuard, SaturatesKeepingTheDirection)
 {
-  ForceGuardParams params = immediate();
-  params.max_force = 3.3;
-  ForceGuard guard(params);
+  ForceGuard guard(3.3, immediate());
   guard.output(0.0);
   EXPECT_TRUE(guard.command(0.0, Eigen::Vector3d(3.0, 4.0, 0.0)));
   EXPECT_NEAR(guard.commanded().norm(), 3.3, 1e-12);
@@ -38,7 +39,7 @@ TEST(ForceGuard, SaturatesKeepingTheDirection)
 
 TEST(ForceGuard, RejectsNonFiniteCommandsAndKeepsTheLastGoodOne)
 {
-  ForceGuard guard(immediate());
+  ForceGuard guard(kMaxForce, immediate());
   guard.output(0.0);
   guard.command(0.0, Eigen::Vector3d(1, 2, 3));
   EXPECT_FALSE(guard.command(0.001, Eigen::Vector3d(NAN, 0, 0)));
@@ -50,14 +51,14 @@ TEST(ForceGuard, RejectsNonFiniteCommandsAndKeepsTheLastGoodOne)
 
 TEST(ForceGuard, NothingBeforeTheFirstCommand)
 {
-  ForceGuard guard(ForceGuardParams{});
+  ForceGuard guard(kMaxForce, ForceGuardParams{});
   EXPECT_EQ(guard.output(5.0), Eigen::Vector3d::Zero());
 }
 
 TEST(ForceGuard, WatchdogRampsToZeroWithinRampTimeAfterTheTimeout)
 {
   ForceGuardParams params = immediate();  // 20 ms timeout, 10 ms ramp
-  ForceGuard guard(params);
+  ForceGuard guard(kMaxForce, params);
   guard.output(0.999);
   guard.command(1.0, Eigen::Vector3d(0, 0, 4.0));
   EXPECT_EQ(guard.output(1.0 + 0.0199), Eigen::Vector3d(0, 0, 4.0));  // up to the timeout: full
@@ -79,10 +80,17 @@ TEST(ForceGuard, WatchdogRampsToZeroWithinRampTimeAfterTheTimeout)
 TEST(ForceGuard, BadParametersAreNamed)
 {
   ForceGuardParams params;
-  params.max_force = -1.0;
-  EXPECT_EQ(validate(params), "parameter 'max_force' = -1 is out of range (0, 10000] (N)");
-  EXPECT_THROW(ForceGuard{params}, InputError);
-  params = ForceGuardParams();
+  try
+  {
+    ForceGuard guard(-1.0, params);
+    ADD_FAILURE() << "a negative max_force was taken";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(), "parameter 'max_force' = -1 is out of range (0, 10000] (N)");
+  }
+  params.command_timeout = 0.0;
+  EXPECT_THROW(ForceGuard(kMaxForce, params), InputError);
   params.command_timeout = 0.0;
   EXPECT_EQ(validate(params), "parameter 'command_timeout' = 0 is out of range (0, 10] (s)");
   params = ForceGuardParams();
@@ -101,7 +109,7 @@ constexpr double kPeriod = 1e-3;
 TEST(ForceGuard, SoftStartRampsInFromZero)
 {
   ForceGuardParams params;  // soft_start 0.5 s, 1e4 N/s
-  ForceGuard guard(params);
+  ForceGuard guard(kMaxForce, params);
   const Eigen::Vector3d command(0, 0, 5.0);
   double previous = 0.0;
   for (int k = 0; k <= 600; ++k)
@@ -132,9 +140,8 @@ TEST(ForceGuard, RateLimitBoundsEveryStep)
 {
   ForceGuardParams params;
   params.soft_start = 0.0;
-  params.max_force = 8.0;
   params.max_force_rate = 1000.0;  // 1 N per ms
-  ForceGuard guard(params);
+  ForceGuard guard(kMaxForce, params);
   Eigen::Vector3d last = guard.output(0.0);
   double largest = 0.0;
   bool reached = false;
@@ -157,7 +164,7 @@ TEST(ForceGuard, RateLimitBoundsEveryStep)
 TEST(ForceGuard, StopZeroesAtOnceAndResumeRampsIn)
 {
   ForceGuardParams params;  // soft_start 0.5 s
-  ForceGuard guard(params);
+  ForceGuard guard(kMaxForce, params);
   const Eigen::Vector3d command(2, 0, 0);
   double t = 0.0;
   for (; t < 1.0; t += kPeriod)
@@ -189,7 +196,7 @@ TEST(ForceGuard, StopZeroesAtOnceAndResumeRampsIn)
 TEST(ForceGuard, ResumesWithTheSoftStartAfterTheWatchdog)
 {
   ForceGuardParams params;
-  ForceGuard guard(params);
+  ForceGuard guard(kMaxForce, params);
   for (double t = 0.0; t < 1.0; t += kPeriod)
   {
     guard.command(t, Eigen::Vector3d(0, 1, 0));
@@ -202,11 +209,11 @@ TEST(ForceGuard, ResumesWithTheSoftStartAfterTheWatchdog)
 }
 
 // The Omni: 3.3 N peak, 0.88 N continuous, tau 10 s.
+constexpr double kOmniMaxForce = 3.3;
 ForceGuardParams omni()
 {
   ForceGuardParams params;
   params.soft_start = 0.0;
-  params.max_force = 3.3;
   params.max_force_rate = 1000.0;
   params.continuous_force = 0.88;
   params.thermal_time_constant = 10.0;
@@ -215,7 +222,7 @@ ForceGuardParams omni()
 
 TEST(ForceGuard, HeldPeakFallsToTheContinuousLimit)
 {
-  ForceGuard guard(omni());
+  ForceGuard guard(kOmniMaxForce, omni());
   guard.output(0.0);
   // From cold, a held F may stay over Fc for tau ln(F^2 / (F^2 - Fc^2)): 0.90 s for 3 N.
   const double budget = 10.0 * std::log(9.0 / (9.0 - 0.88 * 0.88));
@@ -241,7 +248,7 @@ TEST(ForceGuard, HeldPeakFallsToTheContinuousLimit)
 
 TEST(ForceGuard, ShortPeakPassesTheContinuousLimit)
 {
-  ForceGuard guard(omni());
+  ForceGuard guard(kOmniMaxForce, omni());
   guard.output(0.0);
   for (int k = 1; k <= 200; ++k)  // 0.2 s of 3 N
   {

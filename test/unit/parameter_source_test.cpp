@@ -66,7 +66,6 @@ TEST(ParameterSource, LayeredSourcePrefersTheFirstAndNamesWhereItFoundTheValue)
   const DeviceProfile profile = readDeviceProfile(interface);
   EXPECT_EQ(profile.coupling.stiffness, 800.0);
   EXPECT_EQ(profile.coupling.max_force, 8.9);
-  EXPECT_EQ(profile.guard.max_force, 8.9);  // one limit for the coupling and the guard
 }
 }  // namespace
 }  // namespace god_finger

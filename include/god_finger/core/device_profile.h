@@ -13,7 +13,7 @@ namespace god_finger
 {
 struct DeviceProfile
 {
-  // coupling.max_force is the device's force limit too (guard.max_force is set equal to it).
+  // coupling.max_force is the device's one force limit: the guard saturates there too.
   CouplingProfile coupling;
   ForceGuardParams guard;
   // m, device frame, from the workspace centre (the device origin): readings beyond it are

@@ -38,7 +38,6 @@ namespace god_finger
 {
 struct ForceGuardParams
 {
-  double max_force = 8.0;               // N: set to the device profile's limit (coupling max_force)
   double command_timeout = 0.02;        // s: watchdog
   double ramp_time = 0.01;              // s: from the last force to zero
   double soft_start = 0.5;              // s: from zero to the command at start and resume; 0: none
@@ -47,7 +46,8 @@ struct ForceGuardParams
   double thermal_time_constant = 10.0;  // s: the budget's averaging time constant
 };
 // command_timeout, ramp_time, soft_start, max_force_rate, continuous_force,
-// thermal_time_constant (the limit is the coupling's max_force row).
+// thermal_time_constant. The limit, max_force, is not here: it is the device's one limit, the
+// coupling's max_force row (CouplingProfile, DeviceProfile::coupling), given to the guard.
 const ParameterTable<ForceGuardParams>& forceGuardParameterTable();
 // Empty on success, else "parameter 'NAME' = VALUE is out of range [..] (unit)".
 std::string validate(const ForceGuardParams& params);
@@ -55,8 +55,9 @@ std::string validate(const ForceGuardParams& params);
 class ForceGuard
 {
  public:
-  // Throws InputError on bad parameters.
-  explicit ForceGuard(const ForceGuardParams& params);
+  // max_force (N): the device's limit (its profile's coupling.max_force). Throws InputError on
+  // bad parameters (max_force checked by the coupling's max_force row).
+  ForceGuard(double max_force, const ForceGuardParams& params);
   // A new command at `time`. Returns false (and counts it) if it is not finite.
   bool command(double time, const Eigen::Vector3d& force);
   // The force to apply at `time` (non-decreasing; see above). Advances the soft start, the
@@ -102,8 +103,13 @@ class ForceGuard
   {
     return params_;
   }
+  double maxForce() const
+  {
+    return max_force_;
+  }
 
  private:
+  double max_force_;  // N
   ForceGuardParams params_;
   Eigen::Vector3d last_force_ = Eigen::Vector3d::Zero();  // saturated
   double last_command_time_ = 0.0;

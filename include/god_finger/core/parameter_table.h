@@ -239,14 +239,24 @@ std::string ParameterRow<Params>::valueText(const Params& params) const
   return formatNumber(number(params));
 }
 
-// "" when every row's value is in its range (NaN never is); else outOfRange's line for the
-// first that is not.
+// "" when every row's value is in its range (NaN never is) and every choice row's value is one
+// of its choices (its name reads back); else one line for the first that is not.
 template <typename Params>
 std::string validateRows(const ParameterTable<Params>& table, const Params& params)
 {
   for (const ParameterRow<Params>& row : table)
   {
-    if (row.kind != ParameterRow<Params>::Kind::kChoice && !row.range.contains(row.number(params)))
+    if (row.kind == ParameterRow<Params>::Kind::kChoice)
+    {
+      Params chosen = params;
+      const std::string name = row.choice_name(params);
+      if (!row.choose(&chosen, name))
+      {
+        return "parameter '" + std::string(row.name) + "' = '" + name + "' is not one of " + row.choices;
+      }
+      continue;
+    }
+    if (!row.range.contains(row.number(params)))
     {
       return "parameter '" + std::string(row.name) + "' = " + formatNumber(row.number(params)) + " is out of range " +
              row.range.text() + " (" + row.unit + ")";

@@ -21,9 +21,10 @@ namespace god_finger
 {
 struct DeviceContext
 {
-  explicit DeviceContext(const ParameterSource& source) : params(source) {}
+  // device_max_force (N): the device profile's one limit, coupling.max_force (core/device_profile.h).
+  DeviceContext(const ParameterSource& source, double device_max_force) : params(source), max_force(device_max_force) {}
   const ParameterSource& params;  // the device's own parameters (the driver's private namespace)
-  double max_force = 8.0;         // N: the device profile's limit (hardware clamps to it as well)
+  double max_force;               // N: the device profile's limit (hardware clamps to it as well)
   // When the script's time 0 is played, on update()'s clock (s); NaN: at the first update.
   double script_start = NAN;
   // Replay: reads the recorded device positions of `topic` in the file `bag`; empty where no
@@ -35,7 +36,8 @@ struct DeviceContext
 struct DeviceBackend
 {
   const char* name;
-  const char* profile;  // config/devices/PROFILE.yaml: force limit, coupling, workspace
+  const char* profile;  // config/devices/PROFILE.yaml: force limit, coupling, workspace (launch/interface.launch
+                        // loads it; test/ros/launch_profiles_test.py checks that it does)
   bool simulated;       // needs no hardware (can run on simulated time, in lockstep)
   bool hand_target;     // moved by a hand the user drags (setHandTarget): the nodes add an rviz marker
   std::unique_ptr<HapticDevice> (*make)(const DeviceContext& context);

@@ -73,9 +73,9 @@ struct ExperimentOptions
 {
   Scenario scenario = Scenario::kSlide;
   ContactModel model = ContactModel::kGodFinger;
-  double duration = 0.0;  // s; <= 0: the scenario's own length
-  double time_step = 1e-3;
-  bool fast = false;  // lift scenarios: lift ten times faster
+  double duration = 0.0;                       // s, [0, 3600]; 0: the scenario's own length
+  double time_step = WorldParams().time_step;  // s, timeStepRange(): the world's fixed step (the tool's --dt)
+  bool fast = false;                           // lift scenarios: lift ten times faster
   // slide: height of the hand above the ball's centre (m), range [0, 0.04]. The default
   // touches the ball 17 degrees above its equator.
   double push_height = 0.0125;
@@ -89,6 +89,10 @@ struct ExperimentOptions
   // into ExperimentResult::trajectory, for comparing runs of different settings.
   double sample_period = 0.0;
 };
+// dt (time_step), duration and push_height: names, units, ranges and meanings, the one
+// definition the tool's flags (--dt, --duration, --push-height) and the check of
+// runExperiment / measureScenario come from.
+const ParameterTable<ExperimentOptions>& experimentOptionTable();
 
 struct PoseSample
 {

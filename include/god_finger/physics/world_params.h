@@ -82,7 +82,9 @@ struct SleepParams
 
 struct WorldParams
 {
-  double time_step = 1e-3;  // s, range [1e-5, 0.1]: the servo loop's period (its `rate`)
+  // s, timeStepRange(): the one definition of the period and its default. The servo loop's
+  // `rate` (Hz) defaults to its inverse, the experiment's dt to it.
+  double time_step = 1e-3;
   // Sequential-impulse iterations per step. A pinched object slowly creeps about the contact
   // normal when they are too few (README, "Solver iterations"): 30 gives 0.086 rad in the 21.5 s
   // after the pinch_cylinder lift, 50 gives 0.010 rad, 60 gives 0.0035 rad.
@@ -117,6 +119,9 @@ struct WorldParams
 // README's table is generated from it). Not in it: time_step comes from the loop's rate, gravity
 // from the scene, and the coupling profile per interface from its device (deviceProfileTable()).
 const ParameterTable<WorldParams>& worldParameterTable();
+// The range of any fixed step of the world, time_step (s): [1e-5, 0.1]. validate() checks
+// time_step by it, the experiment's dt row is it.
+ParameterRange timeStepRange();
 
 std::string validate(const WorldParams& params);
 // Empty when `profile` pulling a proxy of `proxy_mass` (kg) is stable at `time_step` (s): the

@@ -53,8 +53,9 @@
 //    while the hand presses.
 //
 // Threads and clocks:
-//  - Real time (CLOCK_MONOTONIC, absolute deadlines, so the rate does not drift; a late period
-//    is an overrun, counted; far behind, the schedule restarts from now): the haptic thread
+//  - Real time (CLOCK_MONOTONIC, the deadlines of runtime/fixed_rate_schedule.h, so the rate
+//    does not drift; a late period is an overrun, counted; far behind, the schedule restarts
+//    from now): the haptic thread
 //    (SCHED_FIFO `realtime_priority`) does the device I/O and never waits for the physics; the
 //    physics thread (SCHED_FIFO realtime_priority - 1, normal scheduling when that is 0) steps
 //    when new targets are posted (a POSIX semaphore, whose post is lock-free). Mailboxes:
@@ -109,13 +110,13 @@ struct ServoInterface
 
 struct ServoLoopParams
 {
-  double rate = 1000.0;           // Hz: the device rate; the world's step is 1 / rate
-  int realtime_priority = 80;     // SCHED_FIFO priority of the loop thread, 0 for none
-  bool lock_memory = true;        // mlockall when permitted
-  bool simulated_time = false;    // see above
-  double real_time_factor = 1.0;  // simulated time only; 0: as fast as it goes
-  int snapshot_every = 16;        // ticks between world snapshots (16: ~60 Hz)
-  int queue_ticks = 2000;         // samples the publishers may lag behind, in ticks
+  double rate = 1.0 / WorldParams().time_step;  // Hz: the device rate; the world's step is 1 / rate
+  int realtime_priority = 80;                   // SCHED_FIFO priority of the loop thread, 0 for none
+  bool lock_memory = true;                      // mlockall when permitted
+  bool simulated_time = false;                  // see above
+  double real_time_factor = 1.0;                // simulated time only; 0: as fast as it goes
+  int snapshot_every = 16;                      // ticks between world snapshots (16: ~60 Hz)
+  int queue_ticks = 2000;                       // samples the publishers may lag behind, in ticks
   // Periods over which the haptic side's anchor may cross the coupling's whole range
   // (max_force / stiffness) when the physics catches up after being late (>= 1; see above).
   int recovery_periods = 8;

@@ -1,0 +1,61 @@
+// The world's services, one implementation for the physics node and the servo node (private to
+// the ROS library): reset_scene (std_srvs/Trigger), set_contact_model (god_finger/SetContactModel)
+// and dynamic_reconfigure of the method's parameters and the model (ros/reconfigure.h), all in
+// the node's namespace. Each node only says how a world command reaches its world (Post): the
+// physics node applies it under its world's lock, the servo node posts it to its loop, which
+// applies it between two steps.
+//
+// reset_scene means the same in every topology: the scene back to its initial state and time
+// 0, each proxy restarting at its interface's current target (GodFingerWorld::
+// resetAtInterfaces), so that a hand holding a device feels no jump.
+//
+// Not real-time: called from ROS callbacks.
+#pragma once
+
+#include "god_finger/SetContactModel.h"
+#include "god_finger/physics/world_params.h"
+#include "god_finger/ros/reconfigure.h"
+#include "god_finger/runtime/servo_loop.h"
+
+#include <ros/node_handle.h>
+#include <ros/service_server.h>
+#include <std_srvs/Trigger.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace god_finger
+{
+class WorldServices
+{
+ public:
+  // Applies a world command (kReset, kSetContactModel or kSetContactParams); false, with
+  // `error` set, refuses it.
+  using Post = std::function<bool(const ServoCommand& command, std::string* error)>;
+
+  // `initial`: what the world was built with. `node`: the name in log lines. Advertises the
+  // services on `nh` and the reconfiguration server on `pnh`.
+  WorldServices(ros::NodeHandle nh, const ros::NodeHandle& pnh, const WorldParams& initial, Post post,
+                const std::string& node);
+  WorldServices(const WorldServices&) = delete;
+  WorldServices& operator=(const WorldServices&) = delete;
+
+  // The model in force changed by other means (a device button): the server shows it.
+  void showModel(ContactModel model);
+
+ private:
+  bool onReset(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
+  bool onSetModel(god_finger::SetContactModel::Request& request, god_finger::SetContactModel::Response& response);
+  bool applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error);
+
+  Post post_;
+  std::string node_;
+  // The base of a reconfiguration: the initial parameters with the contact parameters in
+  // force. Reconfiguration callbacks only (LiveReconfigure serialises them).
+  WorldParams params_;
+  std::unique_ptr<LiveReconfigure> reconfigure_;
+  ros::ServiceServer reset_service_;
+  ros::ServiceServer model_service_;
+};
+}  // namespace god_finger
