@@ -38,16 +38,24 @@ PROFILES = backend_profiles()
 
 
 def scenarios():
-    """Every scenario, from the one list (experiment.h) through god_finger_experiment; each has
-    its launch, launch/SCENARIO.launch."""
+    """Every scenario, from the one list (experiment.h) through god_finger_experiment, that the
+    fake devices can run (`--hand fake`); each has its launch, launch/SCENARIO.launch. A scenario
+    the fake hand cannot run (roll_finger: the fake device has no orientation) has none, and the
+    tool must say so."""
     tools = find_node("god_finger", "god_finger_experiment")
     if not tools:
         raise AssertionError("god_finger_experiment not built")
     names = subprocess.run([tools[0], "--list-scenarios"], check=True, capture_output=True, text=True).stdout.split()
+    launched = []
     for name in names:
-        if not os.path.exists(os.path.join(PACKAGE, "launch", name + ".launch")):
-            raise AssertionError("scenario %s has no launch/%s.launch" % (name, name))
-    return names
+        if os.path.exists(os.path.join(PACKAGE, "launch", name + ".launch")):
+            launched.append(name)
+            continue
+        fake = subprocess.run([tools[0], "--scenario", name, "--hand", "fake", "--duration", "0.001"],
+                              capture_output=True, text=True)
+        if fake.returncode == 0:
+            raise AssertionError("scenario %s runs with the fake hand but has no launch/%s.launch" % (name, name))
+    return launched
 
 
 def launches():
