@@ -295,8 +295,8 @@ TEST(RollFinger, TheAreaCentreTravelsTheRolledArcAndTheForceStaysSmooth)
     // 20 um, is what the area's centre may move besides the pulp's roll: the box, pressed with
     // 4 N off its centre, settles a few micrometres on the table, and the proxy creeps as much
     // on it. A wrong model misses by much more: the chord R_f sin(theta) is 0.44 mm short, an
-    // offset from the device's orientation instead of the proxy's lags by 0.1 mm mid-roll, a
-    // sign error is 11 mm off.
+    // arc scaled by the area's shrinking radius 0.75 mm, a tilt measured from the wrong axis
+    // (no travel) all of it.
     EXPECT_NEAR(result.metrics.at("area_centre_travel_m"), finger.fingertip_radius * kRoll, 2e-5);
     // The finger holds still and presses 4 N throughout: the roll changes the force on the hand
     // by 1.7e-5 N a step at most (measured); 1e-3 N is 0.025 % of the press, far under what a
