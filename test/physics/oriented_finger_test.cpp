@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace god_finger
 {
@@ -201,6 +202,40 @@ TEST(OrientedFinger, RollingMovesTheAreaAcrossTheSurfaceByTheFingertipRadiusTime
   // The area shrinks with the tilt: cos(pi/2 * 40 / 120) = cos(30 degrees).
   EXPECT_NEAR(state.contacts[0].radius, full_radius * std::cos(kPi / 6.0), 1e-6);
   EXPECT_LT(state.proxy_orientation.angularDistance(pulpDown(kRoll)), 1e-4);
+}
+
+TEST(OrientedFinger, AResetRunRepeatsTheFirstBitForBit)
+{
+  const WorldParams params;
+  GodFingerWorld world(planeScene(), params);
+  const Eigen::Vector3d target = pressTarget(params);
+  const int finger = world.addInterface(Eigen::Vector3d(0, 0, 0.01));
+  const auto roll = [&]
+  {
+    std::vector<double> trace;
+    for (int i = 0; i < 600; ++i)
+    {
+      world.setInterfaceTarget(finger, target, pulpDown(i < 300 ? 0.0 : kRoll * (i - 300) / 300.0));
+      world.step();
+      const InterfaceState& state = world.interfaceState(finger);
+      trace.insert(trace.end(), state.user_force.data(), state.user_force.data() + 3);
+      trace.insert(trace.end(), state.user_torque.data(), state.user_torque.data() + 3);
+      trace.insert(trace.end(), state.proxy_orientation.coeffs().data(), state.proxy_orientation.coeffs().data() + 4);
+      if (state.contact_count > 0)
+      {
+        trace.insert(trace.end(), state.contacts[0].point.data(), state.contacts[0].point.data() + 3);
+        trace.push_back(state.contacts[0].radius);
+      }
+    }
+    return trace;
+  };
+  const std::vector<double> first = roll();
+  world.reset();
+  EXPECT_TRUE(world.interfaceState(finger).oriented);
+  const std::vector<double> second = roll();
+  ASSERT_EQ(first.size(), second.size());
+  EXPECT_GT(first.size(), 600u * 10u);  // the finger touched the plane
+  EXPECT_TRUE(first == second);
 }
 
 TEST(OrientedFinger, ATurnOfTheDeviceIsFeltAsTheSpringsTorqueAgainstIt)
