@@ -1,5 +1,6 @@
 #include "god_finger/physics/experiment.h"
 #include "god_finger/physics/scenario_metrics.h"
+#include "roll_metrics.h"
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/parameter_json.h"
@@ -27,6 +28,7 @@ struct Script
   std::string scene_file;
   std::string object;
   std::vector<WaypointPath> fingers;
+  std::vector<OrientationPath> orientations;               // per finger; empty: 3-DOF fingers
   double duration = 0.0;                                   // s, default length
   double lift_start = 0.0;                                 // s
   double lift_end = 0.0;                                   // s
@@ -222,6 +224,30 @@ Script handGraspScript(std::uint64_t seed)
   return script;
 }
 
+// table_box.urdf: the 6 cm cube (100 g) stands on the table, its top at z = 0.06. The finger,
+// along +x with its pulp down, comes down from 7.5 cm to 5.3 cm in 0.5 s (the proxy stops on the
+// top at 6.3 cm: 1 cm of coupling stretch, 4 N), waits 0.3 s, rolls 40 degrees about its own x
+// in 1 s and holds until 2.5 s. Asymmetry: the finger is 2 mm (+ jitter) off the top's centre
+// along x.
+Script rollFingerScript(std::uint64_t seed)
+{
+  const double x = 0.002 + seededJitter(seed);
+  const double roll = 40.0 * M_PI / 180.0;
+  Script script;
+  script.scene_file = "table_box.urdf";
+  script.object = "cube";
+  script.lift_start = 0.8;
+  script.lift_end = 1.8;
+  script.duration = 2.5;
+  script.fingers.emplace_back(
+      std::vector<Waypoint>{{0.0, xyz(x, 0, 0.075)}, {0.5, xyz(x, 0, 0.053)}, {script.duration, xyz(x, 0, 0.053)}});
+  const Eigen::Quaterniond pulp_down(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()));
+  const Eigen::Quaterniond rolled = pulp_down * Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX());
+  script.orientations.emplace_back(std::vector<OrientationWaypoint>{
+      {0.0, pulp_down}, {script.lift_start, pulp_down}, {script.lift_end, rolled}, {script.duration, rolled}});
+  return script;
+}
+
 Script scriptFor(const ExperimentOptions& options)
 {
   switch (options.scenario)
@@ -238,6 +264,8 @@ Script scriptFor(const ExperimentOptions& options)
       return clutterScript(options.seed);
     case Scenario::kHandGrasp:
       return handGraspScript(options.seed);
+    case Scenario::kRollFinger:
+      return rollFingerScript(options.seed);
   }
   return slideScript(options.push_height, options.seed);
 }
@@ -352,6 +380,8 @@ const char* scenarioName(Scenario scenario)
       return "clutter";
     case Scenario::kHandGrasp:
       return "hand_grasp";
+    case Scenario::kRollFinger:
+      return "roll_finger";
   }
   return "?";
 }
@@ -400,6 +430,7 @@ ScenarioSetup loadScenario(const ExperimentOptions& options)
     throw InputError("scene '" + script.scene_file + "' has no link '" + script.object + "'");
   }
   setup.fingers = script.fingers;
+  setup.orientations = script.orientations;
   setup.duration = script.duration;
   setup.times = timesOf(script);
   return setup;
@@ -459,6 +490,12 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
       }
     }
   }
+  // roll_finger: the rolling finger (interface 0) on the box.
+  std::unique_ptr<RollMetrics> roll;
+  if (options.scenario == Scenario::kRollFinger)
+  {
+    roll = std::make_unique<RollMetrics>(object, script.lift_start);
+  }
   CsvWriter csv(options.csv, world.interfaceCount());
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));
@@ -479,6 +516,10 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
       continue;
     }
     metrics.add(world.time(), options.time_step, state);
+    if (roll)
+    {
+      roll->add(world.time(), world.interfaceState(0));
+    }
     csv.add(world.time(), state, world);
     if (sample_every > 0 && (i + 1) % sample_every == 0)
     {
@@ -506,6 +547,10 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
     result.step_us_total += us;
   }
   result.metrics = metrics.metrics();
+  if (roll)
+  {
+    roll->addTo(&result.metrics);
+  }
   return result;
 }
 
@@ -514,9 +559,13 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
   checkOptions(options);
   const ScenarioSetup setup = loadScenario(options);
   GodFingerWorld world(setup.scene, scenarioParams(options));
-  for (const WaypointPath& finger : setup.fingers)
+  for (std::size_t f = 0; f < setup.fingers.size(); ++f)
   {
-    world.addInterface(finger.at(0.0));
+    world.addInterface(setup.fingers[f].at(0.0));
+    if (f < setup.orientations.size())
+    {
+      world.setInterfaceTarget(static_cast<int>(f), setup.fingers[f].at(0.0), setup.orientations[f].at(0.0));
+    }
   }
   // The ideal hand: each interface is exactly where the script puts it at the step's end.
   return measureScenario(options, world,
@@ -525,7 +574,15 @@ ExperimentResult runExperiment(const ExperimentOptions& options)
                            const double next_time = (i + 1) * options.time_step;
                            for (int f = 0; f < world.interfaceCount(); ++f)
                            {
-                             world.setInterfaceTarget(f, setup.fingers[f].at(next_time));
+                             if (static_cast<std::size_t>(f) < setup.orientations.size())
+                             {
+                               world.setInterfaceTarget(f, setup.fingers[f].at(next_time),
+                                                        setup.orientations[f].at(next_time));
+                             }
+                             else
+                             {
+                               world.setInterfaceTarget(f, setup.fingers[f].at(next_time));
+                             }
                            }
                            world.step();
                          });

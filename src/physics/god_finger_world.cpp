@@ -430,8 +430,7 @@ struct GodFingerWorld::Impl
     const Body& body = bodies[body_index];
     // Bullet's normal points from B to A: out of the object when the object is B.
     const Eigen::Vector3d normal_world = (proxy_is_a ? 1.0 : -1.0) * toEigen(contact.m_normalWorldOnB);
-    const Eigen::Vector3d point_world =
-        toEigen(proxy_is_a ? contact.getPositionWorldOnB() : contact.getPositionWorldOnA());
+    Eigen::Vector3d point_world = toEigen(proxy_is_a ? contact.getPositionWorldOnB() : contact.getPositionWorldOnA());
     const Eigen::Isometry3d to_world = geometryToWorld(body);
     const Eigen::Isometry3d to_local = to_world.inverse();
     ContactQuery query;
@@ -447,13 +446,35 @@ struct GodFingerWorld::Impl
     query.depth = -contact.getDistance();
     query.coupling = to_local.linear() * (proxy.target - toEigen(proxy.rigid->getWorldTransform().getOrigin()));
     query.reference_tangent = proxy.reference_tangents[body_index];
+    // An oriented finger: the pad on its pulp (oriented_finger.h) scales r_max (so Eq. 1's r)
+    // and moves the area's centre, and the solver's true contact with it, along the surface.
+    const ContactParams* contact_params = &params.contact;
+    ContactParams pulp_params;
+    if (proxy.orientation.oriented)
+    {
+      const PulpContact pulp = pulpContact(proxy.orientation.proxy, normal_world, params.finger);
+      pulp_params = params.contact;
+      pulp_params.max_radius *= pulp.radius_scale;
+      contact_params = &pulp_params;
+      point_world += pulp.offset;
+      contact.m_positionWorldOnA += toBullet(pulp.offset);
+      contact.m_positionWorldOnB += toBullet(pulp.offset);
+      if (body.primitive)
+      {
+        query.location.point = to_local * point_world;
+      }
+      else
+      {
+        query.location = body.locator->closest(to_local * point_world);
+      }
+    }
     if (body.primitive)
     {
-      computeContactArea(*body.primitive, query, params.contact, &scratch);
+      computeContactArea(*body.primitive, query, *contact_params, &scratch);
     }
     else
     {
-      computeContactArea(*body.walk, query, params.contact, &scratch);
+      computeContactArea(*body.walk, query, *contact_params, &scratch);
     }
     if (!scratch.valid)
     {
@@ -511,6 +532,12 @@ struct GodFingerWorld::Impl
       proxy.state.user_force = -force;
       proxy.state.interface_position = proxy.target;
       proxy.previous_target = proxy.target;
+      if (proxy.orientation.oriented)
+      {
+        proxy.state.interface_orientation = proxy.orientation.target;
+        proxy.state.user_torque = -stepFingerOrientation(params.finger, dt, &proxy.orientation);
+        proxy.state.proxy_orientation = proxy.orientation.proxy;
+      }
     }
     wakeNearAwake();
     for (const int index : awake)
@@ -652,6 +679,30 @@ void GodFingerWorld::setInterfaceTarget(int interface, const Eigen::Vector3d& po
   proxy.previous_target = position - velocity * impl_->params.time_step;
 }
 
+void GodFingerWorld::setInterfaceTarget(int interface, const Eigen::Vector3d& position,
+                                        const Eigen::Quaterniond& orientation)
+{
+  const double norm = orientation.norm();
+  if (!position.allFinite() || !orientation.coeffs().allFinite() || !(norm >= 0.5 && norm <= 2.0))
+  {
+    ++impl_->rejected_targets;
+    return;
+  }
+  Proxy& proxy = impl_->proxies.at(interface);
+  proxy.target = position;
+  FingerOrientation& finger = proxy.orientation;
+  finger.target = orientation.normalized();
+  if (!finger.oriented)
+  {
+    finger.oriented = true;
+    finger.initial = finger.target;
+    finger.restart();
+    proxy.state.oriented = true;
+    proxy.state.interface_orientation = finger.target;
+    proxy.state.proxy_orientation = finger.proxy;
+  }
+}
+
 void GodFingerWorld::step()
 {
   impl_->step();
@@ -673,6 +724,7 @@ void GodFingerWorld::resetAtInterfaces()
   for (Proxy& proxy : impl_->proxies)
   {
     proxy.initial = proxy.target;
+    proxy.orientation.initial = proxy.orientation.target;
   }
   reset();
 }

@@ -32,6 +32,10 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->state = InterfaceState();
   proxy->state.interface_position = proxy->initial;
   proxy->state.proxy_position = proxy->initial;
+  proxy->orientation.restart();
+  proxy->state.oriented = proxy->orientation.oriented;
+  proxy->state.interface_orientation = proxy->orientation.target;
+  proxy->state.proxy_orientation = proxy->orientation.proxy;
   proxy->reference_tangents.assign(body_count, Eigen::Vector3d::Zero());
   proxy->warm_starts.assign(body_count, {});
   proxy->pads.assign(body_count, PadState());

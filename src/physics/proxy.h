@@ -9,6 +9,7 @@
 #include "god_finger/core/contact_params.h"
 #include "god_finger/core/virtual_coupling.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/physics/oriented_finger.h"
 #include "pad_state.h"
 #include "warm_start.h"
 
@@ -29,6 +30,8 @@ struct Proxy
   CouplingProfile coupling;
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
   Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();
+  // The device's and the proxy's orientation: an oriented (6-DOF) finger once given one.
+  FingerOrientation orientation;
   InterfaceState state;
   // Per touched body: the last first radial vector (a continuous basis in time).
   std::vector<Eigen::Vector3d> reference_tangents;

@@ -105,6 +105,8 @@ void ScenarioMetrics::add(double time, double dt, const BodyState& state)
       }
       break;
     }
+    case Scenario::kRollFinger:  // the finger's own metrics (roll_metrics.h)
+      break;
   }
   last_ = state;
 }
@@ -170,6 +172,8 @@ std::map<std::string, double> ScenarioMetrics::metrics() const
       }
       break;
     }
+    case Scenario::kRollFinger:  // the finger's own metrics (roll_metrics.h)
+      break;
     case Scenario::kHandGrasp:
       result["held_s"] = held_;
       result["lift_height_m"] = carry_height_;

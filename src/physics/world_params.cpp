@@ -71,9 +71,10 @@ const ParameterTable<WorldParams>& worldParameterTable()
                    [](P& p) -> double& { return p.coupling.proxy_radius; }),
         realRow<P>("spinning_friction", "m", closed(0.0, 1.0), "soft_finger: Bullet's torsional friction at the point",
                    [](P& p) -> double& { return p.soft_finger.spinning_friction; }),
-        realRow<P>("rolling_friction", "m", openClosed(0.0, 1.0),
-                   "soft_finger: the pad's tilt lever, torque about a tangent up to this times N (> 0 for spinning to act)",
-                   [](P& p) -> double& { return p.soft_finger.rolling_friction; }),
+        realRow<P>(
+            "rolling_friction", "m", openClosed(0.0, 1.0),
+            "soft_finger: the pad's tilt lever, torque about a tangent up to this times N (> 0 for spinning to act)",
+            [](P& p) -> double& { return p.soft_finger.rolling_friction; }),
         realRow<P>("pad_stiffness", "N/m", openClosed(0.0, 1e7), "the pad's stiffness at each contact point",
                    [](P& p) -> double& { return p.pad.stiffness; }),
         realRow<P>("pad_damping", "N s/m", closed(0.0, 1e5), "the pad's damping at each contact point",
@@ -85,6 +86,21 @@ const ParameterTable<WorldParams>& worldParameterTable()
                    [](P& p) -> double& { return p.sleep.speed; }),
         realRow<P>("sleep_angular_speed", "rad/s", closed(0.0, 10.0), "angular speed below which a body may sleep",
                    [](P& p) -> double& { return p.sleep.angular_speed; }),
+        realRow<P>("fingertip_radius", "m", openClosed(0.0, 0.05),
+                   "oriented finger: the fingertip's radius R_f; rolling by theta moves the contact area by R_f theta",
+                   [](P& p) -> double& { return p.finger.fingertip_radius; }),
+        realRow<P>("nail_angle", "rad", openClosed(0.0, 3.14159),
+                   "oriented finger: tilt of the pulp from the surface at which the area shrinks to a point (the nail)",
+                   [](P& p) -> double& { return p.finger.nail_angle; }),
+        realRow<P>("orientation_stiffness", "N m/rad", closed(0.0, 100.0),
+                   "oriented finger: the rotational spring between the device's orientation and the proxy's",
+                   [](P& p) -> double& { return p.finger.orientation_stiffness; }),
+        realRow<P>("orientation_damping", "N m s/rad", closed(0.0, 10.0),
+                   "oriented finger: the rotational damper between the device's orientation and the proxy's",
+                   [](P& p) -> double& { return p.finger.orientation_damping; }),
+        realRow<P>("proxy_inertia", "kg m^2", openClosed(0.0, 1.0),
+                   "oriented finger: the proxy's rotational inertia under the rotational coupling",
+                   [](P& p) -> double& { return p.finger.proxy_inertia; }),
         realRow<P>("walk_edge_per_max_radius", "dimensionless", openClosed(0.0, 10.0),
                    "largest edge of a sphere's or cylinder's walk surface, as a fraction of r_max",
                    [](P& p) -> double& { return p.walk_edge_per_max_radius; }),
@@ -135,7 +151,12 @@ std::string validate(const WorldParams& params)
   {
     return coupling_error;
   }
-  return couplingStabilityError(c, c.proxy_mass, params.time_step);
+  const std::string stability_error = couplingStabilityError(c, c.proxy_mass, params.time_step);
+  if (!stability_error.empty())
+  {
+    return stability_error;
+  }
+  return orientationStabilityError(params.finger, params.time_step);
 }
 
 void validateOrThrow(const WorldParams& params)

@@ -10,6 +10,11 @@ namespace god_finger
 ExperimentResult runServoExperiment(const ExperimentOptions& options, const FakeDeviceParams& handle)
 {
   const ScenarioSetup setup = loadScenario(options);
+  if (!setup.orientations.empty())
+  {
+    throw InputError(std::string("scenario '") + scenarioName(options.scenario) +
+                     "' orients its fingers, and the fake device has no orientation yet: run it with --hand ideal");
+  }
   const WorldParams params = scenarioParams(options);
   std::vector<ServoInterface> interfaces;
   for (std::size_t f = 0; f < setup.fingers.size(); ++f)

@@ -110,6 +110,20 @@ TEST(ExperimentTool, FakeHandRunsTheScenarioThroughTheServoLoop)
   EXPECT_NE(bad.err.find("option '--hand' = 'mouse' is not one of ideal, fake"), std::string::npos) << bad.err;
 }
 
+TEST(ExperimentTool, RollFingerReportsItsMetricsAndTheFakeHandRefusesIt)
+{
+  const test::ToolRun run = runTool("--scenario roll_finger --model soft_finger");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // R_f 8 mm times 40 degrees (oriented_finger_test checks the physics).
+  EXPECT_NEAR(test::jsonValue(run.out, "area_centre_travel_m"), 0.008 * 40.0 * M_PI / 180.0, 2e-5);
+  EXPECT_GT(test::jsonValue(run.out, "max_force_step_N"), 0.0);
+  const test::ToolRun fake = runTool("--scenario roll_finger --model god_finger --hand fake");
+  EXPECT_EQ(fake.exit_code, 2);
+  EXPECT_NE(fake.err.find("scenario 'roll_finger' orients its fingers, and the fake device has no orientation yet"),
+            std::string::npos)
+      << fake.err;
+}
+
 // Scripts (scripts/demo, scripts/plot_experiment, the launch test) read the scenarios from the
 // tool; the tool's usage and its error name them all.
 TEST(ExperimentTool, ListsEveryScenarioFromTheOneList)

@@ -31,6 +31,15 @@
 //    until the fingers open), lift_height_m (when they open), max_tilt_rad (of the mug's axis,
 //    from the lift to the opening), turn_rad (its largest rotation over the same span) and
 //    fell_after_release (1 when, let go, it falls below half the lift height: no glue).
+//  - kRollFinger (urdf/scenes/table_box.urdf): an oriented (6-DOF) finger, pulp down and along
+//    x, presses the top of a 6 cm box on the table with 4 N, rolls 40 degrees about its own
+//    axis (x) in 1 s and holds; 2.5 s in all (ScenarioTimes: lift_start and lift_end are the
+//    roll's start and end). Metrics (roll_metrics.h): area_centre_travel_m (how far the contact
+//    area's centre moved across the box from the roll's start to the end: about
+//    fingertip_radius x 40 degrees), max_force_step_N (the largest change of the force on the
+//    hand from one step to the next, from the roll's start on), rolled_rad (the proxy's roll over
+//    the same span) and contact_lost_steps (steps from the roll's start without a contact area
+//    on the box). --hand fake refuses it: the fake device has no orientation yet.
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
@@ -40,6 +49,7 @@
 
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/physics/orientation_path.h"
 #include "god_finger/physics/scene_description.h"
 #include "god_finger/physics/world_params.h"
 
@@ -60,10 +70,12 @@ enum class Scenario
   kPinchCylinder,
   kClutter,
   kHandGrasp,
+  kRollFinger,
 };
 // Every scenario, in the order tools and scripts list them: the one list (scenarioNames()).
 constexpr Scenario kAllScenarios[] = {Scenario::kSlide,         Scenario::kLiftOne, Scenario::kLiftTwo,
-                                      Scenario::kPinchCylinder, Scenario::kClutter, Scenario::kHandGrasp};
+                                      Scenario::kPinchCylinder, Scenario::kClutter, Scenario::kHandGrasp,
+                                      Scenario::kRollFinger};
 const char* scenarioName(Scenario scenario);
 // The names of kAllScenarios joined by `separator` ("slide, lift_one, ...").
 std::string scenarioNames(const std::string& separator = ", ");
@@ -144,6 +156,8 @@ struct ScenarioSetup
   SceneDescription scene;
   int object = -1;
   std::vector<WaypointPath> fingers;
+  // Per finger, its orientation (oriented_finger.h) against time; empty: 3-DOF fingers.
+  std::vector<OrientationPath> orientations;
   double duration = 0.0;
   ScenarioTimes times;
 };

@@ -17,7 +17,12 @@
 // Sleeping (WorldParams::sleep): a dynamic body at rest, out of every proxy's reach, falls asleep
 // with its island and costs almost nothing until a proxy or a woken body comes near it.
 //
-// Invariants: proxies never rotate and ignore gravity; every scene body has a walk surface
+// Oriented fingers (setInterfaceTarget with an orientation, oriented_finger.h): the proxy keeps an
+// orientation pulled by a rotational spring-damper; the contact area's radius and centre follow
+// how the pulp meets the surface. A finger never given an orientation runs the 3-DOF code bit for
+// bit.
+//
+// Invariants: proxies' Bullet bodies never rotate and ignore gravity; every scene body has a walk surface
 // (its mesh, or a tessellation of its primitive fine enough for r_max); the walk runs on the
 // original triangle mesh even where collision uses a convex decomposition.
 #pragma once
@@ -52,8 +57,16 @@ struct InterfaceState
   Eigen::Vector3d proxy_velocity = Eigen::Vector3d::Zero();      // m/s
   Eigen::Vector3d user_force = Eigen::Vector3d::Zero();          // N on the hand (world)
   bool saturated = false;                                        // coupling force hit max_force
-  int contact_count = 0;                                         // entries used in contacts
-  static constexpr int kMaxContacts = 4;                         // bodies touched at once
+  // An oriented (6-DOF) finger (oriented_finger.h: the finger frame has z out of the pulp, x
+  // towards the tip): false until the interface is given an orientation, and then the three
+  // below are the device's and the proxy's orientation and the rotational coupling's torque on
+  // the hand (N m, world). A 3-DOF finger keeps identities and zero.
+  bool oriented = false;
+  Eigen::Quaterniond interface_orientation = Eigen::Quaterniond::Identity();
+  Eigen::Quaterniond proxy_orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();
+  int contact_count = 0;                  // entries used in contacts
+  static constexpr int kMaxContacts = 4;  // bodies touched at once
   std::array<WorldContactArea, kMaxContacts> contacts;
 };
 
@@ -112,6 +125,12 @@ class GodFingerWorld
   // (the servo loop's physics when it runs late), whose difference would put several periods'
   // motion into one step. Non-finite position or velocity: ignored and counted.
   void setInterfaceTarget(int interface, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
+  // As the first, with the device's orientation (the finger frame in the world,
+  // oriented_finger.h): the interface becomes an oriented (6-DOF) finger. The first orientation
+  // given places the proxy's orientation there at rest (a reset restarts it there). A
+  // non-finite position or a quaternion that is non-finite or of a norm outside [0.5, 2]: the
+  // whole target is ignored and counted; others are normalised. Real-time safe.
+  void setInterfaceTarget(int interface, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation);
   // An external force (N, world, at the centre of mass) and torque (N m, world) on a dynamic
   // body during the next step only (a disturbance, a test's load). Ignored for static bodies;
   // InputError for a bad index or non-finite values.

@@ -6,6 +6,7 @@
 #include "god_finger/core/contact_params.h"
 #include "god_finger/core/virtual_coupling.h"
 #include "god_finger/physics/contact_model.h"
+#include "god_finger/physics/oriented_finger.h"
 
 #include <Eigen/Core>
 #include <string>
@@ -105,6 +106,8 @@ struct WorldParams
   SoftFingerParams soft_finger;
   FingerPadParams pad;
   SleepParams sleep;
+  // An oriented (6-DOF) finger: its pulp and its rotational coupling (oriented_finger.h).
+  OrientedFingerParams finger;
   // Largest edge of the walk surface of a sphere or cylinder, as a fraction of r_max: the
   // tessellation is refined until its edges are no longer (capped at 81920 triangles).
   double walk_edge_per_max_radius = 0.5;

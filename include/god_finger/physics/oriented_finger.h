@@ -1,0 +1,79 @@
+// An oriented finger (6-DOF): a finger whose source reports an orientation (an Omni/Touch
+// gimbal, an interactive marker's rotation, a fake script with orientation, a pose from TF).
+//
+// The finger frame: z points out of the pulp (the pad's outward normal, the side that
+// presses), x runs along the finger towards its tip, y = z x x. An orientation is the finger
+// frame in the world.
+//
+// Two things follow from it (GodFingerWorld::setInterfaceTarget with an orientation):
+//  1. The proxy keeps its own orientation, pulled towards the device's by a rotational
+//     spring-damper (the 6-DOF god-object, Ortega et al. 2007), integrated as the linear
+//     coupling is (the torque from the state at the start of the step, then symplectic Euler):
+//       tau = k_r rotvec(q_I q_GO^-1) + b_r (w_I - w_GO)  (N m, world, on the proxy),
+//       the hand feels -tau. Stable in free space iff (k_r dt + 2 b_r) dt / I < 4.
+//     The proxy's orientation is not yet limited by its contacts: nothing a flat pad touches
+//     resists the finger's roll, so the torque is the spring's lag only. The torque is
+//     InterfaceState::user_torque; no device renders it yet (the Omni/Touch and the Falcon render
+//     force only, so their profiles would name no torque axes; the profile's axes and the servo
+//     loop sending the torque on them are the next step).
+//  2. The pad sits on the pulp: with phi the angle between the pulp normal (finger z) and the
+//     inward surface normal (-c_n), the contact radius is the Eq. 1 radius times
+//     cos(pi/2 phi / nail_angle) (1 when the pulp faces the surface, smaller on the side, 0 from
+//     the nail angle on: the nail gives a point, the god-object), and the area's centre moves
+//     along the surface by the arc R_f phi towards the side the pulp turned to (a fingertip of
+//     radius R_f rolling on the surface): rolling by theta moves the area by R_f theta. From the
+//     nail angle on the point is the true contact (no offset).
+// A finger never given an orientation is a 3-DOF finger and none of this runs.
+//
+// Units SI, angles in radians, vectors in the world frame. Every function here is real-time
+// safe (no allocation, no lock, no throw).
+#pragma once
+
+#include <Eigen/Geometry>
+#include <string>
+
+namespace god_finger
+{
+// The oriented finger's parameters (rows in worldParameterTable(), world_params.cpp).
+struct OrientedFingerParams
+{
+  double fingertip_radius = 0.008;         // m, R_f: a fingertip's radius across the finger
+  double nail_angle = 2.0943951023931957;  // rad (120 deg): from this tilt of the pulp on, a point
+  double orientation_stiffness = 0.05;     // N m/rad, k_r
+  double orientation_damping = 2e-4;       // N m s/rad, b_r (damping ratio 0.45 with the inertia)
+  double proxy_inertia = 1e-6;             // kg m^2, I: the proxy's rotational inertia
+};
+
+// An interface's orientation state: the device's (target) and the proxy's.
+struct FingerOrientation
+{
+  bool oriented = false;  // given an orientation once: a 6-DOF finger from then on
+  Eigen::Quaterniond initial = Eigen::Quaterniond::Identity();  // where a reset restarts it
+  Eigen::Quaterniond target = Eigen::Quaterniond::Identity();   // q_I, the device's, unit
+  Eigen::Quaterniond previous_target = Eigen::Quaterniond::Identity();
+  Eigen::Quaterniond proxy = Eigen::Quaterniond::Identity();   // q_GO, unit
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // w_GO (rad/s, world)
+  // Back to `initial`, at rest (a reset).
+  void restart();
+};
+
+// One step of the rotational coupling (dt s): returns tau on the proxy (N m, world) and
+// advances the proxy's orientation and angular velocity; the previous target becomes the
+// current one.
+Eigen::Vector3d stepFingerOrientation(const OrientedFingerParams& params, double dt, FingerOrientation* state);
+
+// How the finger meets a surface (item 2 above).
+struct PulpContact
+{
+  double tilt = 0.0;                                 // phi (rad), in [0, pi]
+  double radius_scale = 1.0;                         // in [0, 1], times the Eq. 1 radius
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();  // m, world, tangent to the surface
+};
+// `finger`: the proxy's orientation; `surface_normal`: c_n, unit, out of the object.
+PulpContact pulpContact(const Eigen::Quaterniond& finger, const Eigen::Vector3d& surface_normal,
+                        const OrientedFingerParams& params);
+
+// Empty when the rotational coupling is stable at `time_step` (s); else one line naming the
+// parameters.
+std::string orientationStabilityError(const OrientedFingerParams& params, double time_step);
+}  // namespace god_finger

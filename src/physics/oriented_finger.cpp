@@ -1,0 +1,93 @@
+#include "god_finger/physics/oriented_finger.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace god_finger
+{
+namespace
+{
+// The rotation vector (axis times angle, angle in [0, pi]) of a unit quaternion.
+Eigen::Vector3d rotationVector(const Eigen::Quaterniond& q)
+{
+  const Eigen::Quaterniond shortest = q.w() < 0.0 ? Eigen::Quaterniond(-q.w(), -q.x(), -q.y(), -q.z()) : q;
+  const double sine = shortest.vec().norm();
+  if (sine < 1e-12)
+  {
+    return 2.0 * shortest.vec();  // first order: exact as the angle goes to 0
+  }
+  return (2.0 * std::atan2(sine, shortest.w()) / sine) * shortest.vec();
+}
+
+Eigen::Quaterniond fromRotationVector(const Eigen::Vector3d& v)
+{
+  const double angle = v.norm();
+  if (angle < 1e-12)
+  {
+    return Eigen::Quaterniond(1.0, 0.5 * v.x(), 0.5 * v.y(), 0.5 * v.z()).normalized();
+  }
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angle, v / angle));
+}
+}  // namespace
+
+void FingerOrientation::restart()
+{
+  target = initial;
+  previous_target = initial;
+  proxy = initial;
+  angular_velocity.setZero();
+}
+
+Eigen::Vector3d stepFingerOrientation(const OrientedFingerParams& params, double dt, FingerOrientation* state)
+{
+  const Eigen::Vector3d target_velocity = rotationVector(state->target * state->previous_target.conjugate()) / dt;
+  const Eigen::Vector3d torque =
+      params.orientation_stiffness * rotationVector(state->target * state->proxy.conjugate()) +
+      params.orientation_damping * (target_velocity - state->angular_velocity);
+  state->angular_velocity += torque * (dt / params.proxy_inertia);
+  state->proxy = (fromRotationVector(state->angular_velocity * dt) * state->proxy).normalized();
+  state->previous_target = state->target;
+  return torque;
+}
+
+PulpContact pulpContact(const Eigen::Quaterniond& finger, const Eigen::Vector3d& surface_normal,
+                        const OrientedFingerParams& params)
+{
+  PulpContact contact;
+  const Eigen::Vector3d pulp = finger * Eigen::Vector3d::UnitZ();
+  const Eigen::Vector3d inward = -surface_normal;
+  contact.tilt = std::atan2(pulp.cross(inward).norm(), pulp.dot(inward));
+  if (!(contact.tilt < params.nail_angle))
+  {
+    contact.radius_scale = 0.0;
+    return contact;
+  }
+  contact.radius_scale = std::cos(0.5 * M_PI * contact.tilt / params.nail_angle);
+  const Eigen::Vector3d tangent = pulp - pulp.dot(surface_normal) * surface_normal;
+  const double length = tangent.norm();
+  if (length > 1e-12)
+  {
+    contact.offset = (params.fingertip_radius * contact.tilt / length) * tangent;
+  }
+  return contact;
+}
+
+std::string orientationStabilityError(const OrientedFingerParams& params, double time_step)
+{
+  const double stability =
+      (params.orientation_stiffness * time_step + 2.0 * params.orientation_damping) * time_step / params.proxy_inertia;
+  if (stability < 4.0)
+  {
+    return "";
+  }
+  std::ostringstream message;
+  message << "orientation coupling unstable at this time step: (orientation_stiffness * dt + 2 orientation_damping) * "
+             "dt / proxy_inertia = "
+          << stability << " must be < 4 (orientation_stiffness " << params.orientation_stiffness
+          << " N m/rad, orientation_damping " << params.orientation_damping << " N m s/rad, proxy_inertia "
+          << params.proxy_inertia << " kg m^2, dt " << time_step
+          << " s): lower the stiffness, damping or time step, or raise proxy_inertia";
+  return message.str();
+}
+}  // namespace god_finger
