@@ -119,6 +119,7 @@ TEST(OverlapPush, WithoutOverlapOrStiffnessThereIsNoPush)
               0.01, 1e-4);
 }
 
+// The other models' contacts are points: their areas' radii are only reported.
 TEST(OverlapPush, OtherModelsHaveNoAreasToOverlap)
 {
   WorldParams params;
@@ -129,6 +130,11 @@ TEST(OverlapPush, OtherModelsHaveNoAreasToOverlap)
     fingers.world.step();
     EXPECT_EQ(fingers.world.interfaceState(0).overlap_area, 0.0);
   }
+  // Both touch, with areas of a radius that would overlap had they been god-fingers'.
+  const InterfaceState& a = fingers.world.interfaceState(0);
+  ASSERT_EQ(a.contact_count, 1);
+  ASSERT_EQ(fingers.world.interfaceState(1).contact_count, 1);
+  EXPECT_GT(a.contacts[0].radius, 0.005);
 }
 
 TEST(OverlapPush, BadParametersAreRefusedByName)
