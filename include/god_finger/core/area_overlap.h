@@ -2,14 +2,15 @@
 // independently may overlap; pushing both devices apart reduces the overlap).
 //
 // Each area is a disk: its centre c (m, world), its unit normal n (world, out of the object), its
-// radius r (m), and the finger's reach (m, >= 0): how far past c, against n, the finger's hand
-// has sunk (the virtual finger the pad stands for). Two areas overlap when
+// radius r (m), and its pad's reach (m, >= 0): how deep past c, against n, the finger's pad is
+// pressed (physics/overlap_push.cpp: the depth of a fingertip sphere of radius r_max whose section
+// is the disk). Two areas overlap when
 //  - they lie on the same side of the body (normals within kOverlapAngle), or face each other
 //    across a thin wall (normals opposite within kOverlapAngle): pads that would press into each
 //    other around the thin object;
 //  - their fingers reach a common layer: the centres are closer along the common plane's normal
 //    than the sum of the two reaches plus kOverlapMargin (two fingers on one flat face: 0 apart;
-//    across a 2 mm plate: 2 mm apart, less than two fingers pressed 1 mm or more past it);
+//    across a 2 mm plate: 2 mm apart, less than two pads pressed 1 mm or more deep);
 //  - and their disks, projected on the common plane (the mid-plane of the two: normal along
 //    n_a + n_b, or n_a - n_b when they face each other, through the mid-point of the centres),
 //    intersect. The overlap area is the lens area of the projected disks.
@@ -30,7 +31,7 @@ struct AreaDisk
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();   // m, world
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, world, out of the object
   double radius = 0.0;                                // m, >= 0
-  double reach = 0.0;                                 // m, >= 0: the finger's sinking past c
+  double reach = 0.0;                                 // m, >= 0: the pad's depth past c
 };
 
 enum class OverlapKind
