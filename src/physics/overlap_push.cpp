@@ -31,12 +31,6 @@ void OverlapPush::resize(int interfaces)
   pushes_.assign(interfaces, Eigen::Vector3d::Zero());
 }
 
-void OverlapPush::clear()
-{
-  std::fill(targets_.begin(), targets_.end(), Eigen::Vector3d::Zero());
-  std::fill(pushes_.begin(), pushes_.end(), Eigen::Vector3d::Zero());
-}
-
 void OverlapPush::update(const WorldParams& params, std::vector<Proxy>* proxies)
 {
   const int count = static_cast<int>(proxies->size());

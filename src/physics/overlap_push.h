@@ -13,7 +13,9 @@
 // models' contacts are points, with no area); stiffness 0 pushes nothing.
 // Invariant: no overlap now and no push before: every push stays exactly zero.
 //
-// Units: SI, world frame. resize() allocates; clear(), update() and push() are real-time safe.
+// When the overlap ends, the push fades at the same rate (3 N in 30 ms at the default rate).
+//
+// Units: SI, world frame. resize() allocates; update() and push() are real-time safe.
 #pragma once
 
 #include "god_finger/physics/world_params.h"
@@ -27,10 +29,8 @@ namespace god_finger
 class OverlapPush
 {
  public:
-  // One push per interface, all zero.
+  // One push per interface, all zero (a new interface, a reset).
   void resize(int interfaces);
-  // Every push back to zero (a reset).
-  void clear();
   // From the proxies' contact areas of the step that just ended (their targets are the hands).
   void update(const WorldParams& params, std::vector<Proxy>* proxies);
   // The force (N, world) on interface `interface`'s proxy in the next step.
