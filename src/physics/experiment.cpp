@@ -1,4 +1,5 @@
 #include "god_finger/physics/experiment.h"
+#include "god_finger/physics/overlap_metrics.h"
 #include "god_finger/physics/scenario_metrics.h"
 #include "roll_metrics.h"
 
@@ -248,6 +249,36 @@ Script rollFingerScript(std::uint64_t seed)
   return script;
 }
 
+// holder_plate.urdf: a 2 mm plate clamped upright, its faces at x = -+0.001, 10 cm wide along y.
+// Two fingers, 3.5 cm up, come from x = -+0.02 to x = 0 in 0.5 s (their proxies stop on the faces
+// at x = -+0.004: 4 mm of coupling stretch, 1.6 N each, pads of r = 9.8 mm), 1.5 cm to either side
+// of the middle along y (3 cm apart: the areas do not overlap yet). They wait 0.2 s, then drift
+// towards each other along y for 2 s until facing each other across the plate (their areas would
+// cover each other), and hold until 3.5 s. Asymmetry: the right finger ends 1 mm (+ jitter) past
+// the left one along y, and 0.5 mm higher.
+Script pinchThinScript(std::uint64_t seed)
+{
+  const double jitter = seededJitter(seed);
+  const double z = 0.035;
+  Script script;
+  script.scene_file = "holder_plate.urdf";
+  script.object = "plate";
+  script.lift_start = script.lift_end = 0.7;
+  script.duration = 3.5;
+  for (int side : {-1, 1})
+  {
+    const double y0 = 0.015 * side;
+    const double y1 = side > 0 ? 0.001 + jitter : 0.0;
+    const double zs = z + (side > 0 ? 0.0005 : 0.0);
+    script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(0.02 * side, y0, zs)},
+                                                      {0.5, xyz(0.0, y0, zs)},
+                                                      {0.7, xyz(0.0, y0, zs)},
+                                                      {2.7, xyz(0.0, y1, zs)},
+                                                      {script.duration, xyz(0.0, y1, zs)}});
+  }
+  return script;
+}
+
 Script scriptFor(const ExperimentOptions& options)
 {
   switch (options.scenario)
@@ -266,6 +297,8 @@ Script scriptFor(const ExperimentOptions& options)
       return handGraspScript(options.seed);
     case Scenario::kRollFinger:
       return rollFingerScript(options.seed);
+    case Scenario::kPinchThin:
+      return pinchThinScript(options.seed);
   }
   return slideScript(options.push_height, options.seed);
 }
@@ -382,6 +415,8 @@ const char* scenarioName(Scenario scenario)
       return "hand_grasp";
     case Scenario::kRollFinger:
       return "roll_finger";
+    case Scenario::kPinchThin:
+      return "pinch_thin";
   }
   return "?";
 }
@@ -416,6 +451,7 @@ WorldParams scenarioParams(const ExperimentOptions& options)
   params.solver_iterations = options.solver_iterations;
   params.pad_solver = options.pad_solver;
   params.model = options.model;
+  params.overlap.stiffness = options.overlap_stiffness;
   return params;
 }
 
@@ -497,6 +533,9 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
     roll = std::make_unique<RollMetrics>(object, script.lift_start);
   }
   CsvWriter csv(options.csv, world.interfaceCount());
+  // pinch_thin's hand metrics (the other scenarios' results stay as they were).
+  const bool overlap_metrics_wanted = options.scenario == Scenario::kPinchThin;
+  OverlapMetrics overlap_metrics(world);
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));
   ExperimentResult result;
@@ -520,6 +559,7 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
     {
       roll->add(world.time(), world.interfaceState(0));
     }
+    overlap_metrics.add(world);
     csv.add(world.time(), state, world);
     if (sample_every > 0 && (i + 1) % sample_every == 0)
     {
@@ -550,6 +590,13 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   if (roll)
   {
     roll->addTo(&result.metrics);
+  }
+  if (overlap_metrics_wanted)
+  {
+    for (const auto& entry : overlap_metrics.metrics())
+    {
+      result.metrics.insert(entry);
+    }
   }
   return result;
 }

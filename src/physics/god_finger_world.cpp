@@ -10,6 +10,7 @@
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/physics/scene_budget.h"
 #include "hooked_world.h"
+#include "overlap_push.h"
 #include "pad_constraints.h"
 #include "proxy.h"
 #include "proxy_touches.h"
@@ -79,6 +80,8 @@ struct GodFingerWorld::Impl
   std::vector<char> falling_asleep;
   // This step's proxy-body touches (proxy_touches.h).
   ProxyTouches touches;
+  // The push apart of fingers whose areas overlap (overlap_push.h), one per proxy.
+  OverlapPush overlap;
   double time = 0.0;
   double deepest_penetration = 0.0;
   long steps = 0;
@@ -311,6 +314,7 @@ struct GodFingerWorld::Impl
     proxy.rigid->setGravity(btVector3(0, 0, 0));
     group_of_tag.assign(bodies.size() + proxies.size(), -1);
     response->configureProxy(params, proxy.rigid.get());
+    overlap.resize(static_cast<int>(proxies.size()));
   }
 
   // The body the proxy's sphere at `position` would start deepest in, and how deep (m): -1 when
@@ -539,6 +543,14 @@ struct GodFingerWorld::Impl
         proxy.state.proxy_orientation = proxy.orientation.proxy;
       }
     }
+    for (std::size_t i = 0; i < proxies.size(); ++i)
+    {
+      const Eigen::Vector3d& push = overlap.push(static_cast<int>(i));
+      if (!push.isZero(0.0))
+      {
+        proxies[i].rigid->applyCentralForce(toBullet(push));
+      }
+    }
     wakeNearAwake();
     for (const int index : awake)
     {
@@ -563,6 +575,7 @@ struct GodFingerWorld::Impl
       proxy.state.proxy_position = toEigen(proxy.rigid->getWorldTransform().getOrigin());
       proxy.state.proxy_velocity = toEigen(proxy.rigid->getLinearVelocity());
     }
+    overlap.update(params, &proxies);
   }
 
   void teardownWorld()

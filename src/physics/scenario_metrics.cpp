@@ -107,6 +107,8 @@ void ScenarioMetrics::add(double time, double dt, const BodyState& state)
     }
     case Scenario::kRollFinger:  // the finger's own metrics (roll_metrics.h)
       break;
+    case Scenario::kPinchThin:
+      break;  // the plate is clamped: the hands' metrics are overlap_metrics.h's
   }
   last_ = state;
 }
@@ -180,6 +182,8 @@ std::map<std::string, double> ScenarioMetrics::metrics() const
       result["max_tilt_rad"] = max_tilt_;
       result["turn_rad"] = max_turn_;
       result["fell_after_release"] = lowest_after_release_ < 0.5 * times_.lift_height ? 1.0 : 0.0;
+      break;
+    case Scenario::kPinchThin:
       break;
   }
   return result;

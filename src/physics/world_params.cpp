@@ -101,6 +101,13 @@ const ParameterTable<WorldParams>& worldParameterTable()
         realRow<P>("proxy_inertia", "kg m^2", openClosed(0.0, 1.0),
                    "oriented finger: the proxy's rotational inertia under the rotational coupling",
                    [](P& p) -> double& { return p.finger.proxy_inertia; }),
+        realRow<P>(
+            "overlap_stiffness", "N/m^2", closed(0.0, 1e7),
+            "god_finger: push apart two fingers whose areas on one body overlap, per m^2 of overlap (0: no push)",
+            [](P& p) -> double& { return p.overlap.stiffness; }),
+        realRow<P>("overlap_force_rate", "N/s", openClosed(0.0, 1e5),
+                   "god_finger: how fast the overlap push may change (bounds the hand's force step)",
+                   [](P& p) -> double& { return p.overlap.force_rate; }),
         realRow<P>("walk_edge_per_max_radius", "dimensionless", openClosed(0.0, 10.0),
                    "largest edge of a sphere's or cylinder's walk surface, as a fraction of r_max",
                    [](P& p) -> double& { return p.walk_edge_per_max_radius; }),

@@ -27,6 +27,7 @@ god_finger::ContactAreaArrayPtr contactAreaMessage(const SceneDescription& scene
       message.depth = area.depth;
       message.feature = static_cast<std::uint8_t>(area.feature);
       message.radius = area.radius;
+      message.overlap_area = area.overlap_area;
       for (int k = 0; k < area.sub_god_object_count; ++k)
       {
         message.sub_god_objects.push_back(toPoint(area.positions[k]));

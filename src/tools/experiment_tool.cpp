@@ -33,7 +33,7 @@ const char* experimentToolUsage()
       "\n"
       "                             [--duration S] [--dt S] [--csv FILE] [--seed N] [--fast]\n"
       "                             [--push-height M] [--scenes DIR] [--hand ideal|fake]\n"
-      "                             [--pad-solver points|constraint]\n"
+      "                             [--pad-solver points|constraint] [--overlap-stiffness N/M2]\n"
       "       god_finger_experiment --list-scenarios | --list-models\n"
       "Runs the scenario's scripted hand motion in the physics world and prints one JSON object:\n"
       "scenario, model, duration_s, steps, step_us_median, step_us_p99, max_penetration_m, nan,\n"
@@ -42,6 +42,7 @@ const char* experimentToolUsage()
       "default 0.0125 m); --csv writes the time series. --hand ideal (default) puts each interface\n"
       "where the script says; --hand fake runs the servo loop on simulated time with the fake\n"
       "device's handle held by the scripted hand, as a ROS session on the servo loop does.\n"
+      "--overlap-stiffness sets the world's overlap_stiffness (0: no push apart of overlapping areas).\n"
       "--list-scenarios prints the scenario names, --list-models the contact models', one a line\n"
       "(the one lists scripts read).\n";
   return usage.c_str();
@@ -109,6 +110,16 @@ std::string parseExperimentToolOptions(int argc, const char* const* argv, const 
       {
         return "option '--pad-solver' = '" + value + "' is not one of " + padSolverNames();
       }
+    }
+    else if (option == "--overlap-stiffness")
+    {
+      // Its range is the world table's (overlap_stiffness): the world names it.
+      double stiffness = 0.0;
+      if (!parseDouble(value, &stiffness))
+      {
+        return "option '--overlap-stiffness' = '" + value + "' is not a number (N/m^2)";
+      }
+      experiment.overlap_stiffness = stiffness;
     }
     else if (option == "--seed")
     {

@@ -174,6 +174,35 @@ TEST(Experiment, HandGraspHoldsTheMugLevelAndLetsItFall)
   EXPECT_EQ(run(Scenario::kHandGrasp, ContactModel::kSoftFinger).metrics.at("fell_after_release"), 1.0);
 }
 
+// pinch_thin: two god-fingers pinch a 2 mm plate and drift until they face each other across it.
+// Without the overlap push their areas come to cover each other; with it (the default) they are
+// kept apart, the overlap at most a fifth of that, and the push adds no force step over 0.5 N.
+// Point contacts (god_object) have no areas to overlap.
+TEST(Experiment, PinchThinOverlapPushKeepsTheFingersApart)
+{
+  for (const PadSolver solver : kPadSolvers)
+  {
+    SCOPED_TRACE(padSolverName(solver));
+    ExperimentOptions options;
+    options.scenario = Scenario::kPinchThin;
+    options.model = ContactModel::kGodFinger;
+    options.pad_solver = solver;
+    options.scenes_dir = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
+    const ExperimentResult pushed = runExperiment(options);
+    options.overlap_stiffness = 0.0;
+    const ExperimentResult unpushed = runExperiment(options);
+    EXPECT_EQ(pushed.nan, 0);
+    EXPECT_EQ(unpushed.nan, 0);
+    // Without the push, half of a pad of r = 9.8 mm (3.0e-4 m^2) or more: the proxies lag their
+    // hands by friction and end 4.6 mm apart.
+    EXPECT_GT(unpushed.metrics.at("overlap_area_max_m2"), 1.5e-4);
+    EXPECT_LE(pushed.metrics.at("overlap_area_max_m2"), 0.2 * unpushed.metrics.at("overlap_area_max_m2"));
+    EXPECT_GT(pushed.metrics.at("overlap_area_max_m2"), 0.0);
+    EXPECT_LE(pushed.metrics.at("max_force_step_N"), 0.5);
+  }
+  EXPECT_EQ(run(Scenario::kPinchThin, ContactModel::kGodObject).metrics.at("overlap_area_max_m2"), 0.0);
+}
+
 TEST(Experiment, TwoRunsGiveIdenticalCsv)
 {
   ExperimentOptions options;

@@ -399,8 +399,12 @@ TEST_P(HardCases, FourFingersWithOverlappingContactAreasHoldABoxStill)
   {
     const InterfaceState& finger = world.interfaceState(f);
     ASSERT_EQ(finger.contact_count, 1) << f;
-    // Each area (radius ~ r_max) overlaps the three others (fingers 6-8.5 mm apart).
+    // Each area (radius ~ r_max) overlaps the others (hands 6-8.5 mm apart).
     EXPECT_GT(finger.contacts[0].radius, 0.0085) << f;
+    // The overlap push (overlap_push.h) spreads the proxies out from under their hands, each
+    // away from the middle (about 7 mm out along its diagonal), and the areas still overlap.
+    EXPECT_GT(finger.overlap_area, 0.0) << f;
+    EXPECT_GT(finger.overlap_push.dot(spots[f]), 0.0) << f;
     total_push += finger.user_force.z();
   }
   std::printf("[ four fingers ] hands feel %.3f N up in all (4 x k x 5 mm = %.3f N), box moved %.3g m\n", total_push,

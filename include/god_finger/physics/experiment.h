@@ -40,6 +40,11 @@
 //    hand from one step to the next, from the roll's start on), rolled_rad (the proxy's roll over
 //    the same span) and contact_lost_steps (steps from the roll's start without a contact area
 //    on the box). --hand fake refuses it: the fake device has no orientation yet.
+//  - kPinchThin (urdf/scenes/holder_plate.urdf): two fingers pinch a clamped 2 mm plate across
+//    its thickness, 3 cm apart along it, and drift towards each other for 2 s until they face
+//    each other; 3.5 s in all. The paper's overlap of contact areas (Discussion), and its push
+//    (WorldParams::overlap; ExperimentOptions::overlap_stiffness 0 runs without). Metrics
+//    (overlap_metrics.h): overlap_area_max_m2, max_force_step_N.
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
@@ -71,11 +76,13 @@ enum class Scenario
   kClutter,
   kHandGrasp,
   kRollFinger,
+  kPinchThin,
 };
 // Every scenario, in the order tools and scripts list them: the one list (scenarioNames()).
 constexpr Scenario kAllScenarios[] = {Scenario::kSlide,         Scenario::kLiftOne, Scenario::kLiftTwo,
                                       Scenario::kPinchCylinder, Scenario::kClutter, Scenario::kHandGrasp,
                                       Scenario::kRollFinger};
+                                      Scenario::kPinchThin};
 const char* scenarioName(Scenario scenario);
 // The names of kAllScenarios joined by `separator` ("slide, lift_one, ...").
 std::string scenarioNames(const std::string& separator = ", ");
@@ -97,6 +104,7 @@ struct ExperimentOptions
   // The world's (world_params.h) unless a caller sets them.
   int solver_iterations = WorldParams().solver_iterations;
   PadSolver pad_solver = WorldParams().pad_solver;
+  double overlap_stiffness = WorldParams().overlap.stiffness;  // N/m^2, 0: no overlap push
   // > 0: the watched object's pose is sampled every sample_period (s; rounded to whole steps)
   // into ExperimentResult::trajectory, for comparing runs of different settings.
   double sample_period = 0.0;
@@ -129,7 +137,7 @@ struct ExperimentResult
 };
 
 // The world parameters a scenario runs with: the defaults (WorldParams), with the options'
-// time step, solver iterations, pad solver and model.
+// time step, solver iterations, pad solver, model and overlap stiffness.
 WorldParams scenarioParams(const ExperimentOptions& options);
 
 // A script's times: its own length, when the lift ends (metrics "after the lift" start there)

@@ -12,7 +12,9 @@
 //     active sub-god-object is a contact point with the true contact's normal and its
 //     tilt-corrected depth, in manifolds of our own (Bullet's keep at most 4 points and merge
 //     close ones; src/physics/sub_god_object_injection.h);
-//  4. the solver runs; the force on the user is the opposite of the coupling force.
+//  4. the solver runs; the force on the user is the opposite of the coupling force;
+//  5. kGodFinger: where two fingers' contact areas on one body overlap, both proxies are pushed
+//     apart in the next step (WorldParams::overlap, src/physics/overlap_push.h).
 //
 // Sleeping (WorldParams::sleep): a dynamic body at rest, out of every proxy's reach, falls asleep
 // with its island and costs almost nothing until a proxy or a woken body comes near it.
@@ -48,6 +50,9 @@ struct WorldContactArea
   FeatureKind feature = FeatureKind::kFace;
   int sub_god_object_count = 0;                                             // active ones, in positions
   std::array<Eigen::Vector3d, ContactParams::kMaxSubGodObjects> positions;  // world
+  // m^2: the overlap with other fingers' areas on this body, summed (core/area_overlap.h; god_finger
+  // model only, 0 otherwise)
+  double overlap_area = 0.0;
 };
 
 struct InterfaceState
@@ -68,6 +73,11 @@ struct InterfaceState
   int contact_count = 0;                  // entries used in contacts
   static constexpr int kMaxContacts = 4;  // bodies touched at once
   std::array<WorldContactArea, kMaxContacts> contacts;
+  // The overlap of this finger's areas with the other fingers' (m^2, the sum of its contacts'
+  // overlap_area), and the push it brings on the proxy in the next step (N, world; WorldParams::
+  // overlap, src/physics/overlap_push.h): both zero when no area overlaps.
+  double overlap_area = 0.0;
+  Eigen::Vector3d overlap_push = Eigen::Vector3d::Zero();
 };
 
 struct BodyState

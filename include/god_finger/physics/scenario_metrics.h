@@ -14,7 +14,8 @@
 //    setNeighbours: disturbed_neighbours (moved more than kDisturbedDistance),
 //    max_neighbour_displacement_m;
 //  - hand_grasp: held_s, lift_height_m, max_tilt_rad, turn_rad, fell_after_release
-//    (experiment.h).
+//    (experiment.h);
+//  - pinch_thin: none of the plate's (it is clamped); overlap_metrics.h measures the hands.
 // Units: SI; states in the world frame. Not real-time (a map of results).
 #pragma once
 
