@@ -79,10 +79,9 @@ enum class Scenario
   kPinchThin,
 };
 // Every scenario, in the order tools and scripts list them: the one list (scenarioNames()).
-constexpr Scenario kAllScenarios[] = {Scenario::kSlide,         Scenario::kLiftOne, Scenario::kLiftTwo,
-                                      Scenario::kPinchCylinder, Scenario::kClutter, Scenario::kHandGrasp,
-                                      Scenario::kRollFinger};
-                                      Scenario::kPinchThin};
+constexpr Scenario kAllScenarios[] = {Scenario::kSlide,         Scenario::kLiftOne,  Scenario::kLiftTwo,
+                                      Scenario::kPinchCylinder, Scenario::kClutter,  Scenario::kHandGrasp,
+                                      Scenario::kRollFinger,    Scenario::kPinchThin};
 const char* scenarioName(Scenario scenario);
 // The names of kAllScenarios joined by `separator` ("slide, lift_one, ...").
 std::string scenarioNames(const std::string& separator = ", ");
