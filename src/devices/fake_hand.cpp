@@ -14,13 +14,14 @@ constexpr double kLiftStart = 1.5;   // s
 constexpr double kLiftEnd = 3.5;     // s
 constexpr double kRelease = 4.5;     // s
 constexpr double kOpen = 4.8;        // s
+constexpr double kLowered = 5.8;     // s
 constexpr double kSpreadDeg = 35.0;  // between neighbouring fingers
 
 class FakeHand : public HandSource
 {
  public:
   explicit FakeHand(const FakeHandParams& params)
-      : names_(fakeHandFingerNames(params.fingers)), paths_(fakeHandPaths(params))
+      : names_(fakeHandFingerNames(params.fingers)), paths_(fakeHandPaths(params)), cycle_(params.cycle)
   {
   }
   std::string name() const override
@@ -41,7 +42,11 @@ class FakeHand : public HandSource
     {
       start_ = time;  // no script start given: the script starts at the first read
     }
-    const double t = time - start_;
+    double t = time - start_;
+    if (cycle_ > 0.0 && t > 0.0)
+    {
+      t = std::fmod(t, cycle_);
+    }
     const double dt = 1e-3;
     for (std::size_t i = 0; i < paths_.size(); ++i)
     {
@@ -57,6 +62,7 @@ class FakeHand : public HandSource
   std::vector<std::string> names_;
   std::vector<WaypointPath> paths_;
   double start_ = NAN;
+  double cycle_;
 };
 }  // namespace
 
@@ -69,6 +75,12 @@ FakeHandParams readFakeHandParams(const ParameterSource& source)
   params.open_radius = readDouble(source, "open_radius", params.open_radius, 0.0, 0.5, "m", true);
   params.object_radius = readDouble(source, "object_radius", params.object_radius, 0.0, 0.5, "m", true);
   params.lift = readDouble(source, "lift", params.lift, 0.0, 0.5, "m");
+  params.cycle = readDouble(source, "cycle", params.cycle, 0.0, 3600.0, "s");
+  if (params.cycle > 0.0 && params.cycle < kLowered)
+  {
+    throw InputError("parameter '" + source.fullName("cycle") + "' (" + std::to_string(params.cycle) +
+                     " s) must be 0 (grasp once) or at least the grasp's " + std::to_string(kLowered) + " s");
+  }
   if (!(params.open_radius > params.grasp_radius))
   {
     throw InputError("parameter '" + source.fullName("open_radius") + "' (" + std::to_string(params.open_radius) +
@@ -93,8 +105,8 @@ std::vector<WaypointPath> fakeHandPaths(const FakeHandParams& params)
 {
   const double pi = std::acos(-1.0);
   const double press = params.object_radius - params.grasp_radius;  // a finger's depth into the wall
-  std::vector<double> angles;                                      // the fingers', rad
-  double push_y = 0.0;                                             // the fingers' push along -y, in depths
+  std::vector<double> angles;                                       // the fingers', rad
+  double push_y = 0.0;                                              // the fingers' push along -y, in depths
   for (int k = 0; k < params.fingers; ++k)
   {
     const double degrees = 270.0 + kSpreadDeg * (k - 0.5 * (params.fingers - 1));
@@ -115,7 +127,8 @@ std::vector<WaypointPath> fakeHandPaths(const FakeHandParams& params)
                          {kLiftStart, shut},
                          {kLiftEnd, shut + up},
                          {kRelease, shut + up},
-                         {kOpen, open + up}});
+                         {kOpen, open + up},
+                         {kLowered, open}});
   };
   paths.push_back(path(0.5 * pi, thumb_closed));
   for (double angle : angles)

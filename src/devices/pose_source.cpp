@@ -64,7 +64,7 @@ PoseSourceParams readPoseSourceParams(const ParameterSource& source)
   {
     const std::string& name = params.fingers[i];
     if (name.empty() || name.find_first_of("/ ") != std::string::npos ||
-        std::count(params.fingers.begin(), params.fingers.end(), name) > 1)
+        std::count(params.fingers.begin(), params.fingers.begin() + i, name) > 0)
     {
       throw InputError("parameter '" + source.fullName("fingers") + "': finger " + std::to_string(i) + " '" + name +
                        "' must be a unique non-empty name without '/' or spaces");

@@ -222,9 +222,10 @@ struct ServoNode::Impl
         diagnostic_msgs::DiagnosticStatus lost;
         lost.name = ros::this_node::getName() + ": finger " + interface.name;
         lost.hardware_id = "god_finger";
-        lost.level = interface.tracked ? diagnostic_msgs::DiagnosticStatus::OK : diagnostic_msgs::DiagnosticStatus::WARN;
-        lost.message = interface.tracked ? "tracked again" :
-                                           "pose stream lost or late (no pose newer than its pose_timeout): let go";
+        lost.level =
+            interface.tracked ? diagnostic_msgs::DiagnosticStatus::OK : diagnostic_msgs::DiagnosticStatus::WARN;
+        lost.message = interface.tracked ? "tracked again"
+                                         : "pose stream lost or late (no pose newer than its pose_timeout): let go";
         addValue(&lost, "tracked", interface.tracked ? "true" : "false");
         addValue(&lost, "untracked_samples", std::to_string(interface.lost_samples));
         array.status.push_back(lost);

@@ -9,8 +9,8 @@
 
 #include <Eigen/Core>
 #include <cstdint>
-#include <stdexcept>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 

@@ -31,9 +31,9 @@ namespace god_finger
 struct PoseSourceParams
 {
   std::vector<std::string> fingers = {"thumb", "index", "middle"};  // names, in the array's order
-  std::string topic = "poses";                                      // geometry_msgs/PoseArray, the interface's namespace
-  double pose_timeout = 0.1;                                        // s: older poses let the finger go
-  Eigen::Vector3d rest = Eigen::Vector3d(0.0, 0.0, 0.3);            // m, device frame: before a first pose
+  std::string topic = "poses";                            // geometry_msgs/PoseArray, the interface's namespace
+  double pose_timeout = 0.1;                              // s: older poses let the finger go
+  Eigen::Vector3d rest = Eigen::Vector3d(0.0, 0.0, 0.3);  // m, device frame: before a first pose
 };
 
 // fingers (1 to 10 unique non-empty names), topic, pose_timeout (s, (0, 10]), rest; InputError

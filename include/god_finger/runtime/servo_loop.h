@@ -192,8 +192,8 @@ struct ServoCounters
   std::atomic<long> overruns{0};
   std::atomic<long> dropped_samples{0};  // real time: the publishers were behind
   std::atomic<long> dropped_snapshots{0};
-  std::atomic<long> rejected_readings{0};  // non-finite device readings (position or velocity)
-  std::atomic<long> rejected_forces{0};    // non-finite forces refused by a guard
+  std::atomic<long> rejected_readings{0};   // non-finite device readings (position or velocity)
+  std::atomic<long> rejected_forces{0};     // non-finite forces refused by a guard
   std::atomic<long> untracked_readings{0};  // interface-ticks of fingers their source lost (let go)
   std::atomic<long> commands{0};
   std::atomic<long> stale_ticks{0};      // interface-ticks whose force came from the anchor

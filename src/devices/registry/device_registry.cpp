@@ -132,8 +132,9 @@ std::unique_ptr<HapticDevice> makePoseSource(const DeviceContext& context)
   const PoseSourceParams params = readPoseSourceParams(context.params);
   if (!context.connect_poses)
   {
-    throw InputError("backend 'pose_source' needs a pose subscriber, which this program does not have (run it "
-                     "with topology:=servo)");
+    throw InputError(
+        "backend 'pose_source' needs a pose subscriber, which this program does not have (run it "
+        "with topology:=servo)");
   }
   auto feed = std::make_shared<PoseFeed>(params.fingers.size());
   feed->connection = context.connect_poses(params.topic, feed);
@@ -173,8 +174,10 @@ const std::vector<DeviceBackend>& deviceBackends()
   // whose coupling pulls proxies only.
   static const std::vector<DeviceBackend> backends = {
       // name, profile, simulated, hand_target, factory
-      {"fake", "fake", true, false, makeFake},     {"interactive", "fake", true, true, makeInteractive},
-      {"replay", "fake", true, false, makeReplay}, {"falcon", "falcon", false, false, makeFalcon},
+      {"fake", "fake", true, false, makeFake},
+      {"interactive", "fake", true, true, makeInteractive},
+      {"replay", "fake", true, false, makeReplay},
+      {"falcon", "falcon", false, false, makeFalcon},
       {"omni", "omni", false, false, makeOmni},
       // Hands (devices/hand_device.h): one interface per finger, input only (no force rendered).
       {"fake_hand", "fake", true, false, makeFakeHand, false},
