@@ -75,6 +75,14 @@ PoseSourceParams readPoseSourceParams(const ParameterSource& source)
   {
     throw InputError("parameter '" + source.fullName("topic") + "' must name a geometry_msgs/PoseArray topic");
   }
+  params.frames = readStringList(source, "frames", params.frames);
+  if (!params.frames.empty() && params.frames.size() != params.fingers.size())
+  {
+    throw InputError("parameter '" + source.fullName("frames") + "' must list one TF frame per finger (" +
+                     std::to_string(params.fingers.size()) + "), not " + std::to_string(params.frames.size()));
+  }
+  params.reference_frame = readString(source, "reference_frame", params.reference_frame);
+  params.poll_rate = readDouble(source, "poll_rate", params.poll_rate, 0.0, 10000.0, "Hz", true);
   params.pose_timeout = readDouble(source, "pose_timeout", params.pose_timeout, 0.0, 10.0, "s", true);
   params.rest = readVector(source, "rest", params.rest);
   return params;

@@ -52,8 +52,8 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
     context.script_start = script_start;
     context.read_track = readBagTrack;
     context.default_track_topic = interface_nh.resolveName("device/state");
-    context.connect_poses = [interface_nh](const std::string& topic, std::shared_ptr<PoseFeed> feed)
-    { return connectPoseFeed(interface_nh, topic, std::move(feed)); };
+    context.connect_poses = [interface_nh](const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed)
+    { return connectPoseFeed(interface_nh, params, std::move(feed)); };
     context.now = steadySeconds;
     std::unique_ptr<HapticDevice> device = makeDevice(backend, context);
     // A hand (devices/hand_device.h) is one interface per finger, NAME/FINGER, with the

@@ -18,7 +18,7 @@ std::string errorOf(const std::string& backend, const MapParameterSource& params
   DeviceContext context(params, kMaxForce);
   if (with_ros)
   {
-    context.connect_poses = [](const std::string&, std::shared_ptr<PoseFeed>) { return std::shared_ptr<void>(); };
+    context.connect_poses = [](const PoseSourceParams&, std::shared_ptr<PoseFeed>) { return std::shared_ptr<void>(); };
     context.now = []() { return 0.0; };
   }
   try
@@ -88,6 +88,10 @@ TEST(HandDevices, CheckTheirParameters)
   twice.set("fingers", ParameterValue::of(std::vector<std::string>{"thumb", "thumb"}));
   EXPECT_EQ(errorOf("pose_source", twice, true),
             "parameter '/hand/fingers': finger 1 'thumb' must be a unique non-empty name without '/' or spaces");
+  MapParameterSource frames("/hand/");
+  frames.set("frames", ParameterValue::of(std::vector<std::string>{"thumb_tip"}));
+  EXPECT_EQ(errorOf("pose_source", frames, true),
+            "parameter '/hand/frames' must list one TF frame per finger (3), not 1");
   MapParameterSource timeout("/hand/");
   timeout.set("pose_timeout", ParameterValue::of(0.0));
   EXPECT_NE(errorOf("pose_source", timeout, true).find("/hand/pose_timeout"), std::string::npos);

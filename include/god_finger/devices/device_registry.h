@@ -32,10 +32,10 @@ struct DeviceContext
   // recording can be read (then backend replay is refused).
   std::function<WaypointPath(const std::string& bag, const std::string& topic)> read_track;
   std::string default_track_topic = "device/state";
-  // pose_source: subscribes `feed` to the geometry_msgs/PoseArray `topic` (the interface's
-  // namespace), stamps converted to now's clock; returns what keeps the subscription alive.
-  // Unset where there is no ROS (then backend pose_source is refused).
-  std::function<std::shared_ptr<void>(const std::string& topic, std::shared_ptr<PoseFeed> feed)> connect_poses;
+  // pose_source: feeds `feed` from the geometry_msgs/PoseArray params.topic (the interface's
+  // namespace) or from the TF frames params.frames, stamps converted to now's clock; returns
+  // what keeps the subscription alive. Unset where there is no ROS (then pose_source is refused).
+  std::function<std::shared_ptr<void>(const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed)> connect_poses;
   std::function<double()> now;  // s: the pose source's clock (steadySeconds() in the servo node)
 };
 

@@ -1,6 +1,6 @@
 // The pose source (backend pose_source): N fingertip poses from a hand tracker, a glove or mocap,
-// given by the ROS side (a geometry_msgs/PoseArray topic: ros/pose_feed_ros.cpp) through a
-// PoseFeed. Input only: it renders no force (devices/hand_device.h). Real time only.
+// given by the ROS side (a geometry_msgs/PoseArray topic, or one TF frame per finger:
+// ros/pose_feed_ros.cpp) through a PoseFeed. Input only: it renders no force (devices/hand_device.h). Real time only.
 //
 // Frames and units: positions in metres in the device frame (the interface's workspace mapping
 // takes them to the world; with the default offset 0 the device frame is the world); stamps
@@ -31,12 +31,18 @@ namespace god_finger
 struct PoseSourceParams
 {
   std::vector<std::string> fingers = {"thumb", "index", "middle"};  // names, in the array's order
-  std::string topic = "poses";                            // geometry_msgs/PoseArray, the interface's namespace
+  std::string topic = "poses";  // geometry_msgs/PoseArray, the interface's namespace
+  // TF frames, one per finger (then no topic): each fingertip's frame, looked up in
+  // reference_frame (the device frame's name in TF) at poll_rate.
+  std::vector<std::string> frames;
+  std::string reference_frame = "world";
+  double poll_rate = 500.0;                               // Hz
   double pose_timeout = 0.1;                              // s: older poses let the finger go
   Eigen::Vector3d rest = Eigen::Vector3d(0.0, 0.0, 0.3);  // m, device frame: before a first pose
 };
 
-// fingers (1 to 10 unique non-empty names), topic, pose_timeout (s, (0, 10]), rest; InputError
+// fingers (1 to 10 unique non-empty names), topic, frames (none, or one per finger),
+// reference_frame, poll_rate (Hz, (0, 10000]), pose_timeout (s, (0, 10]), rest; InputError
 // naming a bad one.
 PoseSourceParams readPoseSourceParams(const ParameterSource& source);
 

@@ -137,7 +137,7 @@ std::unique_ptr<HapticDevice> makePoseSource(const DeviceContext& context)
         "with topology:=servo)");
   }
   auto feed = std::make_shared<PoseFeed>(params.fingers.size());
-  feed->connection = context.connect_poses(params.topic, feed);
+  feed->connection = context.connect_poses(params, feed);
   return makeHandDevice(makePoseSource(params, feed, context.now));
 }
 
