@@ -70,7 +70,8 @@ class HandDevice : public HapticDevice
   }
   void start() override
   {
-    throw DeviceError("device '" + source_->name() + "' is a hand: run its fingers(), not the hand");
+    throw DeviceError("device '" + source_->name() +
+                      "' is a hand (one interface per finger): only the servo loop runs hands; use topology:=servo");
   }
   DeviceReading update(double /*time*/, const Eigen::Vector3d& /*force*/) override
   {

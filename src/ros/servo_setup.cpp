@@ -73,7 +73,6 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
       servo_interfaces.push_back(std::move(servo));
       names.push_back(servo_interfaces.back().name);
       setup.backends.push_back(backend_name);
-      setup.renders_force.push_back(backend.renders_force);
       setup.hand_targets.push_back(backend.hand_target);
       setup.hand_starts.push_back(readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)));
     }

@@ -23,7 +23,6 @@ struct ServoSetup
   std::string scene_path;
   std::vector<std::string> names;            // interfaces (a hand's: one per finger, NAME/FINGER), in the loop's order
   std::vector<std::string> backends;         // their backend names
-  std::vector<bool> renders_force;           // DeviceBackend::renders_force of their backends
   std::vector<bool> hand_targets;            // backends moved by a dragged hand (an rviz marker)
   std::vector<Eigen::Vector3d> hand_starts;  // their marker's start (m, device frame)
 };
