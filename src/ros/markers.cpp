@@ -94,6 +94,17 @@ void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world
   }
 }
 
+FingerColour fingerColour(int interface)
+{
+  // Interface 0 keeps the one-finger demo's yellow; then colours far apart on dark grey.
+  static const FingerColour kPalette[] = {
+      {1.0f, 0.9f, 0.0f},  {0.0f, 0.85f, 1.0f}, {1.0f, 0.3f, 0.85f}, {0.45f, 1.0f, 0.3f}, {1.0f, 0.55f, 0.1f},
+      {0.6f, 0.45f, 1.0f}, {1.0f, 1.0f, 1.0f},  {0.0f, 0.6f, 0.5f},  {1.0f, 0.6f, 0.6f},  {0.7f, 0.7f, 0.2f},
+  };
+  const int n = static_cast<int>(sizeof(kPalette) / sizeof(kPalette[0]));
+  return kPalette[((interface % n) + n) % n];
+}
+
 void appendInteractionMarkers(const WorldSnapshot& world, double proxy_radius, const ros::Time& stamp,
                               visualization_msgs::MarkerArray* markers)
 {
@@ -134,7 +145,8 @@ void appendInteractionMarkers(const WorldSnapshot& world, double proxy_radius, c
       const Eigen::Vector3d lift = kContactAreaLift * area.normal;
       visualization_msgs::Marker polygon =
           marker("contact_areas", area_id, visualization_msgs::Marker::TRIANGLE_LIST, stamp);
-      setColor(&polygon, 1.0f, 0.9f, 0.0f);
+      const FingerColour colour = fingerColour(static_cast<int>(i));
+      setColor(&polygon, colour.r, colour.g, colour.b);
       const int n = area.sub_god_object_count;
       for (int k = 0; n >= 2 && k < n; ++k)
       {

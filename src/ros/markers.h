@@ -1,5 +1,6 @@
 // rviz markers of a physics world, all in `world`: scene bodies (namespace "bodies"), each
-// contact area as a filled yellow polygon ("contact_areas"), its sub-god-objects
+// contact area as a filled polygon in its finger's colour ("contact_areas"; the first finger's
+// yellow, fingerColour()), its sub-god-objects
 // ("sub_god_objects"), god-objects ("god_objects"), interface points ("interfaces"),
 // coupling springs ("couplings") and the force on the hand ("forces", 1 cm per newton).
 #pragma once
@@ -16,6 +17,14 @@ namespace god_finger
 {
 // Polygons are lifted this far (m) along their normal, above the surface they lie on.
 constexpr double kContactAreaLift = 5e-4;
+
+// The one palette of finger colours (RGB in [0, 1]): interface i's contact areas; interface 0
+// yellow; repeats after 10.
+struct FingerColour
+{
+  float r, g, b;
+};
+FingerColour fingerColour(int interface);
 
 // A DELETEALL (rviz clears every namespace with it), then the bodies at their current poses.
 // Call first, then appendInteractionMarkers: the whole picture is sent at each publish.

@@ -54,6 +54,8 @@ struct ServoNode::Impl
     ros::Publisher proxy;
     std::unique_ptr<interactive_markers::InteractiveMarkerServer> hand_marker;
     std::uint32_t published = 0;
+    bool tracked = true;    // the last sample's: false, its source lost the finger (let go)
+    long lost_samples = 0;  // samples untracked since the last diagnostics
   };
 
   std::unique_ptr<ServoLoop> loop;
@@ -120,6 +122,8 @@ struct ServoNode::Impl
   {
     Interface& interface = interfaces[sample.interface];
     const ros::Time stamp = stampOf(sample);
+    interface.tracked = sample.tracked;
+    interface.lost_samples += sample.tracked ? 0 : 1;
     if (timing && sample.interface == 0)
     {
       std::fprintf(timing, "%.3f,%.3f,%.3f\n", sample.period_us, sample.latency_us, sample.step_us);
@@ -208,7 +212,26 @@ struct ServoNode::Impl
     add("contact_model", contactModelName(static_cast<ContactModel>(counters.model.load())));
     add("pad_solver", padSolverName(static_cast<PadSolver>(counters.pad_solver.load())));
     add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)
+    add("untracked_readings", std::to_string(counters.untracked_readings.load()));  // fingers let go
     array.status.push_back(status);
+    // A finger its pose source lost (no pose newer than its timeout): let go, named; the others go on.
+    for (Interface& interface : interfaces)
+    {
+      if (!interface.tracked || interface.lost_samples > 0)
+      {
+        diagnostic_msgs::DiagnosticStatus lost;
+        lost.name = ros::this_node::getName() + ": finger " + interface.name;
+        lost.hardware_id = "god_finger";
+        lost.level =
+            interface.tracked ? diagnostic_msgs::DiagnosticStatus::OK : diagnostic_msgs::DiagnosticStatus::WARN;
+        lost.message = interface.tracked ? "tracked again"
+                                         : "pose stream lost or late (no pose newer than its pose_timeout): let go";
+        addValue(&lost, "tracked", interface.tracked ? "true" : "false");
+        addValue(&lost, "untracked_samples", std::to_string(interface.lost_samples));
+        array.status.push_back(lost);
+        interface.lost_samples = 0;
+      }
+    }
     diagnostics_publisher.publish(array);
     statistics.clear();
   }

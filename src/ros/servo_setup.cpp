@@ -4,10 +4,12 @@
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/physics/urdf_scene.h"
+#include "god_finger/runtime/servo_clock.h"
 #include "hand_marker.h"
 #include "interface_parameters.h"
 #include "node_parameters.h"
 #include "parameters.h"
+#include "pose_feed_ros.h"
 #include "scene_parameter.h"
 
 #include <cmath>
@@ -27,14 +29,14 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
   loop_params.snapshot_every = std::max(1, static_cast<int>(std::lround(loop_params.rate / node_params.publish_rate)));
   std::string scene_path;
   auto world = std::make_unique<GodFingerWorld>(loadSceneParameter(pnh, &scene_path), world_params);
-  setup.names = readStringList(pnh, "interfaces", {"finger"});
+  const std::vector<std::string> interface_names = readStringList(pnh, "interfaces", {"finger"});
+  std::vector<std::string> names;  // one per finger
   // Simulated devices start their scripts together: on simulated time script_delay after 0,
   // on the wall clock script_delay after the launch's epoch (the loop's clock starts now).
   const double script_start = sim_time ? node_params.script_delay : sharedScriptStart(pnh, 0.0);
   std::vector<ServoInterface> servo_interfaces;
-  for (std::size_t i = 0; i < setup.names.size(); ++i)
+  for (const std::string& name : interface_names)
   {
-    const std::string& name = setup.names[i];
     ros::NodeHandle interface_nh(nh, name);
     const RosParameterSource device_params(interface_nh);
     const InterfaceConfig config = readInterfaceConfig(device_params, name);
@@ -50,16 +52,32 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
     context.script_start = script_start;
     context.read_track = readBagTrack;
     context.default_track_topic = interface_nh.resolveName("device/state");
-    ServoInterface servo;
-    servo.name = name;
-    servo.device = makeDevice(backend, context);
-    servo.profile = config.profile;
-    servo.mapping = WorkspaceMapping(config.mapping);
-    servo_interfaces.push_back(std::move(servo));
-    setup.backends.push_back(backend_name);
-    setup.hand_targets.push_back(backend.hand_target);
-    setup.hand_starts.push_back(readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)));
+    context.connect_poses = [interface_nh](const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed)
+    { return connectPoseFeed(interface_nh, params, std::move(feed)); };
+    context.now = steadySeconds;
+    std::unique_ptr<HapticDevice> device = makeDevice(backend, context);
+    // A hand (devices/hand_device.h) is one interface per finger, NAME/FINGER, with the
+    // interface's profile and mapping; every other device is one.
+    std::vector<DeviceFinger> fingers = device->fingers();
+    if (fingers.empty())
+    {
+      fingers.push_back({"", std::move(device)});
+    }
+    for (DeviceFinger& finger : fingers)
+    {
+      ServoInterface servo;
+      servo.name = finger.name.empty() ? name : name + "/" + finger.name;
+      servo.device = std::move(finger.device);
+      servo.profile = config.profile;
+      servo.mapping = WorkspaceMapping(config.mapping);
+      servo_interfaces.push_back(std::move(servo));
+      names.push_back(servo_interfaces.back().name);
+      setup.backends.push_back(backend_name);
+      setup.hand_targets.push_back(backend.hand_target);
+      setup.hand_starts.push_back(readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)));
+    }
   }
+  setup.names = names;
   setup.loop = std::make_unique<ServoLoop>(std::move(world), std::move(servo_interfaces), loop_params, log);
   setup.loop->prepare();
   setup.world_params = world_params;

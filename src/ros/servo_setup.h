@@ -21,7 +21,7 @@ struct ServoSetup
   std::unique_ptr<ServoLoop> loop;  // prepared (devices started, proxies placed)
   WorldParams world_params;
   std::string scene_path;
-  std::vector<std::string> names;            // interfaces, in the loop's order
+  std::vector<std::string> names;            // interfaces (a hand's: one per finger, NAME/FINGER), in the loop's order
   std::vector<std::string> backends;         // their backend names
   std::vector<bool> hand_targets;            // backends moved by a dragged hand (an rviz marker)
   std::vector<Eigen::Vector3d> hand_starts;  // their marker's start (m, device frame)

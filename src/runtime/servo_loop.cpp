@@ -306,7 +306,17 @@ void ServoLoop::readDevices(double time)
     // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
     // non-finite device state): its buttons are not pressed, the world gets the last good
     // target, and the samples (device/state) carry the last good reading.
-    if (target.allFinite() && reading.velocity.allFinite())
+    render.tracked = reading.tracked;
+    if (!reading.tracked)
+    {
+      // A finger its source lost (devices/hand_device.h) lets go: its target follows its proxy
+      // (no coupling force, the proxy released) until the source sees it again.
+      ++counters_.untracked_readings;
+      render.target = latest_.proxies[i].proxy_position;
+      render.previous_target = render.target;
+      render.wall_force.setZero();
+    }
+    else if (target.allFinite() && reading.velocity.allFinite())
     {
       readings_[i] = reading;
       render.target = target;
@@ -510,6 +520,7 @@ void ServoLoop::decide(long tick, double time, double period_us)
     sample->step_us = latest_.step_us;
     sample->stale = render.stale;
     sample->physics_lag = lag;
+    sample->tracked = render.tracked;
     samples_.commit();
   }
 }

@@ -13,7 +13,7 @@ constexpr double kMaxForce = 8.0;  // N: a device profile's limit (the Falcon ca
 
 TEST(DeviceRegistry, ListsEveryBackendOnce)
 {
-  EXPECT_EQ(deviceBackendNames(), "fake, interactive, replay, falcon, omni");
+  EXPECT_EQ(deviceBackendNames(), "fake, interactive, replay, falcon, omni, fake_hand, pose_source");
   EXPECT_TRUE(findDeviceBackend("fake", "backend").simulated);
   EXPECT_FALSE(findDeviceBackend("falcon", "backend").simulated);
   EXPECT_TRUE(findDeviceBackend("interactive", "backend").hand_target);
@@ -27,7 +27,8 @@ TEST(DeviceRegistry, ListsEveryBackendOnce)
   catch (const InputError& error)
   {
     EXPECT_STREQ(error.what(),
-                 "parameter '/finger/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni");
+                 "parameter '/finger/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni, "
+                 "fake_hand, pose_source");
   }
 }
 

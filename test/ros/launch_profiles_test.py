@@ -25,10 +25,10 @@ PROFILE_KEYS = ("coupling_stiffness", "coupling_damping", "max_force")
 def backend_profiles():
     """Every device backend and its profile, from the one table: deviceBackends() in
     src/devices/registry/device_registry.cpp, rows {"name", "profile", simulated, hand_target,
-    factory}. interface.launch must load that profile for each backend."""
+    factory[, renders_force]}. interface.launch must load that profile for each backend."""
     with open(os.path.join(PACKAGE, "src", "devices", "registry", "device_registry.cpp")) as f:
         source = f.read()
-    rows = re.findall(r'\{"(\w+)", "(\w+)", (?:true|false), (?:true|false), make\w+\}', source)
+    rows = re.findall(r'\{"(\w+)", "(\w+)", (?:true|false), (?:true|false), make\w+(?:, (?:true|false))?\}', source)
     if len(rows) < 2:
         raise AssertionError("no backend rows found in device_registry.cpp: has the table's shape changed?")
     return dict(rows)

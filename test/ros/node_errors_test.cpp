@@ -75,9 +75,13 @@ TEST(NodeErrors, DeviceDriverNode)
   expectFails(node, "__name:=d1 _backend:=falcon", "backend 'falcon' needs libnifalcon");
   expectFails(node, "__name:=d2 _backend:=omni", "backend 'omni' needs the OpenHaptics HD API");
   expectFails(node, "__name:=d3 _backend:=mouse",
-              "parameter '/d3/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni");
+              "parameter '/d3/backend' = 'mouse' is not one of fake, interactive, replay, falcon, omni, fake_hand, "
+              "pose_source");
   expectFails(node, "__name:=d4 _max_force:=-2", "parameter '/d4/max_force' = -2 is out of range (0, 10000] (N)");
   expectFails(node, "__name:=d5", "parameter '/d5/script' must be a list of [t, x, y, z] waypoints");
+  expectFails(node, "__name:=dh _backend:=fake_hand",
+              "device 'fake_hand' is a hand (one interface per finger): only the servo loop runs hands; use "
+              "topology:=servo");
   expectFails(node, "__name:=d6", "does not come after the previous one");
   expectFails(node, "__name:=d7 _backend:=replay", "parameter '/d7/bag' is required by backend 'replay'");
   expectFails(node, "__name:=d8 _backend:=replay _bag:=/nonexistent/session.bag",

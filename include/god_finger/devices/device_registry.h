@@ -10,6 +10,7 @@
 #include "god_finger/core/parameter_source.h"
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/devices/haptic_device.h"
+#include "god_finger/devices/pose_source.h"
 
 #include <cmath>
 #include <functional>
@@ -31,6 +32,11 @@ struct DeviceContext
   // recording can be read (then backend replay is refused).
   std::function<WaypointPath(const std::string& bag, const std::string& topic)> read_track;
   std::string default_track_topic = "device/state";
+  // pose_source: feeds `feed` from the geometry_msgs/PoseArray params.topic (the interface's
+  // namespace) or from the TF frames params.frames, stamps converted to now's clock; returns
+  // what keeps the subscription alive. Unset where there is no ROS (then pose_source is refused).
+  std::function<std::shared_ptr<void>(const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed)> connect_poses;
+  std::function<double()> now;  // s: the pose source's clock (steadySeconds() in the servo node)
 };
 
 struct DeviceBackend
@@ -41,10 +47,13 @@ struct DeviceBackend
   bool simulated;       // needs no hardware (can run on simulated time, in lockstep)
   bool hand_target;     // moved by a hand the user drags (setHandTarget): the nodes add an rviz marker
   std::unique_ptr<HapticDevice> (*make)(const DeviceContext& context);
+  // False: an input-only device (a pose source: hand trackers, gloves, mocap); it renders no
+  // force, the forces the loop computes for it go nowhere.
+  bool renders_force = true;
 };
 
 const std::vector<DeviceBackend>& deviceBackends();
-// "fake, interactive, replay, falcon, omni".
+// "fake, interactive, replay, falcon, omni, fake_hand, pose_source".
 std::string deviceBackendNames();
 // InputError naming `parameter` and the known names when there is no such backend.
 const DeviceBackend& findDeviceBackend(const std::string& name, const std::string& parameter);

@@ -9,8 +9,10 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace god_finger
 {
@@ -26,6 +28,16 @@ struct DeviceReading
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, device frame
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s
   std::uint32_t buttons = 0;                           // bit i: button i pressed
+  // False: the source lost this finger (a pose source's stream lost or late,
+  // devices/hand_device.h); the position is then not the finger's, and the loop lets it go.
+  bool tracked = true;
+};
+
+class HapticDevice;
+struct DeviceFinger
+{
+  std::string name;  // e.g. thumb; its interface is named INTERFACE/NAME
+  std::unique_ptr<HapticDevice> device;
 };
 
 class HapticDevice
@@ -48,6 +60,13 @@ class HapticDevice
   virtual bool setHandTarget(const Eigen::Vector3d& /*position*/)
   {
     return false;
+  }
+  // A device that carries several fingers (devices/hand_device.h): one device per finger, in
+  // order, each run as its own interface; called once, before start(). Empty (every other
+  // device): the device is one finger.
+  virtual std::vector<DeviceFinger> fingers()
+  {
+    return {};
   }
 };
 }  // namespace god_finger

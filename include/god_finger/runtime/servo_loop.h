@@ -16,6 +16,9 @@
 //      finite is rejected whole and counted once (rejected_readings), as the topic topologies'
 //      haptic node does: its buttons press nothing, the physics gets the last good target
 //      (the world never sees a non-finite one), and its sample carries the last good reading;
+//      a reading its source marks untracked (a finger a pose source lost, DeviceReading::tracked)
+//      lets that finger go: its target is its proxy's last position (no coupling force), counted
+//      in untracked_readings, its sample says tracked = false; the other interfaces go on;
 //   3. leaves a sample per interface in a lock-free queue for the publishers.
 // The physics side, one step per targets it takes (the latest; older ones are skipped when it
 // is late, the skipped motion entering the coupling's damping as the device's velocity):
@@ -100,6 +103,8 @@
 
 namespace god_finger
 {
+// One finger: a one-finger device, or one of a hand's fingers (HapticDevice::fingers(); the
+// loop runs every finger of every device in one tick).
 struct ServoInterface
 {
   std::string name;
@@ -156,6 +161,8 @@ struct ServoSample
   // from it), not the step's coupling reaction; user_force is then that rendering's.
   bool stale = false;
   long physics_lag = 0;  // ticks from the targets of the last completed step to this reading (0: on time)
+  // False: the device's source lost this finger (DeviceReading::tracked): the loop let it go.
+  bool tracked = true;
 };
 
 struct ServoCommand
@@ -185,8 +192,9 @@ struct ServoCounters
   std::atomic<long> overruns{0};
   std::atomic<long> dropped_samples{0};  // real time: the publishers were behind
   std::atomic<long> dropped_snapshots{0};
-  std::atomic<long> rejected_readings{0};  // non-finite device readings (position or velocity)
-  std::atomic<long> rejected_forces{0};    // non-finite forces refused by a guard
+  std::atomic<long> rejected_readings{0};   // non-finite device readings (position or velocity)
+  std::atomic<long> rejected_forces{0};     // non-finite forces refused by a guard
+  std::atomic<long> untracked_readings{0};  // interface-ticks of fingers their source lost (let go)
   std::atomic<long> commands{0};
   std::atomic<long> stale_ticks{0};      // interface-ticks whose force came from the anchor
   std::atomic<long> physics_steps{0};    // steps taken
@@ -302,6 +310,7 @@ class ServoLoop
         Eigen::Vector3d::Zero();  // N, device frame: the workspace wall (core/workspace_bound.h)
     bool exact = true;            // the force is the step's reaction
     bool stale = false;           // the last decision's
+    bool tracked = true;          // the last reading's (DeviceReading::tracked)
     double ready_at = 0.0;        // s, wall: when the last decision's force was ready
   };
 

@@ -2,8 +2,10 @@
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/fake_device.h"
+#include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/falcon_device.h"
 #include "god_finger/devices/omni_device.h"
+#include "god_finger/devices/pose_source.h"
 #include "god_finger/devices/replay_device.h"
 #include "god_finger/devices/vendor_io.h"
 
@@ -120,6 +122,25 @@ std::unique_ptr<HapticDevice> makeReplay(const DeviceContext& context)
   return std::make_unique<ReplayDevice>(context.read_track(bag, topic));
 }
 
+std::unique_ptr<HapticDevice> makeFakeHand(const DeviceContext& context)
+{
+  return makeHandDevice(makeFakeHand(readFakeHandParams(context.params)));
+}
+
+std::unique_ptr<HapticDevice> makePoseSource(const DeviceContext& context)
+{
+  const PoseSourceParams params = readPoseSourceParams(context.params);
+  if (!context.connect_poses)
+  {
+    throw InputError(
+        "backend 'pose_source' needs a pose subscriber, which this program does not have (run it "
+        "with topology:=servo)");
+  }
+  auto feed = std::make_shared<PoseFeed>(params.fingers.size());
+  feed->connection = context.connect_poses(params, feed);
+  return makeHandDevice(makePoseSource(params, feed, context.now));
+}
+
 std::unique_ptr<HapticDevice> makeFalcon(const DeviceContext& context)
 {
   const FalconParams params = readFalconParams(context.params, context.max_force);
@@ -149,12 +170,18 @@ std::unique_ptr<HapticDevice> makeOmni(const DeviceContext& context)
 
 const std::vector<DeviceBackend>& deviceBackends()
 {
-  // replay and interactive are simulated handles: the fake device's profile.
+  // replay and interactive are simulated handles: the fake device's profile; so are the hands,
+  // whose coupling pulls proxies only.
   static const std::vector<DeviceBackend> backends = {
       // name, profile, simulated, hand_target, factory
-      {"fake", "fake", true, false, makeFake},     {"interactive", "fake", true, true, makeInteractive},
-      {"replay", "fake", true, false, makeReplay}, {"falcon", "falcon", false, false, makeFalcon},
+      {"fake", "fake", true, false, makeFake},
+      {"interactive", "fake", true, true, makeInteractive},
+      {"replay", "fake", true, false, makeReplay},
+      {"falcon", "falcon", false, false, makeFalcon},
       {"omni", "omni", false, false, makeOmni},
+      // Hands (devices/hand_device.h): one interface per finger, input only (no force rendered).
+      {"fake_hand", "fake", true, false, makeFakeHand, false},
+      {"pose_source", "fake", false, false, makePoseSource, false},
   };
   return backends;
 }

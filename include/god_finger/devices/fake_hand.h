@@ -1,0 +1,45 @@
+// The fake hand (backend fake_hand): a simulated hand tracker, a thumb and two to four fingers
+// scripted through a grasp of the mug of urdf/scenes/table_mug.urdf (close, lift, hold, open),
+// for tests and the demo. Input only: it renders no force (devices/hand_device.h); each
+// fingertip goes exactly where the script says, its proxy stops on the mug.
+//
+// The grasp, in the device frame (m), around the vertical axis through `grasp_center`: the
+// thumb on +y (90 deg), the fingers on -y spread 35 deg apart around 270 deg (clear of the
+// mug's handle on +x). Script time (s): 0 open at open_radius from the axis; 1.0 closed (the
+// fingers at grasp_radius, the thumb deeper by what balances the fingers' push along y, so the
+// mug is not shoved); 1.5 to 3.5 lift by `lift`; hold until 4.5; open back to open_radius by
+// 4.8; back down to the start by 5.8; stays there, or with `cycle` > 0 grasps again every
+// `cycle` seconds. Deterministic: a pure function of the script time.
+#pragma once
+
+#include "god_finger/core/parameter_source.h"
+#include "god_finger/core/waypoint_path.h"
+#include "god_finger/devices/hand_device.h"
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace god_finger
+{
+struct FakeHandParams
+{
+  int fingers = 2;                                                 // besides the thumb, [2, 4]
+  Eigen::Vector3d grasp_center = Eigen::Vector3d(0.0, 0.0, 0.05);  // m, device frame: the mug's axis, 5 cm up
+  double grasp_radius = 0.033;  // m from the axis: where the fingers close (the mug's wall at 0.04)
+  double open_radius = 0.07;    // m from the axis: open
+  double object_radius = 0.04;  // m: the grasped object's radius (the mug's), to balance the thumb
+  double lift = 0.1;            // m
+  double cycle = 0.0;           // s: 0 grasps once; else again every cycle s (>= 5.8, the grasp's length)
+};
+
+// fingers, grasp_center, grasp_radius, open_radius, object_radius, lift, cycle; InputError naming a bad one.
+FakeHandParams readFakeHandParams(const ParameterSource& source);
+
+// Each finger's path (thumb first), in script time; names thumb, index, middle, ring, little.
+std::vector<std::string> fakeHandFingerNames(int fingers);
+std::vector<WaypointPath> fakeHandPaths(const FakeHandParams& params);
+
+std::shared_ptr<HandSource> makeFakeHand(const FakeHandParams& params);
+}  // namespace god_finger

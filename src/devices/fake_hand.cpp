@@ -1,0 +1,145 @@
+#include "god_finger/devices/fake_hand.h"
+
+#include "god_finger/core/input_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace god_finger
+{
+namespace
+{
+constexpr double kClosed = 1.0;      // s
+constexpr double kLiftStart = 1.5;   // s
+constexpr double kLiftEnd = 3.5;     // s
+constexpr double kRelease = 4.5;     // s
+constexpr double kOpen = 4.8;        // s
+constexpr double kLowered = 5.8;     // s
+constexpr double kSpreadDeg = 35.0;  // between neighbouring fingers
+
+class FakeHand : public HandSource
+{
+ public:
+  explicit FakeHand(const FakeHandParams& params)
+      : names_(fakeHandFingerNames(params.fingers)), paths_(fakeHandPaths(params)), cycle_(params.cycle)
+  {
+  }
+  std::string name() const override
+  {
+    return "fake_hand";
+  }
+  std::vector<std::string> fingers() const override
+  {
+    return names_;
+  }
+  void setScriptStart(double time) override
+  {
+    start_ = time;
+  }
+  void read(double time, std::vector<DeviceReading>* readings) override
+  {
+    if (std::isnan(start_))
+    {
+      start_ = time;  // no script start given: the script starts at the first read
+    }
+    double t = time - start_;
+    if (cycle_ > 0.0 && t > 0.0)
+    {
+      t = std::fmod(t, cycle_);
+    }
+    const double dt = 1e-3;
+    for (std::size_t i = 0; i < paths_.size(); ++i)
+    {
+      DeviceReading& reading = (*readings)[i];
+      reading.position = paths_[i].at(t);
+      reading.velocity = (reading.position - paths_[i].at(t - dt)) / dt;
+      reading.buttons = 0;
+      reading.tracked = true;
+    }
+  }
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<WaypointPath> paths_;
+  double start_ = NAN;
+  double cycle_;
+};
+}  // namespace
+
+FakeHandParams readFakeHandParams(const ParameterSource& source)
+{
+  FakeHandParams params;
+  params.fingers = readInt(source, "fingers", params.fingers, 2, 4);
+  params.grasp_center = readVector(source, "grasp_center", params.grasp_center);
+  params.grasp_radius = readDouble(source, "grasp_radius", params.grasp_radius, 0.0, 0.5, "m", true);
+  params.open_radius = readDouble(source, "open_radius", params.open_radius, 0.0, 0.5, "m", true);
+  params.object_radius = readDouble(source, "object_radius", params.object_radius, 0.0, 0.5, "m", true);
+  params.lift = readDouble(source, "lift", params.lift, 0.0, 0.5, "m");
+  params.cycle = readDouble(source, "cycle", params.cycle, 0.0, 3600.0, "s");
+  if (params.cycle > 0.0 && params.cycle < kLowered)
+  {
+    throw InputError("parameter '" + source.fullName("cycle") + "' (" + std::to_string(params.cycle) +
+                     " s) must be 0 (grasp once) or at least the grasp's " + std::to_string(kLowered) + " s");
+  }
+  if (!(params.open_radius > params.grasp_radius))
+  {
+    throw InputError("parameter '" + source.fullName("open_radius") + "' (" + std::to_string(params.open_radius) +
+                     " m) must exceed '" + source.fullName("grasp_radius") + "' (" +
+                     std::to_string(params.grasp_radius) + " m): the hand opens wider than it closes");
+  }
+  return params;
+}
+
+std::vector<std::string> fakeHandFingerNames(int fingers)
+{
+  static const char* const kNames[] = {"thumb", "index", "middle", "ring", "little"};
+  std::vector<std::string> names;
+  for (int i = 0; i <= fingers && i < 5; ++i)
+  {
+    names.push_back(kNames[i]);
+  }
+  return names;
+}
+
+std::vector<WaypointPath> fakeHandPaths(const FakeHandParams& params)
+{
+  const double pi = std::acos(-1.0);
+  const double press = params.object_radius - params.grasp_radius;  // a finger's depth into the wall
+  std::vector<double> angles;                                       // the fingers', rad
+  double push_y = 0.0;                                              // the fingers' push along -y, in depths
+  for (int k = 0; k < params.fingers; ++k)
+  {
+    const double degrees = 270.0 + kSpreadDeg * (k - 0.5 * (params.fingers - 1));
+    angles.push_back(degrees * pi / 180.0);
+    push_y += -std::sin(angles.back());
+  }
+  // The thumb presses as deep as balances the fingers along y.
+  const double thumb_closed = std::max(0.0, params.object_radius - press * push_y);
+  std::vector<WaypointPath> paths;
+  const Eigen::Vector3d up(0.0, 0.0, params.lift);
+  auto path = [&](double angle, double closed)
+  {
+    const Eigen::Vector3d out(std::cos(angle), std::sin(angle), 0.0);
+    const Eigen::Vector3d open = params.grasp_center + params.open_radius * out;
+    const Eigen::Vector3d shut = params.grasp_center + closed * out;
+    return WaypointPath({{0.0, open},
+                         {kClosed, shut},
+                         {kLiftStart, shut},
+                         {kLiftEnd, shut + up},
+                         {kRelease, shut + up},
+                         {kOpen, open + up},
+                         {kLowered, open}});
+  };
+  paths.push_back(path(0.5 * pi, thumb_closed));
+  for (double angle : angles)
+  {
+    paths.push_back(path(angle, params.grasp_radius));
+  }
+  return paths;
+}
+
+std::shared_ptr<HandSource> makeFakeHand(const FakeHandParams& params)
+{
+  return std::make_shared<FakeHand>(params);
+}
+}  // namespace god_finger

@@ -1,0 +1,120 @@
+#include "god_finger/devices/pose_source.h"
+
+#include "god_finger/core/input_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace god_finger
+{
+namespace
+{
+class PoseSource : public HandSource
+{
+ public:
+  PoseSource(const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed, std::function<double()> now)
+      : params_(params), feed_(std::move(feed)), now_(std::move(now)), last_(params.fingers.size(), params.rest)
+  {
+  }
+  std::string name() const override
+  {
+    return "pose_source";
+  }
+  std::vector<std::string> fingers() const override
+  {
+    return params_.fingers;
+  }
+  void read(double /*time*/, std::vector<DeviceReading>* readings) override
+  {
+    const std::vector<FingerPose>& poses = feed_->read();
+    const double now = now_();
+    for (std::size_t i = 0; i < last_.size(); ++i)
+    {
+      DeviceReading& reading = (*readings)[i];
+      const FingerPose& pose = poses[i];
+      reading.tracked = pose.stamp >= 0.0 && now - pose.stamp <= params_.pose_timeout;
+      if (reading.tracked)
+      {
+        last_[i] = pose.position;
+      }
+      reading.position = last_[i];
+      reading.velocity.setZero();  // the loop estimates it from the positions
+      reading.buttons = 0;
+    }
+  }
+
+ private:
+  PoseSourceParams params_;
+  std::shared_ptr<PoseFeed> feed_;
+  std::function<double()> now_;
+  std::vector<Eigen::Vector3d> last_;  // m: each finger's last tracked position
+};
+}  // namespace
+
+PoseSourceParams readPoseSourceParams(const ParameterSource& source)
+{
+  PoseSourceParams params;
+  params.fingers = readStringList(source, "fingers", params.fingers);
+  if (params.fingers.empty() || params.fingers.size() > 10)
+  {
+    throw InputError("parameter '" + source.fullName("fingers") + "' must name 1 to 10 fingers (got " +
+                     std::to_string(params.fingers.size()) + ")");
+  }
+  for (std::size_t i = 0; i < params.fingers.size(); ++i)
+  {
+    const std::string& name = params.fingers[i];
+    if (name.empty() || name.find_first_of("/ ") != std::string::npos ||
+        std::count(params.fingers.begin(), params.fingers.begin() + i, name) > 0)
+    {
+      throw InputError("parameter '" + source.fullName("fingers") + "': finger " + std::to_string(i) + " '" + name +
+                       "' must be a unique non-empty name without '/' or spaces");
+    }
+  }
+  params.topic = readString(source, "topic", params.topic);
+  if (params.topic.empty())
+  {
+    throw InputError("parameter '" + source.fullName("topic") + "' must name a geometry_msgs/PoseArray topic");
+  }
+  params.frames = readStringList(source, "frames", params.frames);
+  if (!params.frames.empty() && params.frames.size() != params.fingers.size())
+  {
+    throw InputError("parameter '" + source.fullName("frames") + "' must list one TF frame per finger (" +
+                     std::to_string(params.fingers.size()) + "), not " + std::to_string(params.frames.size()));
+  }
+  params.reference_frame = readString(source, "reference_frame", params.reference_frame);
+  params.poll_rate = readDouble(source, "poll_rate", params.poll_rate, 0.0, 10000.0, "Hz", true);
+  params.pose_timeout = readDouble(source, "pose_timeout", params.pose_timeout, 0.0, 10.0, "s", true);
+  params.rest = readVector(source, "rest", params.rest);
+  return params;
+}
+
+void PoseFeed::write(const std::vector<FingerPose>& poses)
+{
+  for (std::size_t i = 0; i < latest_.size() && i < poses.size(); ++i)
+  {
+    if (poses[i].position.allFinite() && std::isfinite(poses[i].stamp))
+    {
+      latest_[i] = poses[i];
+    }
+  }
+  box_.back() = latest_;  // same length: no allocation
+  box_.publish();
+}
+
+const std::vector<FingerPose>& PoseFeed::read()
+{
+  box_.take();
+  return box_.front();
+}
+
+std::shared_ptr<HandSource> makePoseSource(const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed,
+                                           std::function<double()> now)
+{
+  if (!feed || feed->fingers() != params.fingers.size())
+  {
+    throw InputError("backend 'pose_source' needs a pose feed of " + std::to_string(params.fingers.size()) +
+                     " fingers, which this program does not give it");
+  }
+  return std::make_shared<PoseSource>(params, std::move(feed), std::move(now));
+}
+}  // namespace god_finger

@@ -1,0 +1,100 @@
+// Hands in the device registry: fake_hand and pose_source are input only (their rows say they
+// render no force), carry one device per finger, read their parameters with clear errors;
+// a pose source without a pose subscriber (no ROS) is refused.
+#include "god_finger/core/input_error.h"
+#include "god_finger/devices/device_registry.h"
+#include "god_finger/devices/fake_hand.h"
+
+#include <gtest/gtest.h>
+
+namespace god_finger
+{
+namespace
+{
+constexpr double kMaxForce = 20.0;  // N: the fake profile's
+
+std::string errorOf(const std::string& backend, const MapParameterSource& params, bool with_ros = false)
+{
+  DeviceContext context(params, kMaxForce);
+  if (with_ros)
+  {
+    context.connect_poses = [](const PoseSourceParams&, std::shared_ptr<PoseFeed>) { return std::shared_ptr<void>(); };
+    context.now = []() { return 0.0; };
+  }
+  try
+  {
+    makeDevice(findDeviceBackend(backend, "backend"), context);
+  }
+  catch (const InputError& error)
+  {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(HandDevices, AreInputOnlyAndCarryOneDevicePerFinger)
+{
+  EXPECT_FALSE(findDeviceBackend("fake_hand", "backend").renders_force);
+  EXPECT_FALSE(findDeviceBackend("pose_source", "backend").renders_force);
+  EXPECT_TRUE(findDeviceBackend("fake", "backend").renders_force);
+  EXPECT_TRUE(findDeviceBackend("fake_hand", "backend").simulated);
+  EXPECT_FALSE(findDeviceBackend("pose_source", "backend").simulated);
+
+  MapParameterSource params("/hand/");
+  params.set("fingers", ParameterValue::ofInteger(3));
+  DeviceContext context(params, kMaxForce);
+  auto hand = makeDevice(findDeviceBackend("fake_hand", "backend"), context);
+  std::vector<DeviceFinger> fingers = hand->fingers();
+  ASSERT_EQ(fingers.size(), 4u);
+  EXPECT_EQ(fingers[0].name, "thumb");
+  EXPECT_EQ(fingers[3].name, "ring");
+  EXPECT_THROW(hand->update(0.0, Eigen::Vector3d::Zero()), DeviceError);  // the loop runs its fingers
+  for (DeviceFinger& finger : fingers)
+  {
+    finger.device->start();
+  }
+  // Script time 0: open, 7 cm from the mug's axis, 5 cm up; the thumb on +y.
+  hand->setScriptStart(0.0);
+  const DeviceReading thumb = fingers[0].device->update(0.0, Eigen::Vector3d(5, 5, 5));
+  EXPECT_NEAR(thumb.position.y(), 0.07, 1e-12);
+  EXPECT_NEAR(thumb.position.z(), 0.05, 1e-12);
+  EXPECT_TRUE(thumb.tracked);
+  // Closed at 1 s: the fingers 3.3 cm from the axis.
+  const DeviceReading index = fingers[1].device->update(1.0, Eigen::Vector3d::Zero());
+  EXPECT_NEAR(index.position.head<2>().norm(), 0.033, 1e-12);
+  EXPECT_LT(index.position.y(), 0.0);
+}
+
+TEST(HandDevices, CheckTheirParameters)
+{
+  MapParameterSource five("/hand/");
+  five.set("fingers", ParameterValue::ofInteger(5));
+  EXPECT_NE(errorOf("fake_hand", five).find("/hand/fingers"), std::string::npos) << errorOf("fake_hand", five);
+  MapParameterSource shut("/hand/");
+  shut.set("open_radius", ParameterValue::of(0.02));
+  EXPECT_EQ(errorOf("fake_hand", shut),
+            "parameter '/hand/open_radius' (0.020000 m) must exceed '/hand/grasp_radius' (0.033000 m): the hand "
+            "opens wider than it closes");
+  MapParameterSource cycle("/hand/");
+  cycle.set("cycle", ParameterValue::of(2.0));
+  EXPECT_NE(errorOf("fake_hand", cycle).find("/hand/cycle"), std::string::npos);
+
+  MapParameterSource none("/hand/");
+  EXPECT_EQ(errorOf("pose_source", none),
+            "backend 'pose_source' needs a pose subscriber, which this program does not have (run it with "
+            "topology:=servo)");
+  EXPECT_EQ(errorOf("pose_source", none, true), "");
+  MapParameterSource twice("/hand/");
+  twice.set("fingers", ParameterValue::of(std::vector<std::string>{"thumb", "thumb"}));
+  EXPECT_EQ(errorOf("pose_source", twice, true),
+            "parameter '/hand/fingers': finger 1 'thumb' must be a unique non-empty name without '/' or spaces");
+  MapParameterSource frames("/hand/");
+  frames.set("frames", ParameterValue::of(std::vector<std::string>{"thumb_tip"}));
+  EXPECT_EQ(errorOf("pose_source", frames, true),
+            "parameter '/hand/frames' must list one TF frame per finger (3), not 1");
+  MapParameterSource timeout("/hand/");
+  timeout.set("pose_timeout", ParameterValue::of(0.0));
+  EXPECT_NE(errorOf("pose_source", timeout, true).find("/hand/pose_timeout"), std::string::npos);
+}
+}  // namespace
+}  // namespace god_finger

@@ -1,0 +1,207 @@
+// Hands in the servo loop, without ROS, on simulated time: a pose source's fingers are run as
+// one interface each in one tick; a finger whose pose stream is lost (non-finite poses, fewer
+// poses, stale stamps) lets go after pose_timeout, its samples say so, and the others go on
+// pressing; the fake hand grasps and lifts the mug.
+#include "god_finger/devices/fake_hand.h"
+#include "god_finger/devices/hand_device.h"
+#include "god_finger/devices/pose_source.h"
+#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/runtime/servo_loop.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace god_finger
+{
+namespace
+{
+const std::string kTable = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/table_sphere.urdf";
+const std::string kMug = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/table_mug.urdf";
+constexpr double kTimeout = 0.05;  // s
+
+// Three fingertips pressing the table top (z = 0) 5 mm deep, far from the ball.
+const Eigen::Vector3d kPressed[3] = {{0.15, 0.1, -0.005}, {0.2, 0.1, -0.005}, {0.25, 0.1, -0.005}};
+
+std::vector<ServoInterface> fingersOf(std::unique_ptr<HapticDevice> hand)
+{
+  std::vector<ServoInterface> interfaces;
+  for (DeviceFinger& finger : hand->fingers())
+  {
+    ServoInterface interface;
+    interface.name = "hand/" + finger.name;
+    interface.device = std::move(finger.device);
+    interfaces.push_back(std::move(interface));
+  }
+  return interfaces;
+}
+
+std::unique_ptr<ServoLoop> makeLoop(const std::string& scene, std::vector<ServoInterface> interfaces)
+{
+  ServoLoopParams params;
+  params.simulated_time = true;
+  params.real_time_factor = 0.0;
+  auto loop = std::make_unique<ServoLoop>(std::make_unique<GodFingerWorld>(loadUrdfScene(scene), WorldParams()),
+                                          std::move(interfaces), params);
+  loop->prepare();
+  return loop;
+}
+
+struct PoseHand
+{
+  double now = 0.0;  // s: the pose source's clock, the loop's time here
+  std::shared_ptr<PoseFeed> feed;
+  std::unique_ptr<ServoLoop> loop;
+  std::vector<ServoSample> last;  // per interface, the newest sample
+
+  PoseHand()
+  {
+    PoseSourceParams params;
+    params.fingers = {"thumb", "index", "middle"};
+    params.pose_timeout = kTimeout;
+    feed = std::make_shared<PoseFeed>(3);
+    auto source = makePoseSource(params, feed, [this]() { return now; });
+    loop = makeLoop(kTable, fingersOf(makeHandDevice(source)));
+    last.resize(3);
+  }
+  // Runs ticks until `until` (s), the tracker writing write(t) before each.
+  template <class Write>
+  void runUntil(double until, Write write)
+  {
+    const double dt = loop->period();
+    while (now + 0.5 * dt < until)
+    {
+      now += dt;
+      write(now);
+      loop->tick(now);
+      ServoSample sample;
+      while (loop->samples().tryPop(&sample))
+      {
+        last[sample.interface] = sample;
+      }
+    }
+  }
+  void writeAll(double t, int fingers, int nan_finger = -1, double age = 0.0)
+  {
+    std::vector<FingerPose> poses(fingers);
+    for (int i = 0; i < fingers; ++i)
+    {
+      poses[i].position = i == nan_finger ? Eigen::Vector3d::Constant(NAN) : kPressed[i];
+      poses[i].stamp = t - age;
+    }
+    feed->write(poses);
+  }
+};
+
+TEST(HandLoop, RunsEveryFingerOfAHandAsItsOwnInterface)
+{
+  PoseHand hand;
+  ASSERT_EQ(hand.loop->interfaces().size(), 3u);
+  EXPECT_EQ(hand.loop->interfaces()[2].name, "hand/middle");
+  // No pose yet: every finger untracked, at the source's rest, pressing nothing.
+  hand.runUntil(0.01, [](double) {});
+  for (const ServoSample& sample : hand.last)
+  {
+    EXPECT_FALSE(sample.tracked);
+    EXPECT_LT(sample.user_force.norm(), 1e-9);
+  }
+  hand.runUntil(0.5, [&hand](double t) { hand.writeAll(t, 3); });
+  for (int i = 0; i < 3; ++i)
+  {
+    EXPECT_TRUE(hand.last[i].tracked) << i;
+    EXPECT_NEAR(hand.last[i].interface_position.x(), kPressed[i].x(), 1e-12) << i;
+    // 5 mm into the table at the default coupling's stiffness: the hand is pushed up.
+    EXPECT_GT(hand.last[i].user_force.z(), 1.0) << i;
+  }
+}
+
+// The tracker loses one finger: non-finite poses (the same for fewer poses in the array).
+void expectOnlyMiddleLetsGo(bool fewer_poses)
+{
+  PoseHand hand;
+  hand.runUntil(0.5, [&hand](double t) { hand.writeAll(t, 3); });
+  ASSERT_GT(hand.last[2].user_force.z(), 1.0);
+  const double lost_at = hand.now;
+  auto lose = [&hand, fewer_poses](double t) { fewer_poses ? hand.writeAll(t, 2) : hand.writeAll(t, 3, 2); };
+  // Within its timeout the finger still presses (a late pose is not yet a lost one).
+  hand.runUntil(lost_at + 0.8 * kTimeout, lose);
+  EXPECT_TRUE(hand.last[2].tracked);
+  EXPECT_GT(hand.last[2].user_force.z(), 1.0);
+  hand.runUntil(lost_at + 0.3, lose);
+  EXPECT_FALSE(hand.last[2].tracked);
+  EXPECT_LT(hand.last[2].user_force.norm(), 0.01);  // let go: no coupling force
+  EXPECT_GT(hand.loop->counters().untracked_readings.load(), 0);
+  for (int i = 0; i < 2; ++i)  // the others go on
+  {
+    EXPECT_TRUE(hand.last[i].tracked) << i;
+    EXPECT_GT(hand.last[i].user_force.z(), 1.0) << i;
+  }
+  // Seen again: it presses again.
+  hand.runUntil(lost_at + 0.6, [&hand](double t) { hand.writeAll(t, 3); });
+  EXPECT_TRUE(hand.last[2].tracked);
+  EXPECT_GT(hand.last[2].user_force.z(), 1.0);
+}
+
+TEST(HandLoop, AFingerWhosePosesTurnNonFiniteLetsGoTheOthersGoOn)
+{
+  expectOnlyMiddleLetsGo(false);
+}
+
+TEST(HandLoop, AFingerMissingFromTheArrayLetsGoTheOthersGoOn)
+{
+  expectOnlyMiddleLetsGo(true);
+}
+
+TEST(HandLoop, StaleStampsLetEveryFingerGo)
+{
+  PoseHand hand;
+  hand.runUntil(0.5, [&hand](double t) { hand.writeAll(t, 3); });
+  // The stream goes on, but its stamps are 2 timeouts old: late poses.
+  hand.runUntil(0.8, [&hand](double t) { hand.writeAll(t, 3, -1, 2.0 * kTimeout); });
+  for (const ServoSample& sample : hand.last)
+  {
+    EXPECT_FALSE(sample.tracked);
+    EXPECT_LT(sample.user_force.norm(), 0.01);
+  }
+}
+
+// The mug's height (m, its origin) at 4 s: closed, lifted by 10 cm at 3.5 s, held.
+double mugHeightAfterLift(int fingers)
+{
+  FakeHandParams params;
+  params.fingers = fingers;
+  auto source = makeFakeHand(params);
+  source->setScriptStart(0.0);
+  auto loop = makeLoop(kMug, fingersOf(makeHandDevice(source)));
+  EXPECT_EQ(loop->interfaces().size(), static_cast<std::size_t>(fingers + 1));
+  double mug_z = 0.0;
+  WorldSnapshot snapshot;
+  ServoSample sample;
+  for (long k = 1; k <= 4000; ++k)  // 4 s: closed, lifted by 10 cm at 3.5 s, held
+  {
+    loop->tick(k * loop->period());
+    while (loop->samples().tryPop(&sample))
+    {
+    }
+    while (loop->snapshots().tryPop(&snapshot))
+    {
+      mug_z = -1.0;  // the highest body: the mug (the table's is at -0.02)
+      for (const BodyState& body : snapshot.bodies)
+      {
+        mug_z = std::max(mug_z, body.pose.translation().z());
+      }
+    }
+  }
+  return mug_z;
+}
+
+TEST(HandLoop, FakeHandGraspsAndLiftsTheMug)
+{
+  // The mug's origin starts 0.5 mm above the table: carried up ~10 cm by a thumb and 2 or 4 fingers.
+  EXPECT_GT(mugHeightAfterLift(2), 0.08);
+  EXPECT_GT(mugHeightAfterLift(4), 0.08);
+}
+}  // namespace
+}  // namespace god_finger
