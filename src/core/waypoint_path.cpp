@@ -1,5 +1,7 @@
 #include "god_finger/core/waypoint_path.h"
 
+#include <algorithm>
+
 #include "god_finger/core/input_error.h"
 
 #include <cmath>
@@ -60,5 +62,10 @@ Eigen::Vector3d WaypointPath::at(double time) const
 double WaypointPath::endTime() const
 {
   return waypoints_.back().time;
+}
+double minimumJerkRamp(double t, double start, double end)
+{
+  const double u = std::clamp((t - start) / (end - start), 0.0, 1.0);
+  return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
 }
 }  // namespace god_finger

@@ -1,6 +1,7 @@
 #include "god_finger/physics/grip_task.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <Eigen/Geometry>
@@ -28,14 +29,6 @@ constexpr double kLower = kGripLift + 0.002;
 constexpr double kOpen = 0.04;        // m, each finger's distance from the bar's mid-plane, open
 constexpr double kGripHeight = 0.02;  // m
 
-// 0 before start, 1 after end, a minimum-jerk profile between (10 u^3 - 15 u^4 + 6 u^5): a
-// hand's reach starts and stops with zero velocity and acceleration.
-double ramp(double t, double start, double end)
-{
-  const double u = std::clamp((t - start) / (end - start), 0.0, 1.0);
-  return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
-}
-
 // Where the hand's grip centre is (without tremor) and how closed it is (0 open, 1 closed).
 struct HandPose
 {
@@ -49,14 +42,14 @@ HandPose handAt(double t, bool carry)
   hand.centre = Eigen::Vector3d(kGripOffset, 0.0, kGripHeight);
   if (!carry)
   {
-    hand.closed = ramp(t, 0.0, kClosed);
-    hand.centre.z() += kGripLift * ramp(t, kLiftStart, kHoldLiftEnd);
+    hand.closed = minimumJerkRamp(t, 0.0, kClosed);
+    hand.centre.z() += kGripLift * minimumJerkRamp(t, kLiftStart, kHoldLiftEnd);
     return hand;
   }
-  hand.closed = ramp(t, 0.0, kClosed) * (1.0 - ramp(t, kRelease, kOpened));
-  hand.centre.z() += kGripLift * ramp(t, kLiftStart, kCarryLiftEnd) - kLower * ramp(t, kCarryEnd, kLowered) +
-                     0.05 * ramp(t, kOpened, kRisen);
-  hand.centre.x() -= kCarryDistance * ramp(t, kCarryLiftEnd, kCarryEnd);
+  hand.closed = minimumJerkRamp(t, 0.0, kClosed) * (1.0 - minimumJerkRamp(t, kRelease, kOpened));
+  hand.centre.z() += kGripLift * minimumJerkRamp(t, kLiftStart, kCarryLiftEnd) -
+                     kLower * minimumJerkRamp(t, kCarryEnd, kLowered) + 0.05 * minimumJerkRamp(t, kOpened, kRisen);
+  hand.centre.x() -= kCarryDistance * minimumJerkRamp(t, kCarryLiftEnd, kCarryEnd);
   return hand;
 }
 }  // namespace
@@ -65,25 +58,10 @@ SceneDescription gripBarScene()
 {
   SceneDescription scene;
   scene.name = "grip_bar";
-  BodyDescription table;
-  table.name = "table";
-  table.is_static = true;
-  table.geometry.kind = GeometryKind::kBox;
-  table.geometry.size = Eigen::Vector3d(0.6, 0.6, 0.04);
-  table.pose.translation() = Eigen::Vector3d(0, 0, -0.02);
-  BodyDescription bar;
-  bar.name = "bar";
-  bar.mass = kGripBarMass;
-  bar.geometry.kind = GeometryKind::kBox;
-  const Eigen::Vector3d size(0.2, kGripBarWidth, 0.04);
-  bar.geometry.size = size;
-  bar.pose.translation() = Eigen::Vector3d(0, 0, 0.02);
+  BodyDescription bar =
+      boxBody("bar", Eigen::Vector3d(0.2, kGripBarWidth, 0.04), kGripBarMass, Eigen::Vector3d(0, 0, 0.02));
   bar.material.friction = kGripBarFriction;
-  const Eigen::Vector3d squared = size.cwiseProduct(size);
-  bar.inertia = (kGripBarMass / 12.0 *
-                 Eigen::Vector3d(squared.y() + squared.z(), squared.x() + squared.z(), squared.x() + squared.y()))
-                    .asDiagonal();
-  scene.bodies = {table, bar};
+  scene.bodies = {boxBody("table", Eigen::Vector3d(0.6, 0.6, 0.04), 0.0, Eigen::Vector3d(0, 0, -0.02)), bar};
   return scene;
 }
 

@@ -1,6 +1,7 @@
 #include "god_finger/physics/sheet_push_task.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <Eigen/Geometry>
@@ -19,36 +20,17 @@ constexpr double kThickness = 0.002;
 const Eigen::Vector2d kSheetSize(0.2, 0.15);
 constexpr double kInset = 0.02;  // m, where the finger lands inside the corner
 
-// 0 before start, 1 after end, minimum jerk between.
-double ramp(double t, double start, double end)
-{
-  const double u = std::clamp((t - start) / (end - start), 0.0, 1.0);
-  return u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
-}
 }  // namespace
 
 SceneDescription sheetScene()
 {
   SceneDescription scene;
   scene.name = "sheet";
-  BodyDescription table;
-  table.name = "table";
-  table.is_static = true;
-  table.geometry.kind = GeometryKind::kBox;
-  table.geometry.size = Eigen::Vector3d(0.8, 0.6, 0.04);
-  table.pose.translation() = Eigen::Vector3d(0, 0, -0.02);
+  BodyDescription table = boxBody("table", Eigen::Vector3d(0.8, 0.6, 0.04), 0.0, Eigen::Vector3d(0, 0, -0.02));
   table.material.friction = 0.3;
-  BodyDescription sheet;
-  sheet.name = "sheet";
-  sheet.mass = 0.02;
-  sheet.geometry.kind = GeometryKind::kBox;
-  sheet.geometry.size = Eigen::Vector3d(kSheetSize.x(), kSheetSize.y(), kThickness);
-  sheet.pose.translation() = Eigen::Vector3d(0, 0, 0.5 * kThickness);
+  BodyDescription sheet = boxBody("sheet", Eigen::Vector3d(kSheetSize.x(), kSheetSize.y(), kThickness), 0.02,
+                                  Eigen::Vector3d(0, 0, 0.5 * kThickness));
   sheet.material.friction = 0.8;
-  const Eigen::Vector3d squared = sheet.geometry.size.cwiseProduct(sheet.geometry.size);
-  sheet.inertia = (sheet.mass / 12.0 *
-                   Eigen::Vector3d(squared.y() + squared.z(), squared.x() + squared.z(), squared.x() + squared.y()))
-                      .asDiagonal();
   scene.bodies = {table, sheet};
   return scene;
 }
@@ -74,8 +56,8 @@ SheetPushResult runSheetPush(const SheetPushOptions& options)
   auto target = [&](double t) -> Eigen::Vector3d
   {
     const double press = options.press * (fluctuationAt(traits, t) + extra);
-    const double down = (above + press) * ramp(t, 0.0, kLanded);
-    return Eigen::Vector3d(corner.x() + kSheetDrag * ramp(t, kDragStart, kDragEnd), corner.y(),
+    const double down = (above + press) * minimumJerkRamp(t, 0.0, kLanded);
+    return Eigen::Vector3d(corner.x() + kSheetDrag * minimumJerkRamp(t, kDragStart, kDragEnd), corner.y(),
                            corner.z() + above - down) +
            tremorAt(traits, t, 0);
   };

@@ -15,6 +15,11 @@ struct Waypoint
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m
 };
 
+// A hand's reach between two times: 0 before `start`, 1 after `end`, between them the
+// minimum-jerk profile 10 u^3 - 15 u^4 + 6 u^5 of u = (t - start) / (end - start) (it starts and
+// stops with zero velocity and acceleration). Real-time safe.
+double minimumJerkRamp(double t, double start, double end);
+
 class WaypointPath
 {
  public:

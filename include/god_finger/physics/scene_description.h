@@ -68,4 +68,8 @@ struct SceneDescription
     return -1;
   }
 };
+// A solid box body: `size` (m, full edges), `mass` (kg) spread uniformly (its inertia at the
+// centre of mass), its link frame at `centre` (m, world), axis-aligned. With mass 0: static.
+BodyDescription boxBody(const std::string& name, const Eigen::Vector3d& size, double mass,
+                        const Eigen::Vector3d& centre);
 }  // namespace god_finger
