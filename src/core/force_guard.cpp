@@ -9,6 +9,11 @@
 
 namespace god_finger
 {
+double softStartScale(double since, double soft_start)
+{
+  return soft_start > 0.0 ? std::clamp(since / soft_start, 0.0, 1.0) : 1.0;
+}
+
 const ParameterTable<ForceGuardParams>& forceGuardParameterTable()
 {
   using P = ForceGuardParams;
@@ -109,8 +114,7 @@ Eigen::Vector3d ForceGuard::output(double time)
     const double late = time - last_command_time_ - params_.command_timeout;
     const double watchdog = late <= 0.0 ? 1.0 : std::max(0.0, 1.0 - late / params_.ramp_time);
     // 3. Soft start.
-    const double soft =
-        params_.soft_start > 0.0 ? std::clamp((time - start_time_) / params_.soft_start, 0.0, 1.0) : 1.0;
+    const double soft = softStartScale(time - start_time_, params_.soft_start);
     target = (watchdog * soft) * last_force_;
   }
   // 4. Continuous budget.

@@ -1,6 +1,7 @@
 #include "god_finger/devices/fake_hand.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/parameter_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,26 +67,44 @@ class FakeHand : public HandSource
 };
 }  // namespace
 
+const ParameterTable<FakeHandParams>& fakeHandParameterTable()
+{
+  using P = FakeHandParams;
+  static const ParameterTable<P> table = {
+      integerRow<P>("fingers", closed(2, 4), "fingers besides the thumb (index, middle, ring, little)",
+                    [](P& p) -> int& { return p.fingers; }),
+      realRow<P>("grasp_radius", "m", openClosed(0.0, 0.5), "the fingers' distance from the mug's axis, closed",
+                 [](P& p) -> double& { return p.grasp_radius; }),
+      realRow<P>("open_radius", "m", openClosed(0.0, 0.5),
+                 "the fingers' distance from the mug's axis, open (> grasp_radius)",
+                 [](P& p) -> double& { return p.open_radius; }),
+      realRow<P>("object_radius", "m", openClosed(0.0, 0.5),
+                 "the grasped object's radius, to balance the thumb against the fingers",
+                 [](P& p) -> double& { return p.object_radius; }),
+      realRow<P>("lift", "m", closed(0.0, 0.5), "how high the closed hand lifts",
+                 [](P& p) -> double& { return p.lift; }),
+      realRow<P>("cycle", "s", closed(0.0, 3600.0),
+                 "0 grasps once; else grasps again every cycle s (>= 5.8, the grasp's length)",
+                 [](P& p) -> double& { return p.cycle; }),
+  };
+  return table;
+}
+
 FakeHandParams readFakeHandParams(const ParameterSource& source)
 {
   FakeHandParams params;
-  params.fingers = readInt(source, "fingers", params.fingers, 2, 4);
+  readRows(source, fakeHandParameterTable(), &params);
   params.grasp_center = readVector(source, "grasp_center", params.grasp_center);
-  params.grasp_radius = readDouble(source, "grasp_radius", params.grasp_radius, 0.0, 0.5, "m", true);
-  params.open_radius = readDouble(source, "open_radius", params.open_radius, 0.0, 0.5, "m", true);
-  params.object_radius = readDouble(source, "object_radius", params.object_radius, 0.0, 0.5, "m", true);
-  params.lift = readDouble(source, "lift", params.lift, 0.0, 0.5, "m");
-  params.cycle = readDouble(source, "cycle", params.cycle, 0.0, 3600.0, "s");
   if (params.cycle > 0.0 && params.cycle < kLowered)
   {
-    throw InputError("parameter '" + source.fullName("cycle") + "' (" + std::to_string(params.cycle) +
-                     " s) must be 0 (grasp once) or at least the grasp's " + std::to_string(kLowered) + " s");
+    throw InputError("parameter '" + source.fullName("cycle") + "' (" + formatNumber(params.cycle) +
+                     " s) must be 0 (grasp once) or at least the grasp's " + formatNumber(kLowered) + " s");
   }
   if (!(params.open_radius > params.grasp_radius))
   {
-    throw InputError("parameter '" + source.fullName("open_radius") + "' (" + std::to_string(params.open_radius) +
-                     " m) must exceed '" + source.fullName("grasp_radius") + "' (" +
-                     std::to_string(params.grasp_radius) + " m): the hand opens wider than it closes");
+    throw InputError("parameter '" + source.fullName("open_radius") + "' (" + formatNumber(params.open_radius) +
+                     " m) must exceed '" + source.fullName("grasp_radius") + "' (" + formatNumber(params.grasp_radius) +
+                     " m): the hand opens wider than it closes");
   }
   return params;
 }

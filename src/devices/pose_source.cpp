@@ -1,6 +1,7 @@
 #include "god_finger/devices/pose_source.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/parameter_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +52,18 @@ class PoseSource : public HandSource
 };
 }  // namespace
 
+const ParameterTable<PoseSourceParams>& poseSourceParameterTable()
+{
+  using P = PoseSourceParams;
+  static const ParameterTable<P> table = {
+      realRow<P>("poll_rate", "Hz", openClosed(0.0, 10000.0), "how often TF frames are looked up",
+                 [](P& p) -> double& { return p.poll_rate; }),
+      realRow<P>("pose_timeout", "s", openClosed(0.0, 10.0), "a finger whose newest pose is older lets go",
+                 [](P& p) -> double& { return p.pose_timeout; }),
+  };
+  return table;
+}
+
 PoseSourceParams readPoseSourceParams(const ParameterSource& source)
 {
   PoseSourceParams params;
@@ -82,8 +95,7 @@ PoseSourceParams readPoseSourceParams(const ParameterSource& source)
                      std::to_string(params.fingers.size()) + "), not " + std::to_string(params.frames.size()));
   }
   params.reference_frame = readString(source, "reference_frame", params.reference_frame);
-  params.poll_rate = readDouble(source, "poll_rate", params.poll_rate, 0.0, 10000.0, "Hz", true);
-  params.pose_timeout = readDouble(source, "pose_timeout", params.pose_timeout, 0.0, 10.0, "s", true);
+  readRows(source, poseSourceParameterTable(), &params);
   params.rest = readVector(source, "rest", params.rest);
   return params;
 }

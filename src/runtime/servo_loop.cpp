@@ -124,6 +124,7 @@ void ServoLoop::prepare()
   latest_.proxies.resize(n);
   frame_.targets.resize(n);
   frame_.velocities.resize(n, Eigen::Vector3d::Zero());
+  frame_.let_go.resize(n, 0);
   for (std::size_t i = 0; i < n; ++i)
   {
     ServoInterface& interface = interfaces_[i];
@@ -306,6 +307,7 @@ void ServoLoop::readDevices(double time)
     // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
     // non-finite device state): its buttons are not pressed, the world gets the last good
     // target, and the samples (device/state) carry the last good reading.
+    const bool was_tracked = render.tracked;
     render.tracked = reading.tracked;
     if (!reading.tracked)
     {
@@ -319,7 +321,15 @@ void ServoLoop::readDevices(double time)
     else if (target.allFinite() && reading.velocity.allFinite())
     {
       readings_[i] = reading;
-      render.target = target;
+      if (!was_tracked)
+      {
+        // Tracked again: the target ramps from where the finger let go (its proxy) to the
+        // tracked pose over the soft start, so the proxy gets no step of coupling force.
+        render.regrip_from = render.target;
+        render.regrip_at = time;
+      }
+      const double s = softStartScale(time - render.regrip_at, guards_[i].params().soft_start);
+      render.target = render.regrip_from + s * (target - render.regrip_from);
       render.wall_force = bound.wall_force;
       const std::uint32_t pressed = reading.buttons & ~buttons_[i];
       buttons_[i] = reading.buttons;
@@ -335,6 +345,7 @@ void ServoLoop::readDevices(double time)
     render.velocity = (render.target - render.previous_target) / dt;
     frame_.targets[i] = render.target;  // always finite
     frame_.velocities[i] = render.velocity;
+    frame_.let_go[i] = reading.tracked ? 0 : 1;
   }
   if (toggle_stop)  // button 2: stop every device's force, or resume it (soft start)
   {
@@ -360,13 +371,14 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
   counters_.skipped_targets += consecutive ? 0 : frame.tick - last_frame_tick_ - 1;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
-    if (consecutive)
+    if (consecutive && !frame.let_go[i])
     {
       world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i]);
     }
     else
     {
-      // The skipped ticks' motion is not one step's: the damping takes the device's velocity.
+      // The skipped ticks' motion is not one step's: the damping takes the device's velocity
+      // (a let-go finger's: zero).
       world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i], frame.velocities[i]);
     }
   }

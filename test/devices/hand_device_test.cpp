@@ -4,6 +4,7 @@
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/devices/fake_hand.h"
+#include "god_finger/devices/pose_source.h"
 
 #include <gtest/gtest.h>
 
@@ -69,15 +70,22 @@ TEST(HandDevices, CheckTheirParameters)
 {
   MapParameterSource five("/hand/");
   five.set("fingers", ParameterValue::ofInteger(5));
-  EXPECT_NE(errorOf("fake_hand", five).find("/hand/fingers"), std::string::npos) << errorOf("fake_hand", five);
+  EXPECT_EQ(errorOf("fake_hand", five), "parameter '/hand/fingers' = 5 is out of range [2, 4] (count)");
+  MapParameterSource low("/hand/");
+  low.set("lift", ParameterValue::of(-0.01));
+  EXPECT_EQ(errorOf("fake_hand", low), "parameter '/hand/lift' = -0.01 is out of range [0, 0.5] (m)");
+  MapParameterSource text("/hand/");
+  text.set("grasp_radius", ParameterValue::of(std::string("wide")));
+  EXPECT_EQ(errorOf("fake_hand", text), "parameter '/hand/grasp_radius' must be a number (m)");
   MapParameterSource shut("/hand/");
   shut.set("open_radius", ParameterValue::of(0.02));
   EXPECT_EQ(errorOf("fake_hand", shut),
-            "parameter '/hand/open_radius' (0.020000 m) must exceed '/hand/grasp_radius' (0.033000 m): the hand "
+            "parameter '/hand/open_radius' (0.02 m) must exceed '/hand/grasp_radius' (0.033 m): the hand "
             "opens wider than it closes");
   MapParameterSource cycle("/hand/");
   cycle.set("cycle", ParameterValue::of(2.0));
-  EXPECT_NE(errorOf("fake_hand", cycle).find("/hand/cycle"), std::string::npos);
+  EXPECT_EQ(errorOf("fake_hand", cycle),
+            "parameter '/hand/cycle' (2 s) must be 0 (grasp once) or at least the grasp's 5.8 s");
 
   MapParameterSource none("/hand/");
   EXPECT_EQ(errorOf("pose_source", none),
@@ -94,7 +102,33 @@ TEST(HandDevices, CheckTheirParameters)
             "parameter '/hand/frames' must list one TF frame per finger (3), not 1");
   MapParameterSource timeout("/hand/");
   timeout.set("pose_timeout", ParameterValue::of(0.0));
-  EXPECT_NE(errorOf("pose_source", timeout, true).find("/hand/pose_timeout"), std::string::npos);
+  EXPECT_EQ(errorOf("pose_source", timeout, true), "parameter '/hand/pose_timeout' = 0 is out of range (0, 10] (s)");
+  MapParameterSource rate("/hand/");
+  rate.set("poll_rate", ParameterValue::of(20000.0));
+  EXPECT_EQ(errorOf("pose_source", rate, true), "parameter '/hand/poll_rate' = 20000 is out of range (0, 10000] (Hz)");
+}
+
+// The tables' rows read what they name: a value set through the source lands in its member,
+// and the defaults (the structs' initialisers) are inside the ranges.
+TEST(HandDevices, ParameterTablesReadTheirMembers)
+{
+  EXPECT_EQ(validateRows(fakeHandParameterTable(), FakeHandParams()), "");
+  EXPECT_EQ(validateRows(poseSourceParameterTable(), PoseSourceParams()), "");
+  MapParameterSource hand("/hand/");
+  hand.set("fingers", ParameterValue::ofInteger(3));
+  hand.set("lift", ParameterValue::of(0.12));
+  hand.set("cycle", ParameterValue::of(8.0));
+  const FakeHandParams fake = readFakeHandParams(hand);
+  EXPECT_EQ(fake.fingers, 3);
+  EXPECT_DOUBLE_EQ(fake.lift, 0.12);
+  EXPECT_DOUBLE_EQ(fake.cycle, 8.0);
+  EXPECT_DOUBLE_EQ(fake.grasp_radius, 0.033);
+  MapParameterSource tracker("/hand/");
+  tracker.set("pose_timeout", ParameterValue::of(0.25));
+  tracker.set("poll_rate", ParameterValue::of(200.0));
+  const PoseSourceParams poses = readPoseSourceParams(tracker);
+  EXPECT_DOUBLE_EQ(poses.pose_timeout, 0.25);
+  EXPECT_DOUBLE_EQ(poses.poll_rate, 200.0);
 }
 }  // namespace
 }  // namespace god_finger

@@ -4,6 +4,8 @@
 // the cfg (or the other way round) fails here, with the text to paste.
 #include "god_finger/core/device_profile.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/devices/fake_hand.h"
+#include "god_finger/devices/pose_source.h"
 #include "god_finger/physics/world_params.h"
 
 #include <gtest/gtest.h>
@@ -52,6 +54,8 @@ TEST(ParameterTables, TheReadmeShowsEachTableAsGenerated)
       {"method (contactParameterTable)", markdownTable(contactParameterTable())},
       {"world (worldParameterTable, its own rows)", markdownTable(worldOwnRows())},
       {"device profile (deviceProfileTable)", markdownTable(deviceProfileTable())},
+      {"fake_hand (fakeHandParameterTable)", markdownTable(fakeHandParameterTable())},
+      {"pose_source (poseSourceParameterTable)", markdownTable(poseSourceParameterTable())},
   };
   for (const auto& [what, table] : tables)
   {

@@ -11,7 +11,7 @@ import unittest
 
 import rospy
 import rostest
-from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
+from diagnostic_msgs.msg import DiagnosticStatus
 from geometry_msgs.msg import Pose, PoseArray, WrenchStamped
 from ros_test_support import RosTestSupport
 
@@ -29,19 +29,12 @@ class PoseSourceLetsGo(RosTestSupport, unittest.TestCase):
         rospy.init_node("pose_source_test")
         self.seen = len(FINGERS)  # how many fingers the tracker sees
         self.force = {}  # finger -> |feedback force| N, the newest
-        self.lost = {}  # finger -> its newest diagnostic status
+        self.lost = self.watch_finger_statuses(FINGERS)  # finger -> its newest diagnostic status
         for name in FINGERS:
             rospy.Subscriber("/hand/%s/feedback" % name, WrenchStamped,
                              lambda m, name=name: self.force.__setitem__(name, norm(m.wrench.force)), queue_size=1)
-        rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=10)
         self.publisher = rospy.Publisher("/hand/poses", PoseArray, queue_size=10)
         self.timer = rospy.Timer(rospy.Duration(0.01), self.track)
-
-    def on_diagnostics(self, array):
-        for status in array.status:
-            for name in FINGERS:
-                if status.name.endswith(": finger hand/" + name):
-                    self.lost[name] = status
 
     def track(self, _event):
         message = PoseArray()

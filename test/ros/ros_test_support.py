@@ -4,6 +4,8 @@ marker as a user does. A mixin for unittest.TestCase."""
 import subprocess
 import time
 
+import rospy
+from diagnostic_msgs.msg import DiagnosticArray
 from visualization_msgs.msg import InteractiveMarkerFeedback
 
 
@@ -34,6 +36,20 @@ class RosTestSupport:
         while not condition() and time.time() < deadline:
             time.sleep(0.05)  # polls within the deadline
         self.assertTrue(condition(), "waited %.0f s for %s" % (seconds, what))
+
+    def watch_finger_statuses(self, fingers):
+        """A dict finger -> the servo's newest diagnostic status for `finger hand/NAME` (on
+        /diagnostics), kept up to date from now on."""
+        statuses = {}
+
+        def on_diagnostics(array):
+            for status in array.status:
+                for name in fingers:
+                    if status.name.endswith(": finger hand/" + name):
+                        statuses[name] = status
+
+        rospy.Subscriber("/diagnostics", DiagnosticArray, on_diagnostics, queue_size=10)
+        return statuses
 
     def run_command(self, command):
         """Runs `command` (a list) as a user types it; asserts it exits 0; returns its output."""

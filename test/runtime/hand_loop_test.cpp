@@ -2,6 +2,7 @@
 // one interface each in one tick; a finger whose pose stream is lost (non-finite poses, fewer
 // poses, stale stamps) lets go after pose_timeout, its samples say so, and the others go on
 // pressing; the fake hand grasps and lifts the mug.
+#include "god_finger/core/force_guard.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/hand_device.h"
 #include "god_finger/devices/pose_source.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 
 namespace god_finger
@@ -55,6 +57,8 @@ struct PoseHand
   std::shared_ptr<PoseFeed> feed;
   std::unique_ptr<ServoLoop> loop;
   std::vector<ServoSample> last;  // per interface, the newest sample
+  int kept_interface = -1;        // >= 0: every sample of that interface goes to `kept` too
+  std::vector<ServoSample> kept;
 
   PoseHand()
   {
@@ -80,6 +84,10 @@ struct PoseHand
       while (loop->samples().tryPop(&sample))
       {
         last[sample.interface] = sample;
+        if (sample.interface == kept_interface)
+        {
+          kept.push_back(sample);
+        }
       }
     }
   }
@@ -107,7 +115,8 @@ TEST(HandLoop, RunsEveryFingerOfAHandAsItsOwnInterface)
     EXPECT_FALSE(sample.tracked);
     EXPECT_LT(sample.user_force.norm(), 1e-9);
   }
-  hand.runUntil(0.5, [&hand](double t) { hand.writeAll(t, 3); });
+  // Tracked from 0.01 s: the targets ramp from the proxies to the poses over the soft start.
+  hand.runUntil(0.11 + ForceGuardParams().soft_start, [&hand](double t) { hand.writeAll(t, 3); });
   for (int i = 0; i < 3; ++i)
   {
     EXPECT_TRUE(hand.last[i].tracked) << i;
@@ -138,8 +147,8 @@ void expectOnlyMiddleLetsGo(bool fewer_poses)
     EXPECT_TRUE(hand.last[i].tracked) << i;
     EXPECT_GT(hand.last[i].user_force.z(), 1.0) << i;
   }
-  // Seen again: it presses again.
-  hand.runUntil(lost_at + 0.6, [&hand](double t) { hand.writeAll(t, 3); });
+  // Seen again: it presses again (its target ramped back in over the soft start).
+  hand.runUntil(lost_at + 0.4 + ForceGuardParams().soft_start, [&hand](double t) { hand.writeAll(t, 3); });
   EXPECT_TRUE(hand.last[2].tracked);
   EXPECT_GT(hand.last[2].user_force.z(), 1.0);
 }
@@ -152,6 +161,56 @@ TEST(HandLoop, AFingerWhosePosesTurnNonFiniteLetsGoTheOthersGoOn)
 TEST(HandLoop, AFingerMissingFromTheArrayLetsGoTheOthersGoOn)
 {
   expectOnlyMiddleLetsGo(true);
+}
+
+// Tracked again 2 cm from where it let go (the hand moved while the tracker lost it), the
+// finger's target ramps from its proxy to the pose over the force guard's soft start: the
+// proxy's coupling force rises without a step (a jump of the target would step it by the
+// spring's 400 N/m x 2 cm plus the jump's damping, saturated at 20 N), and ends where the
+// pose says, pressing as before.
+TEST(HandLoop, AFingerTrackedAgainRampsBackWithoutAForceStep)
+{
+  PoseHand hand;
+  hand.runUntil(0.5, [&hand](double t) { hand.writeAll(t, 3); });
+  hand.runUntil(0.8, [&hand](double t) { hand.writeAll(t, 3, 2); });
+  ASSERT_FALSE(hand.last[2].tracked);
+  ASSERT_LT(hand.last[2].user_force.norm(), 0.01);
+  // Let go, the proxy rests where it was released, on the table top (the target's jump onto it
+  // kicks nothing; it flew off at about 1 m/s when the jump entered the coupling's damping):
+  // 0.25 s later within 1 mm of the pose it pressed from along the table, its centre less than
+  // 5 mm above the top.
+  const Eigen::Vector3d released = hand.last[2].proxy_position;
+  EXPECT_LT((released.head<2>() - kPressed[2].head<2>()).norm(), 0.001) << released.transpose();
+  EXPECT_GT(released.z(), 0.0);
+  EXPECT_LT(released.z(), 0.005);
+  const Eigen::Vector3d moved = kPressed[2] + Eigen::Vector3d(0.02, 0.0, 0.0);
+  auto write = [&hand, &moved](double t)
+  {
+    std::vector<FingerPose> poses(3);
+    for (int i = 0; i < 3; ++i)
+    {
+      poses[i].position = i == 2 ? moved : kPressed[i];
+      poses[i].stamp = t;
+    }
+    hand.feed->write(poses);
+  };
+  const double soft_start = ForceGuardParams().soft_start;
+  ASSERT_GT(soft_start, 0.0);
+  hand.kept_interface = 2;
+  hand.runUntil(0.8 + soft_start + 0.2, write);
+  double largest_step = 0.0;  // N: between successive ticks
+  Eigen::Vector3d previous = Eigen::Vector3d::Zero();
+  for (const ServoSample& sample : hand.kept)
+  {
+    ASSERT_TRUE(sample.tracked);
+    largest_step = std::max(largest_step, (sample.user_force - previous).norm());
+    previous = sample.user_force;
+  }
+  std::printf("re-acquired finger: largest force step %.4f N per tick over %zu ticks, final |F| %.3f N\n", largest_step,
+              hand.kept.size(), hand.last[2].user_force.norm());
+  EXPECT_LT(largest_step, 0.25);
+  EXPECT_NEAR((hand.last[2].interface_position - moved).norm(), 0.0, 1e-12);  // the ramp ended at the pose
+  EXPECT_GT(hand.last[2].user_force.z(), 1.0);                                // pressing again
 }
 
 TEST(HandLoop, StaleStampsLetEveryFingerGo)

@@ -52,6 +52,11 @@ const ParameterTable<ForceGuardParams>& forceGuardParameterTable();
 // Empty on success, else "parameter 'NAME' = VALUE is out of range [..] (unit)".
 std::string validate(const ForceGuardParams& params);
 
+// The soft start's scale (rule 3): s = min(1, since / soft_start) in [0, 1], `since` (s) the
+// time since the start; soft_start = 0: 1 (no ramp). The servo loop ramps a re-acquired
+// finger's target with it too. Real-time safe.
+double softStartScale(double since, double soft_start);
+
 class ForceGuard
 {
  public:

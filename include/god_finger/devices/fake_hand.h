@@ -13,6 +13,7 @@
 #pragma once
 
 #include "god_finger/core/parameter_source.h"
+#include "god_finger/core/parameter_table.h"
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/devices/hand_device.h"
 
@@ -34,7 +35,12 @@ struct FakeHandParams
   double cycle = 0.0;           // s: 0 grasps once; else again every cycle s (>= 5.8, the grasp's length)
 };
 
-// fingers, grasp_center, grasp_radius, open_radius, object_radius, lift, cycle; InputError naming a bad one.
+// The numeric parameters' one table (names, units, ranges, meanings; defaults: the struct's
+// initialisers above); grasp_center, a vector, is read beside it.
+const ParameterTable<FakeHandParams>& fakeHandParameterTable();
+
+// The table's rows, grasp_center, and open_radius > grasp_radius, cycle 0 or >= 5.8 s;
+// InputError naming a bad one.
 FakeHandParams readFakeHandParams(const ParameterSource& source);
 
 // Each finger's path (thumb first), in script time; names thumb, index, middle, ring, little.

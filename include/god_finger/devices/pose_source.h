@@ -18,6 +18,7 @@
 
 #include "god_finger/core/latest_value.h"
 #include "god_finger/core/parameter_source.h"
+#include "god_finger/core/parameter_table.h"
 #include "god_finger/devices/hand_device.h"
 
 #include <Eigen/Core>
@@ -41,9 +42,12 @@ struct PoseSourceParams
   Eigen::Vector3d rest = Eigen::Vector3d(0.0, 0.0, 0.3);  // m, device frame: before a first pose
 };
 
+// The numeric parameters' one table (poll_rate, pose_timeout: names, units, ranges, meanings;
+// defaults: the struct's initialisers above); the names, topic and frames are read beside it.
+const ParameterTable<PoseSourceParams>& poseSourceParameterTable();
+
 // fingers (1 to 10 unique non-empty names), topic, frames (none, or one per finger),
-// reference_frame, poll_rate (Hz, (0, 10000]), pose_timeout (s, (0, 10]), rest; InputError
-// naming a bad one.
+// reference_frame, the table's rows, rest; InputError naming a bad one.
 PoseSourceParams readPoseSourceParams(const ParameterSource& source);
 
 struct FingerPose

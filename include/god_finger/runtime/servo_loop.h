@@ -17,8 +17,11 @@
 //      haptic node does: its buttons press nothing, the physics gets the last good target
 //      (the world never sees a non-finite one), and its sample carries the last good reading;
 //      a reading its source marks untracked (a finger a pose source lost, DeviceReading::tracked)
-//      lets that finger go: its target is its proxy's last position (no coupling force), counted
+//      lets that finger go: its target is its proxy's last position (no coupling force; the
+//      step takes its velocity as zero, so the released proxy comes to rest), counted
 //      in untracked_readings, its sample says tracked = false; the other interfaces go on;
+//      tracked again, its target ramps from that proxy position to the tracked pose over the
+//      force guard's soft start (softStartScale, core/force_guard.h): no step of coupling force;
 //   3. leaves a sample per interface in a lock-free queue for the publishers.
 // The physics side, one step per targets it takes (the latest; older ones are skipped when it
 // is late, the skipped motion entering the coupling's damping as the device's velocity):
@@ -85,6 +88,7 @@
 #pragma once
 
 #include "god_finger/core/device_profile.h"
+#include "god_finger/core/force_guard.h"
 #include "god_finger/core/latest_value.h"
 #include "god_finger/core/parameter_table.h"
 #include "god_finger/core/spsc_queue.h"
@@ -94,6 +98,7 @@
 
 #include <semaphore.h>
 #include <atomic>
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -283,6 +288,10 @@ class ServoLoop
     long reset_presses = 0;                   // same, button 1
     std::vector<Eigen::Vector3d> targets;     // m, world: the mapped readings (maybe non-finite)
     std::vector<Eigen::Vector3d> velocities;  // m/s, world: the haptic side's estimate
+    // Per interface, 1 while its finger is let go (untracked): the step takes its velocity
+    // (zero: the target rests on the proxy) instead of the targets' difference, so the jump of
+    // the target onto the proxy kicks nothing and the damping brings the released proxy to rest.
+    std::vector<unsigned char> let_go;
   };
   // Physics -> haptic: the intermediate representation from one completed step.
   struct ProxyResult
@@ -311,7 +320,11 @@ class ServoLoop
     bool exact = true;            // the force is the step's reaction
     bool stale = false;           // the last decision's
     bool tracked = true;          // the last reading's (DeviceReading::tracked)
-    double ready_at = 0.0;        // s, wall: when the last decision's force was ready
+    // A finger tracked again: its target ramps from regrip_from (m, world: where it let go) to
+    // the tracked pose with the force guard's soft start from regrip_at (s, loop time).
+    Eigen::Vector3d regrip_from = Eigen::Vector3d::Zero();
+    double regrip_at = -INFINITY;
+    double ready_at = 0.0;  // s, wall: when the last decision's force was ready
   };
 
   void readDevices(double time);
