@@ -13,21 +13,12 @@ namespace god_finger
 {
 namespace
 {
-const PadLayout& layoutNamed(const std::string& name)
-{
-  for (const PadLayout& layout : kPadLayouts)
-  {
-    if (name == layout.name)
-    {
-      return layout;
-    }
-  }
-  throw std::invalid_argument(name);
-}
+// kPadLayouts: god_object, soft_finger, god_finger (pad constraint), god_finger/points.
+constexpr const PadLayout& kPoint = kPadLayouts[0];
+constexpr const PadLayout& kPad = kPadLayouts[2];
 
-CylinderTurnResult turn(const std::string& layout_name, double squeeze, const OperatorTraits& hand = perfectOperator())
+CylinderTurnResult turn(const PadLayout& layout, double squeeze, const OperatorTraits& hand = perfectOperator())
 {
-  const PadLayout& layout = layoutNamed(layout_name);
   CylinderTurnOptions options;
   options.model = layout.model;
   options.params.pad_solver = layout.pad_solver;
@@ -44,7 +35,7 @@ CylinderTurnResult turn(const std::string& layout_name, double squeeze, const Op
 
 TEST(CylinderTurn, APerfectHandTurnsItNinetyDegreesWithThePad)
 {
-  const CylinderTurnResult pad = turn("god_finger", 0.005);
+  const CylinderTurnResult pad = turn(kPad, 0.005);
   EXPECT_TRUE(pad.held);
   EXPECT_TRUE(pad.turned);
   EXPECT_NEAR(pad.turn_rad, kTurnAngle, 0.05);
@@ -59,21 +50,21 @@ TEST(CylinderTurn, APointRollsOnTheMantleAndLetsItSwingAboutThePinchLine)
   // A ball fingertip that keeps its orientation rolls without slipping: the mantle's point under
   // it moves with it, so the cylinder turns (r + proxy radius) / r times the fingers' angle.
   const double rolling = kTurnAngle * (kTurnCylinderRadius + WorldParams().coupling.proxy_radius) / kTurnCylinderRadius;
-  const CylinderTurnResult point = turn("god_object", 0.0025);
+  const CylinderTurnResult point = turn(kPoint, 0.0025);
   EXPECT_TRUE(point.held);
   EXPECT_NEAR(point.turn_rad, rolling, 0.01);
   EXPECT_LT(point.max_slip_m, 0.002);
   // Nothing resists the turn about the line between two points: harder, it swings away.
-  const CylinderTurnResult pressed = turn("god_object", 0.01);
+  const CylinderTurnResult pressed = turn(kPoint, 0.01);
   EXPECT_GT(pressed.max_tilt_rad, 0.2);
   EXPECT_FALSE(pressed.turned);
-  EXPECT_LT(turn("god_finger", 0.01).max_tilt_rad, 0.001);
+  EXPECT_LT(turn(kPad, 0.01).max_tilt_rad, 0.001);
 }
 
 TEST(CylinderTurn, ATooLightSqueezeDropsIt)
 {
   // 1 N per finger, mu 0.8: 1.6 N of friction against 1.47 N of weight, less once turning.
-  const CylinderTurnResult light = turn("god_finger", 0.0025);
+  const CylinderTurnResult light = turn(kPad, 0.0025);
   EXPECT_FALSE(light.held);
   EXPECT_FALSE(light.turned);
   EXPECT_GT(light.max_slip_m, 0.03);
@@ -83,9 +74,9 @@ TEST(CylinderTurn, APadThatCannotTurnResistsTheRollMoreTheHarderItPresses)
 {
   // 3-DOF fingers keep their orientation: turning the cylinder rolls the mantle under the pads,
   // whose tilt rows (N x the area's radius) hold against it.
-  const double light = turn("god_finger", 0.005).turn_rad;
-  const double firm = turn("god_finger", 0.01).turn_rad;
-  const double hard = turn("god_finger", 0.02).turn_rad;
+  const double light = turn(kPad, 0.005).turn_rad;
+  const double firm = turn(kPad, 0.01).turn_rad;
+  const double hard = turn(kPad, 0.02).turn_rad;
   EXPECT_GT(light, firm);
   EXPECT_GT(firm, hard);
   EXPECT_LT(hard, 0.7);
