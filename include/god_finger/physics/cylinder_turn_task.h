@@ -13,7 +13,9 @@
 // from above) in 2, hold until 5.5. With the fingers stuck on the mantle the cylinder turns 90
 // degrees with them (a point contact, a ball that does not turn, rolls on the mantle: the
 // cylinder turns kTurnAngle (r + proxy radius) / r); a slip turns it less, and a point contact lets
-// it swing about the pinch line. The fingers are 3-DOF: they keep their orientation.
+// it swing about the pinch line. The fingers are 3-DOF: they keep their orientation, so the
+// mantle rolls under each pad, and a pad that resists a tilt (god_finger's tilt rows, up to N a)
+// resists the turn: the harder the squeeze, the less it turns.
 // Deterministic: the same options give the same result, bit for bit. Units SI, frames world
 // (z up). Not real-time (builds a world).
 #pragma once
@@ -49,7 +51,8 @@ struct CylinderTurnResult
   bool held = false;               // above half the lift height from the lift's end to the end
   bool turned = false;             // held, the final turn within kTurnTolerance of kTurnAngle, the
                                    // final tilt within kTurnTiltTolerance
-  double turn_rad = 0.0;           // about the cylinder's axis (signed, + counter-clockwise), at the end
+  double turn_rad = 0.0;           // about the cylinder's axis (signed, + counter-clockwise), at the end:
+                                   // the heading of its x axis, unwrapped (no turn once it has tipped over)
   double final_tilt_rad = 0.0;     // the axis's angle from vertical at the end
   double max_tilt_rad = 0.0;       // the same, largest from the lift's start to the end
   double max_slip_m = 0.0;         // a finger's sliding on the mantle (m, its path against the surface
