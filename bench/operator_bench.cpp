@@ -4,20 +4,26 @@
 // +-25 % at ~1 Hz, a grip reflex 100-150 ms late), for each contact layout and squeeze.
 // Not a timing: every line is deterministic.
 //
-// First, per layout, its twist limit: the smallest squeeze (m) at which a perfect hand lifts
-// and holds the bar turning at most 0.05 rad (bisection to 0.1 mm in [0.5, 60] mm; 0 when the
-// layout holds it at 0.5 mm, -1 when it never does). Then `--seeds` pick and places per squeeze
-// in the list and at the target squeeze, whose low point (0.75 of it) is 1.2 twist limits.
+// First, per layout, the pick and place (operator_pick_place.h): its twist limit, the smallest
+// squeeze at which a perfect hand lifts and holds the bar still, then `--seeds` pick and places
+// per squeeze in the list and at the layout's target squeeze.
 // Second, the paper's pencil-versus-finger example (physics/sheet_push_task.h): `--seeds`
 // operators drag a sheet by its corner per press in the list.
+// Third, a cylinder pinched and turned 90 degrees about its axis (physics/cylinder_turn_task.h)
+// and a mug lifted by three fingers (physics/mug_grasp_task.h): `--seeds` operators per squeeze
+// in their lists.
 // Prints one JSON line per layout ({"kind":"limit"}) and per run ({"kind":"run"}, with its
-// "task": "pick_place" or "sheet_push").
+// "task": "pick_place", "sheet_push", "cylinder_turn" or "mug_grasp"), in that order.
 //
 // usage: operator_bench [--seeds N] [--squeezes MM[,MM...]] [--presses MM[,MM...]]
+//                       [--turn-squeezes MM[,MM...]] [--mug-squeezes MM[,MM...]]
 #include "god_finger/core/text_numbers.h"
+#include "god_finger/physics/cylinder_turn_task.h"
 #include "god_finger/physics/grip_task.h"
+#include "god_finger/physics/mug_grasp_task.h"
 #include "god_finger/physics/pad_fidelity.h"
 #include "god_finger/physics/sheet_push_task.h"
+#include "operator_pick_place.h"
 
 #include <nlohmann/json.hpp>
 
@@ -31,47 +37,11 @@ namespace
 {
 using namespace god_finger;
 
-constexpr double kTurnLimit = 0.05;  // rad
-
-GripTaskOptions optionsFor(const PadLayout& layout, double squeeze)
-{
-  GripTaskOptions options;
-  options.model = layout.model;
-  options.params.pad_solver = layout.pad_solver;
-  options.squeeze = squeeze;
-  return options;
-}
-
-bool holdsStill(const PadLayout& layout, double squeeze)
-{
-  const GripTaskResult result = runGripTask(optionsFor(layout, squeeze));
-  return result.held && result.max_turn_rad <= kTurnLimit;
-}
-
-double twistLimit(const PadLayout& layout)
-{
-  double low = 0.0005;
-  double high = 0.06;
-  if (holdsStill(layout, low))
-  {
-    return 0.0;
-  }
-  if (!holdsStill(layout, high))
-  {
-    return -1.0;
-  }
-  while (high - low > 1e-4)
-  {
-    const double middle = 0.5 * (low + high);
-    (holdsStill(layout, middle) ? high : low) = middle;
-  }
-  return high;
-}
-
 int fail(const std::string& message)
 {
   std::cerr << "operator_bench: " << message
-            << "\nusage: operator_bench [--seeds N] [--squeezes MM[,MM...]] [--presses MM[,MM...]]\n";
+            << "\nusage: operator_bench [--seeds N] [--squeezes MM[,MM...]] [--presses MM[,MM...]]\n"
+               "                      [--turn-squeezes MM[,MM...]] [--mug-squeezes MM[,MM...]]\n";
   return 2;
 }
 }  // namespace
@@ -79,8 +49,10 @@ int fail(const std::string& message)
 int main(int argc, char** argv)
 {
   int seeds = 20;
-  std::vector<double> squeezes = {0.008, 0.012, 0.016, 0.02, 0.03};
+  std::vector<double> squeezes = kPickPlaceSqueezes;
   std::vector<double> presses = {0.0025, 0.005, 0.01};
+  std::vector<double> turn_squeezes = {0.0025, 0.005, 0.01, 0.02};
+  std::vector<double> mug_squeezes = {0.003, 0.004, 0.006};
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string option = argv[i];
@@ -94,9 +66,13 @@ int main(int argc, char** argv)
       }
       seeds = static_cast<int>(number);
     }
-    else if (option == "--squeezes" || option == "--presses")
+    else if (option == "--squeezes" || option == "--presses" || option == "--turn-squeezes" ||
+             option == "--mug-squeezes")
     {
-      std::vector<double>* list = option == "--squeezes" ? &squeezes : &presses;
+      std::vector<double>* list = option == "--squeezes"        ? &squeezes
+                                  : option == "--presses"       ? &presses
+                                  : option == "--turn-squeezes" ? &turn_squeezes
+                                                                : &mug_squeezes;
       list->clear();
       std::stringstream items(value);
       std::string item;
@@ -117,45 +93,10 @@ int main(int argc, char** argv)
   }
   for (const PadLayout& layout : kPadLayouts)
   {
-    const double limit = twistLimit(layout);
-    std::cout << nlohmann::json{{"kind", "limit"}, {"layout", layout.name}, {"twist_limit_squeeze_m", limit}}.dump()
-              << std::endl;
-    std::vector<double> layout_squeezes = squeezes;
-    if (limit > 0.0)
-    {
-      layout_squeezes.push_back(1.2 * limit / 0.75);
-    }
-    for (std::size_t k = 0; k < layout_squeezes.size(); ++k)
-    {
-      const bool target = k + 1 == layout_squeezes.size() && limit > 0.0;
-      for (int seed = 1; seed <= seeds; ++seed)
-      {
-        GripTaskOptions options = optionsFor(layout, layout_squeezes[k]);
-        options.carry = true;
-        options.hand = drawOperator(static_cast<std::uint64_t>(seed), Eigen::Vector3d::UnitY());
-        const GripTaskResult r = runGripTask(options);
-        std::cout << nlohmann::json{{"kind", "run"},
-                                    {"task", "pick_place"},
-                                    {"layout", layout.name},
-                                    {"squeeze_m", options.squeeze},
-                                    {"target", target},
-                                    {"seed", seed},
-                                    {"held", r.held},
-                                    {"placed", r.placed},
-                                    {"placed_error_m", r.placed_error_m},
-                                    {"max_turn_rad", r.max_turn_rad},
-                                    {"max_tilt_rad", r.max_tilt_rad},
-                                    {"max_slip_m", r.max_slip_m},
-                                    {"mean_grip_force_N", r.mean_grip_force_N},
-                                    {"min_squeeze_m", r.min_squeeze_m},
-                                    {"final_rotation_rad", r.final_rotation_rad},
-                                    {"misalignment_m", options.hand.misalignment.norm()},
-                                    {"tremor_m", options.hand.tremor_amplitude},
-                                    {"tremor_hz", options.hand.tremor_frequency}}
-                         .dump()
-                  << std::endl;
-      }
-    }
+    GripTaskOptions base;
+    base.model = layout.model;
+    base.params.pad_solver = layout.pad_solver;
+    pickPlaceRuns(layout.name, runGripTask, base, squeezes, seeds);
   }
   for (const PadLayout& layout : kPadLayouts)
   {
@@ -179,6 +120,65 @@ int main(int argc, char** argv)
                                     {"turn_rad", r.turn_rad},
                                     {"max_slip_m", r.max_slip_m},
                                     {"mean_press_N", r.mean_press_N}}
+                         .dump()
+                  << std::endl;
+      }
+    }
+  }
+  for (const PadLayout& layout : kPadLayouts)
+  {
+    for (const double squeeze : turn_squeezes)
+    {
+      for (int seed = 1; seed <= seeds; ++seed)
+      {
+        CylinderTurnOptions options;
+        options.model = layout.model;
+        options.params.pad_solver = layout.pad_solver;
+        options.squeeze = squeeze;
+        options.hand = drawOperator(static_cast<std::uint64_t>(seed), Eigen::Vector3d::UnitY());
+        const CylinderTurnResult r = runCylinderTurn(options);
+        std::cout << nlohmann::json{{"kind", "run"},
+                                    {"task", "cylinder_turn"},
+                                    {"layout", layout.name},
+                                    {"squeeze_m", squeeze},
+                                    {"seed", seed},
+                                    {"held", r.held},
+                                    {"turned", r.turned},
+                                    {"turn_rad", r.turn_rad},
+                                    {"final_tilt_rad", r.final_tilt_rad},
+                                    {"max_tilt_rad", r.max_tilt_rad},
+                                    {"max_slip_m", r.max_slip_m},
+                                    {"mean_grip_force_N", r.mean_grip_force_N}}
+                         .dump()
+                  << std::endl;
+      }
+    }
+  }
+  for (const PadLayout& layout : kPadLayouts)
+  {
+    for (const double squeeze : mug_squeezes)
+    {
+      for (int seed = 1; seed <= seeds; ++seed)
+      {
+        MugGraspOptions options;
+        options.scenes_dir = GOD_FINGER_SCENES_DIR;
+        options.model = layout.model;
+        options.params.pad_solver = layout.pad_solver;
+        options.squeeze = squeeze;
+        // The misaligned finger (at 180 degrees) closes along x.
+        options.hand = drawOperator(static_cast<std::uint64_t>(seed), Eigen::Vector3d::UnitX());
+        const MugGraspResult r = runMugGrasp(options);
+        std::cout << nlohmann::json{{"kind", "run"},
+                                    {"task", "mug_grasp"},
+                                    {"layout", layout.name},
+                                    {"squeeze_m", squeeze},
+                                    {"seed", seed},
+                                    {"held", r.held},
+                                    {"lifted", r.lifted},
+                                    {"lift_height_m", r.lift_height_m},
+                                    {"max_tilt_rad", r.max_tilt_rad},
+                                    {"max_slip_m", r.max_slip_m},
+                                    {"mean_grip_force_N", r.mean_grip_force_N}}
                          .dump()
                   << std::endl;
       }

@@ -65,6 +65,95 @@ SceneDescription gripBarScene()
   return scene;
 }
 
+double gripTaskDuration(const GripTaskOptions& options)
+{
+  return options.carry ? kPlaceEnd : kHoldEnd;
+}
+
+void gripTargets(const GripTaskOptions& options, double t, double squeeze_factor, Eigen::Vector3d* near,
+                 Eigen::Vector3d* far)
+{
+  const OperatorTraits& traits = options.hand;
+  const double face = 0.5 * kGripBarWidth + options.params.coupling.proxy_radius;  // proxy centre on a face
+  const Eigen::Vector3d across = Eigen::Vector3d::UnitY();
+  const HandPose hand = handAt(t, options.carry);
+  const double half = kOpen + (face - options.squeeze * squeeze_factor - kOpen) * hand.closed;
+  *near = hand.centre - half * across + tremorAt(traits, t, 0);
+  *far = hand.centre + half * across + traits.misalignment + tremorAt(traits, t, 1);
+}
+
+GripTaskMeter::GripTaskMeter(const GripTaskOptions& options, const Eigen::Isometry3d& start_pose,
+                             const Eigen::Vector3d& start_com)
+    : options_(options),
+      reflex_(options.hand.reaction_delay),
+      start_rotation_(start_pose.linear()),
+      start_z_(start_com.z())
+{
+  result_.held = true;
+  result_.min_squeeze_m = INFINITY;
+}
+
+double GripTaskMeter::squeezeFactor(double t) const
+{
+  return fluctuationAt(options_.hand, t) + extra_;
+}
+
+void GripTaskMeter::add(double t, double squeeze_factor, const Eigen::Isometry3d& bar_pose,
+                        const Eigen::Vector3d& bar_com, const Eigen::Vector3d& near_proxy,
+                        const Eigen::Vector3d& far_proxy, const Eigen::Vector3d& near_force,
+                        const Eigen::Vector3d& far_force)
+{
+  const Eigen::Vector3d across = Eigen::Vector3d::UnitY();
+  const double hold_end = options_.carry ? kRelease : kHoldEnd;
+  const Eigen::Vector3d midpoint = 0.5 * (near_proxy + far_proxy);
+  if (!lifting_ && t >= kLiftStart)
+  {
+    lifting_ = true;
+    grip_on_bar_ = bar_pose.inverse() * midpoint;
+  }
+  if (!lifting_ || t > hold_end)
+  {
+    return;
+  }
+  // Slip across the pinch only: along it, tremor moves the fingers' midpoint on a held bar.
+  Eigen::Vector3d slip = bar_pose * grip_on_bar_ - midpoint;
+  slip -= slip.dot(across) * across;
+  result_.max_slip_m = std::max(result_.max_slip_m, slip.norm());
+  extra_ = reflex_.update(t, (slip - previous_slip_).norm() / options_.params.time_step);
+  previous_slip_ = slip;
+  const Eigen::AngleAxisd turned(bar_pose.linear() * start_rotation_.transpose());
+  const Eigen::Vector3d rotation = turned.angle() * turned.axis();
+  result_.final_turn_rad = std::abs(rotation.y());
+  result_.max_turn_rad = std::max(result_.max_turn_rad, result_.final_turn_rad);
+  result_.max_tilt_rad = std::max(result_.max_tilt_rad, std::hypot(rotation.x(), rotation.z()));
+  const bool lifted = t >= (options_.carry ? kCarryLiftEnd : kHoldLiftEnd);
+  if (lifted && bar_com.z() < start_z_ + 0.5 * kGripLift && t <= (options_.carry ? kCarryEnd : hold_end))
+  {
+    result_.held = false;
+  }
+  if (lifted)
+  {
+    force_sum_ += 0.5 * (std::abs(near_force.dot(across)) + std::abs(far_force.dot(across)));
+    ++force_samples_;
+    result_.min_squeeze_m = std::min(result_.min_squeeze_m, options_.squeeze * squeeze_factor);
+  }
+}
+
+GripTaskResult GripTaskMeter::finish(const Eigen::Isometry3d& bar_pose, const Eigen::Vector3d& bar_com)
+{
+  GripTaskResult result = result_;
+  result.mean_grip_force_N = force_samples_ > 0 ? force_sum_ / force_samples_ : 0.0;
+  result.final_rotation_rad = Eigen::AngleAxisd(bar_pose.linear() * start_rotation_.transpose()).angle();
+  if (options_.carry)
+  {
+    const Eigen::Vector3d target(-kCarryDistance, 0.0, start_z_);
+    result.placed_error_m = (bar_com - target).norm();
+    // Lying as it started: a bar swung over end to end may land within 2 cm, reversed.
+    result.placed = result.held && result.placed_error_m < 0.02 && result.final_rotation_rad < 0.2;
+  }
+  return result;
+}
+
 GripTaskResult runGripTask(const GripTaskOptions& options)
 {
   if (!(options.squeeze > 0.0 && options.squeeze <= 0.1))
@@ -75,89 +164,25 @@ GripTaskResult runGripTask(const GripTaskOptions& options)
   GodFingerWorld world(scene, options.params);
   world.setContactModel(options.model);
   const int bar = scene.find("bar");
-  const OperatorTraits& traits = options.hand;
-  const double face = 0.5 * kGripBarWidth + options.params.coupling.proxy_radius;  // proxy centre on a face
-  const Eigen::Vector3d across = Eigen::Vector3d::UnitY();
-  auto targets = [&](double t, double squeeze_factor, Eigen::Vector3d* near, Eigen::Vector3d* far)
-  {
-    const HandPose hand = handAt(t, options.carry);
-    const double half = kOpen + (face - options.squeeze * squeeze_factor - kOpen) * hand.closed;
-    *near = hand.centre - half * across + tremorAt(traits, t, 0);
-    *far = hand.centre + half * across + traits.misalignment + tremorAt(traits, t, 1);
-  };
   Eigen::Vector3d near, far;
-  targets(0.0, 1.0, &near, &far);
+  gripTargets(options, 0.0, 1.0, &near, &far);
   const int near_finger = world.addInterface(near);
   const int far_finger = world.addInterface(far);
-  const Eigen::Matrix3d start_rotation = world.bodyState(bar).pose.linear();
-  const double start_z = world.bodyState(bar).center_of_mass.z();
-  const double hold_end = options.carry ? kRelease : kHoldEnd;
-  const double end = options.carry ? kPlaceEnd : kHoldEnd;
+  GripTaskMeter meter(options, world.bodyState(bar).pose, world.bodyState(bar).center_of_mass);
   const double dt = world.params().time_step;
-  GripReflex reflex(traits.reaction_delay);
-  GripTaskResult result;
-  result.held = true;
-  result.min_squeeze_m = INFINITY;
-  Eigen::Vector3d grip_on_bar = Eigen::Vector3d::Zero();  // bar frame, fixed at the lift's start
-  Eigen::Vector3d previous_slip = Eigen::Vector3d::Zero();
-  double extra = 0.0;
-  double force_sum = 0.0;
-  long force_samples = 0;
-  bool lifting = false;
-  for (long i = 0; i < std::lround(end / dt); ++i)
+  for (long i = 0; i < std::lround(gripTaskDuration(options) / dt); ++i)
   {
     const double t = (i + 1) * dt;
-    const double factor = fluctuationAt(traits, t) + extra;
-    targets(t, factor, &near, &far);
+    const double factor = meter.squeezeFactor(t);
+    gripTargets(options, t, factor, &near, &far);
     world.setInterfaceTarget(near_finger, near);
     world.setInterfaceTarget(far_finger, far);
     world.step();
     const BodyState state = world.bodyState(bar);
-    const Eigen::Vector3d midpoint =
-        0.5 * (world.interfaceState(near_finger).proxy_position + world.interfaceState(far_finger).proxy_position);
-    if (!lifting && t >= kLiftStart)
-    {
-      lifting = true;
-      grip_on_bar = state.pose.inverse() * midpoint;
-    }
-    if (!lifting || t > hold_end)
-    {
-      continue;
-    }
-    // Slip across the pinch only: along it, tremor moves the fingers' midpoint on a held bar.
-    Eigen::Vector3d slip = state.pose * grip_on_bar - midpoint;
-    slip -= slip.dot(across) * across;
-    result.max_slip_m = std::max(result.max_slip_m, slip.norm());
-    extra = reflex.update(t, (slip - previous_slip).norm() / dt);
-    previous_slip = slip;
-    const Eigen::AngleAxisd turned(state.pose.linear() * start_rotation.transpose());
-    const Eigen::Vector3d rotation = turned.angle() * turned.axis();
-    result.final_turn_rad = std::abs(rotation.y());
-    result.max_turn_rad = std::max(result.max_turn_rad, result.final_turn_rad);
-    result.max_tilt_rad = std::max(result.max_tilt_rad, std::hypot(rotation.x(), rotation.z()));
-    const bool lifted = t >= (options.carry ? kCarryLiftEnd : kHoldLiftEnd);
-    if (lifted && state.center_of_mass.z() < start_z + 0.5 * kGripLift && t <= (options.carry ? kCarryEnd : hold_end))
-    {
-      result.held = false;
-    }
-    if (lifted)
-    {
-      force_sum += 0.5 * (std::abs(world.interfaceState(near_finger).user_force.dot(across)) +
-                          std::abs(world.interfaceState(far_finger).user_force.dot(across)));
-      ++force_samples;
-      result.min_squeeze_m = std::min(result.min_squeeze_m, options.squeeze * factor);
-    }
+    meter.add(t, factor, state.pose, state.center_of_mass, world.interfaceState(near_finger).proxy_position,
+              world.interfaceState(far_finger).proxy_position, world.interfaceState(near_finger).user_force,
+              world.interfaceState(far_finger).user_force);
   }
-  result.mean_grip_force_N = force_samples > 0 ? force_sum / force_samples : 0.0;
-  result.final_rotation_rad =
-      Eigen::AngleAxisd(world.bodyState(bar).pose.linear() * start_rotation.transpose()).angle();
-  if (options.carry)
-  {
-    const Eigen::Vector3d target(-kCarryDistance, 0.0, start_z);
-    result.placed_error_m = (world.bodyState(bar).center_of_mass - target).norm();
-    // Lying as it started: a bar swung over end to end may land within 2 cm, reversed.
-    result.placed = result.held && result.placed_error_m < 0.02 && result.final_rotation_rad < 0.2;
-  }
-  return result;
+  return meter.finish(world.bodyState(bar).pose, world.bodyState(bar).center_of_mass);
 }
 }  // namespace god_finger

@@ -18,6 +18,8 @@
 #include "god_finger/physics/scene_description.h"
 #include "god_finger/physics/world_params.h"
 
+#include <Eigen/Geometry>
+
 namespace god_finger
 {
 constexpr double kGripBarMass = 0.15;   // kg
@@ -53,4 +55,45 @@ struct GripTaskResult
 
 // Throws InputError on a bad option (a squeeze outside (0, 0.1] m, bad world parameters).
 GripTaskResult runGripTask(const GripTaskOptions& options);
+
+// The pieces runGripTask is made of, for a simulator other than GodFingerWorld (the MuJoCo
+// baseline of bench/operator_mujoco_bench.cpp) to run the same hand and measure it the same way.
+// The script's length (s).
+double gripTaskDuration(const GripTaskOptions& options);
+// The two fingers' targets (m, world) at time t (s) with the squeeze's factor on its nominal
+// value (fluctuation and reflex): the near finger at -y, the far one at +y with the misalignment;
+// each touches its face with a proxy of options.params.coupling.proxy_radius.
+void gripTargets(const GripTaskOptions& options, double t, double squeeze_factor, Eigen::Vector3d* near,
+                 Eigen::Vector3d* far);
+
+// Measures a run step by step: the result's fields and the operator's reflex.
+class GripTaskMeter
+{
+ public:
+  // `start` is the bar's pose and centre of mass before the first step.
+  GripTaskMeter(const GripTaskOptions& options, const Eigen::Isometry3d& start_pose, const Eigen::Vector3d& start_com);
+  // The squeeze's factor to command at time t: the fluctuation plus the reflex so far.
+  double squeezeFactor(double t) const;
+  // After the step that ended at time t, commanded with `squeeze_factor`: the bar's pose and
+  // centre of mass, the proxies' positions and the fingers' coupling forces (N, world, either
+  // sign).
+  void add(double t, double squeeze_factor, const Eigen::Isometry3d& bar_pose, const Eigen::Vector3d& bar_com,
+           const Eigen::Vector3d& near_proxy, const Eigen::Vector3d& far_proxy, const Eigen::Vector3d& near_force,
+           const Eigen::Vector3d& far_force);
+  // After the last step: the bar's final pose and centre of mass.
+  GripTaskResult finish(const Eigen::Isometry3d& bar_pose, const Eigen::Vector3d& bar_com);
+
+ private:
+  GripTaskOptions options_;
+  GripReflex reflex_;
+  Eigen::Matrix3d start_rotation_;
+  double start_z_ = 0.0;
+  GripTaskResult result_;
+  Eigen::Vector3d grip_on_bar_ = Eigen::Vector3d::Zero();  // bar frame, fixed at the lift's start
+  Eigen::Vector3d previous_slip_ = Eigen::Vector3d::Zero();
+  double extra_ = 0.0;
+  double force_sum_ = 0.0;
+  long force_samples_ = 0;
+  bool lifting_ = false;
+};
 }  // namespace god_finger

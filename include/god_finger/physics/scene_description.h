@@ -72,4 +72,9 @@ struct SceneDescription
 // centre of mass), its link frame at `centre` (m, world), axis-aligned. With mass 0: static.
 BodyDescription boxBody(const std::string& name, const Eigen::Vector3d& size, double mass,
                         const Eigen::Vector3d& centre);
+// A solid cylinder body of `radius` and `length` (m), its axis z (URDF convention), `mass` (kg)
+// spread uniformly (inertia m r^2 / 2 about the axis, m (3 r^2 + l^2) / 12 across it), its link
+// frame at `centre` (m, world), the axis vertical. With mass 0: static.
+BodyDescription cylinderBody(const std::string& name, double radius, double length, double mass,
+                             const Eigen::Vector3d& centre);
 }  // namespace god_finger
