@@ -5,6 +5,8 @@
 #include "support_pass.h"
 #include "torsional_rows.h"
 
+#include <algorithm>
+
 namespace god_finger
 {
 btScalar ContactSolver::solveGroup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
@@ -62,11 +64,30 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int num_ma
       preparePadTorsionalRow(*pad, m_tmpSolverContactConstraintPool[row.m_frictionIndex], info, &a, &b, &row);
     }
   }
+  if (grasp_ == GraspConstraint::kAggregate && !pad_of_contact_row_.empty())
+  {
+    grasps_.collect(pad_of_contact_row_, m_tmpSolverContactConstraintPool, m_tmpSolverBodyPool, &torsional);
+  }
+}
+
+btScalar ContactSolver::solveSingleIteration(int iteration, btCollisionObject** bodies, int num_bodies,
+                                             btPersistentManifold** manifolds, int num_manifolds,
+                                             btTypedConstraint** constraints, int num_constraints,
+                                             const btContactSolverInfo& info, btIDebugDraw* debug_draw)
+{
+  const btScalar residual = btSequentialImpulseConstraintSolver::solveSingleIteration(
+      iteration, bodies, num_bodies, manifolds, num_manifolds, constraints, num_constraints, info, debug_draw);
+  if (grasps_.count() == 0)
+  {
+    return residual;
+  }
+  return std::max(residual, grasps_.iterate(m_tmpSolverContactConstraintPool, m_tmpSolverBodyPool));
 }
 
 btScalar ContactSolver::solveGroupCacheFriendlyFinish(btCollisionObject** bodies, int num_bodies,
                                                       const btContactSolverInfo& info)
 {
+  grasps_.finish(m_tmpSolverContactConstraintPool, m_tmpSolverBodyPool);
   for (int j = 0; j < m_tmpSolverContactRollingFrictionConstraintPool.size(); ++j)
   {
     btSolverConstraint& row = m_tmpSolverContactRollingFrictionConstraintPool[j];

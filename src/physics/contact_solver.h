@@ -8,6 +8,9 @@
 //   and slips go back to the pads' states. A torsional row finds its pad through its normal row
 //   (Bullet's m_frictionIndex) in a side table built per solve: normal row -> pad, by the row's
 //   manifold point.
+// - Grasps (grasp_constraint.h, WorldParams::grasp_constraint: aggregate): the twist rows of
+//   opposed pads on one body leave Bullet's pool after they were prepared and are solved as one
+//   row per body after Bullet's rows in each iteration; finished with the pads' rows.
 // - Support passes (support_pass.h): after the iterations, proxies pressing light objects onto
 //   static ones are held.
 //
@@ -16,6 +19,8 @@
 // have grown.
 #pragma once
 
+#include "god_finger/physics/world_params.h"
+#include "grasp_constraint.h"
 #include "pad_constraints.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -28,7 +33,10 @@ class ContactSolver : public btSequentialImpulseConstraintSolver
 {
  public:
   // `pads`: this step's pads (owned by the world), or null; outlives the solver.
-  ContactSolver(int support_passes, PadConstraints* pads) : pads_(pads), support_passes_(support_passes) {}
+  ContactSolver(int support_passes, GraspConstraint grasp, PadConstraints* pads)
+      : pads_(pads), support_passes_(support_passes), grasp_(grasp)
+  {
+  }
 
   btScalar solveGroup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds, int num_manifolds,
                       btTypedConstraint** constraints, int num_constraints, const btContactSolverInfo& info,
@@ -61,6 +69,10 @@ class ContactSolver : public btSequentialImpulseConstraintSolver
                                              btPersistentManifold** manifolds, int num_manifolds,
                                              btTypedConstraint** constraints, int num_constraints,
                                              const btContactSolverInfo& info, btIDebugDraw* debug_draw) override;
+  btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int num_bodies,
+                                btPersistentManifold** manifolds, int num_manifolds, btTypedConstraint** constraints,
+                                int num_constraints, const btContactSolverInfo& info,
+                                btIDebugDraw* debug_draw) override;
 
  private:
   // The pad a torsional row belongs to, or null.
@@ -70,6 +82,8 @@ class ContactSolver : public btSequentialImpulseConstraintSolver
   // when there is no pad.
   std::vector<StepPad*> pad_of_contact_row_;
   int support_passes_;
+  GraspConstraint grasp_;
+  GraspConstraints grasps_;  // this solve's (grasp_: aggregate)
   std::vector<char> supported_;
   int proxy_points_ = 0;
   int rows_ = 0;

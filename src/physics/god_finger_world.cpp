@@ -115,7 +115,7 @@ struct GodFingerWorld::Impl
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
     dispatcher->setNearCallback(&Impl::nearCallback);
     broadphase = std::make_unique<btDbvtBroadphase>();
-    solver = std::make_unique<ContactSolver>(params.support_passes, &pads);
+    solver = std::make_unique<ContactSolver>(params.support_passes, params.grasp_constraint, &pads);
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
     world->setGravity(toBullet(params.gravity));
     world->getSolverInfo().m_numIterations = params.solver_iterations;

@@ -36,6 +36,36 @@ bool parsePadSolver(const std::string& text, PadSolver* solver)
   return false;
 }
 
+const char* graspConstraintName(GraspConstraint mode)
+{
+  return mode == GraspConstraint::kAggregate ? "aggregate" : "off";
+}
+
+constexpr GraspConstraint kGraspConstraints[] = {GraspConstraint::kOff, GraspConstraint::kAggregate};
+
+std::string graspConstraintNames()
+{
+  std::string names;
+  for (const GraspConstraint mode : kGraspConstraints)
+  {
+    names += (names.empty() ? "" : ", ") + std::string(graspConstraintName(mode));
+  }
+  return names;
+}
+
+bool parseGraspConstraint(const std::string& text, GraspConstraint* mode)
+{
+  for (const GraspConstraint candidate : kGraspConstraints)
+  {
+    if (text == graspConstraintName(candidate))
+    {
+      *mode = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
 const ParameterTable<WorldParams>& worldParameterTable()
 {
   using P = WorldParams;
@@ -51,6 +81,11 @@ const ParameterTable<WorldParams>& worldParameterTable()
             "god_finger: a solver point per sub-god-object (the paper's), or one pad constraint per contact area",
             [](const P& p) -> std::string { return padSolverName(p.pad_solver); },
             [](P* p, const std::string& text) { return parsePadSolver(text, &p->pad_solver); }),
+        choiceRow<P>(
+            "grasp_constraint", graspConstraintNames(),
+            "god_finger pads: opposed pads on one body resist its twist each alone (off) or as one row (aggregate)",
+            [](const P& p) -> std::string { return graspConstraintName(p.grasp_constraint); },
+            [](P* p, const std::string& text) { return parseGraspConstraint(text, &p->grasp_constraint); }),
         integerRow<P>("solver_iterations", closed(1, 1000),
                       "sequential-impulse iterations per step (a pinch creeps with too few)",
                       [](P& p) -> int& { return p.solver_iterations; }),

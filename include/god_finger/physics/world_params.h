@@ -66,6 +66,20 @@ std::string padSolverNames();  // "points, constraint"
 // False (and `solver` unchanged) if `text` names none.
 bool parsePadSolver(const std::string& text, PadSolver* solver);
 
+// How the pads of several fingers on one dynamic body reach the solver (src/physics/
+// grasp_constraint.h): kOff, each pad's twist row alone (bounded by its own mu N L); kAggregate,
+// the twist rows of pads whose normals are (anti)parallel on one body (a pinch) solved as one
+// row about the grasp axis, bounded by the sum of the pads' bounds.
+enum class GraspConstraint
+{
+  kOff,
+  kAggregate,
+};
+const char* graspConstraintName(GraspConstraint mode);
+std::string graspConstraintNames();  // "off, aggregate"
+// False (and `mode` unchanged) if `text` names none.
+bool parseGraspConstraint(const std::string& text, GraspConstraint* mode);
+
 // Sleeping (Bullet's deactivation, with our own time): a dynamic body slower than `speed` and
 // `angular_speed` for `time` falls asleep with its island (the bodies whose bounding boxes
 // overlap, through dynamic bodies). A sleeping body costs no collision detection with other
@@ -117,6 +131,8 @@ struct WorldParams
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  // m/s^2, finite
   ContactModel model = ContactModel::kGodFinger;
   PadSolver pad_solver = PadSolver::kConstraint;
+  // Off until it measures better (bench/REPORT.md, "Human-like operator"; grasp_constraint.h).
+  GraspConstraint grasp_constraint = GraspConstraint::kOff;
   ContactParams contact;
   CouplingParams coupling;
   SoftFingerParams soft_finger;
