@@ -17,6 +17,15 @@
 // Pads whose normals are not parallel to g (within 2.6 degrees) and single pads keep their own
 // rows, as do every pad's tilt rows; linear friction rows are Bullet's.
 //
+// Measured (bench/operator_bench.cpp, layout god_finger/aggregate against god_finger; 20
+// operators): no steadier. The same twist limit (9.913 mm, the perfect hand), and the same share
+// of operators keeping the turn within 0.05 rad at every squeeze: 0/20 at 10, 12 mm, 1/20 at 13,
+// 3/20 at 14, 9/20 at 15, 13/20 at the target 15.86 and at 16, 20/20 at 20 mm; the turns differ
+// by a few per cent per run. As it must: about the pinch normal the pads' tangential frictions
+// have no lever (both contacts lie on the axis, but for a millimetre of misalignment, which the
+// linear friction rows already hold), so the grasp's torque is only the pads' torsion, and the
+// sum of their bounds is what the independent rows reach once converged. Hence off by default.
+//
 // Assumes the proxies do not turn (zero inverse inertia, proxy.cpp): a twist row's velocity is
 // the body's angular velocity about its axis.
 // Units: Bullet's (SI, world frame); T in N m s. Real-time safe once its lists have grown.

@@ -131,7 +131,7 @@ struct WorldParams
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  // m/s^2, finite
   ContactModel model = ContactModel::kGodFinger;
   PadSolver pad_solver = PadSolver::kConstraint;
-  // Off until it measures better (bench/REPORT.md, "Human-like operator"; grasp_constraint.h).
+  // Off: measured no steadier on the operator benchmark (src/physics/grasp_constraint.h).
   GraspConstraint grasp_constraint = GraspConstraint::kOff;
   ContactParams contact;
   CouplingParams coupling;
