@@ -6,34 +6,51 @@
 
 namespace god_finger
 {
+namespace
+{
+// A choice's names, "a, b", and its parse, for an enum listed in `all` and named by `name`.
+template <typename Choice, std::size_t N>
+std::string namesOf(const Choice (&all)[N], const char* (*name)(Choice))
+{
+  std::string names;
+  for (const Choice choice : all)
+  {
+    names += (names.empty() ? "" : ", ") + std::string(name(choice));
+  }
+  return names;
+}
+
+template <typename Choice, std::size_t N>
+bool parseChoice(const std::string& text, const Choice (&all)[N], const char* (*name)(Choice), Choice* choice)
+{
+  for (const Choice candidate : all)
+  {
+    if (text == name(candidate))
+    {
+      *choice = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
+constexpr PadSolver kPadSolvers[] = {PadSolver::kPoints, PadSolver::kConstraint};
+constexpr GraspConstraint kGraspConstraints[] = {GraspConstraint::kOff, GraspConstraint::kAggregate};
+}  // namespace
+
 const char* padSolverName(PadSolver solver)
 {
   return solver == PadSolver::kConstraint ? "constraint" : "points";
 }
 
-constexpr PadSolver kPadSolvers[] = {PadSolver::kPoints, PadSolver::kConstraint};
-
 std::string padSolverNames()
 {
-  std::string names;
-  for (const PadSolver solver : kPadSolvers)
-  {
-    names += (names.empty() ? "" : ", ") + std::string(padSolverName(solver));
-  }
-  return names;
+  return namesOf(kPadSolvers, padSolverName);
 }
 
 bool parsePadSolver(const std::string& text, PadSolver* solver)
 {
-  for (const PadSolver candidate : kPadSolvers)
-  {
-    if (text == padSolverName(candidate))
-    {
-      *solver = candidate;
-      return true;
-    }
-  }
-  return false;
+  return parseChoice(text, kPadSolvers, padSolverName, solver);
 }
 
 const char* graspConstraintName(GraspConstraint mode)
@@ -41,29 +58,14 @@ const char* graspConstraintName(GraspConstraint mode)
   return mode == GraspConstraint::kAggregate ? "aggregate" : "off";
 }
 
-constexpr GraspConstraint kGraspConstraints[] = {GraspConstraint::kOff, GraspConstraint::kAggregate};
-
 std::string graspConstraintNames()
 {
-  std::string names;
-  for (const GraspConstraint mode : kGraspConstraints)
-  {
-    names += (names.empty() ? "" : ", ") + std::string(graspConstraintName(mode));
-  }
-  return names;
+  return namesOf(kGraspConstraints, graspConstraintName);
 }
 
 bool parseGraspConstraint(const std::string& text, GraspConstraint* mode)
 {
-  for (const GraspConstraint candidate : kGraspConstraints)
-  {
-    if (text == graspConstraintName(candidate))
-    {
-      *mode = candidate;
-      return true;
-    }
-  }
-  return false;
+  return parseChoice(text, kGraspConstraints, graspConstraintName, mode);
 }
 
 const ParameterTable<WorldParams>& worldParameterTable()
