@@ -151,7 +151,7 @@ struct ServoNode::Impl
     pose->pose.orientation.w = 1.0;
     interface.pose.publish(pose);
 
-    interface.feedback.publish(feedbackMessage(stamp, sample.user_force));
+    interface.feedback.publish(feedbackMessage(stamp, sample.user_force, sample.user_torque));
     interface.proxy.publish(proxyMessage(stamp, sample.proxy_position));
 
     geometry_msgs::TransformStamped transform;
@@ -202,6 +202,7 @@ struct ServoNode::Impl
     add("dropped_samples", std::to_string(counters.dropped_samples.load()));
     add("dropped_snapshots", std::to_string(counters.dropped_snapshots.load()));
     add("rejected_readings", std::to_string(counters.rejected_readings.load()));
+    add("rejected_orientations", std::to_string(counters.rejected_orientations.load()));  // ignored, position taken
     add("rejected_forces", std::to_string(counters.rejected_forces.load()));
     add("force_stopped", counters.force_stopped ? "true" : "false");  // /stop_force
     // The multi-rate scheme: interface-ticks whose force the haptic side rendered because the
