@@ -148,7 +148,7 @@ struct ServoNode::Impl
     pose->header.stamp = stamp;
     pose->header.frame_id = "world";
     pose->pose.position = toPoint(sample.interface_position);
-    pose->pose.orientation.w = 1.0;
+    pose->pose.orientation = toQuaternion(sample.interface_orientation);
     interface.pose.publish(pose);
 
     interface.feedback.publish(feedbackMessage(stamp, sample.user_force, sample.user_torque));
@@ -158,7 +158,7 @@ struct ServoNode::Impl
     transform.header = pose->header;
     transform.child_frame_id = interface.interface_frame;
     transform.transform.translation = toVector(sample.interface_position);
-    transform.transform.rotation.w = 1.0;
+    transform.transform.rotation = pose->pose.orientation;
     broadcaster.sendTransform(transform);
   }
 

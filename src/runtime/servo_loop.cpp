@@ -543,6 +543,8 @@ void ServoLoop::decide(long tick, double time, double period_us)
     sample->applied_force = applied_[i];
     sample->commanded_force = guards_[i].commanded();
     sample->interface_position = render.target;
+    sample->interface_orientation =
+        frame_.oriented[i] ? frame_.orientations[i] : Eigen::Quaterniond(Eigen::Quaterniond::Identity());
     sample->proxy_position = proxy.proxy_position;
     sample->user_force = force;
     sample->user_torque = proxy.user_torque;

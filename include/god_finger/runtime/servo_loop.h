@@ -160,8 +160,10 @@ struct ServoSample
   // watchdog, soft start, continuous budget, rate limit and stop that give the next applied_force).
   Eigen::Vector3d commanded_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();  // m, world (the device mapped)
-  Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();      // m, world
-  Eigen::Vector3d user_force = Eigen::Vector3d::Zero();          // N, world: the coupling's reaction
+  // World: an oriented finger's mapped orientation (the finger frame); identity for a 3-DOF one.
+  Eigen::Quaterniond interface_orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world
+  Eigen::Vector3d user_force = Eigen::Vector3d::Zero();      // N, world: the coupling's reaction
   // Oriented fingers: the rotational coupling's torque on the hand (N m, world), and the torque
   // sent with the next update (N m, device frame: on the profile's axes, saturated). Zero else.
   Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();
