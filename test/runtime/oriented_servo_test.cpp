@@ -188,6 +188,9 @@ TEST(OrientedServo, AnOrientedFakeScriptRollsTheFingerAndTheAreaMoves)
   EXPECT_NEAR(rolled, kRoll, 1e-3);
   const double travel = (after.contacts[0].point - before.contacts[0].point).norm();
   EXPECT_NEAR(travel, rollParams().finger.fingertip_radius * kRoll, 1e-4) << "travel " << travel;
+  RecordProperty("measured", "oriented servo: area moved " + std::to_string(travel) + " m (R_f theta " +
+                                 std::to_string(rollParams().finger.fingertip_radius * kRoll) + "), rolled " +
+                                 std::to_string(rolled) + " rad");
   // Across the finger (y), the way the pulp turned; not along it.
   EXPECT_LT(std::abs(after.contacts[0].point.x() - before.contacts[0].point.x()), 1e-4);
 }
@@ -222,6 +225,10 @@ TEST(OrientedServo, TheTorqueReachesTheDeviceOnTheProfilesAxesOnly)
   auto loop = makeLoop(std::move(device), profile, WorkspaceMapping(turned));
   Eigen::Vector3d commanded = Eigen::Vector3d::Zero();
   double peak = 0.0;  // N m, the largest device torque during the roll
+  // N m, world: the extremes of the torque on the hand about the roll's axis as the roll starts
+  // (0.8 s to 1 s): the proxy lags the device, so the hand is pulled back (-x) first.
+  double start_min = 0.0;
+  double start_max = 0.0;
   run(*loop, 0, ticksOf(0.8));
   for (long k = ticksOf(0.8); k < ticksOf(1.8); ++k)
   {
@@ -232,6 +239,11 @@ TEST(OrientedServo, TheTorqueReachesTheDeviceOnTheProfilesAxesOnly)
     // The world's x is the device's -y: the torque on the hand's roll axis, mapped.
     ASSERT_NEAR(commanded.y(), -on_hand.x(), 1e-15) << "tick " << k;
     peak = std::max(peak, std::abs(fake->lastTorque().y()));
+    if (k < ticksOf(1.0))
+    {
+      start_min = std::min(start_min, on_hand.x());
+      start_max = std::max(start_max, on_hand.x());
+    }
   }
   // Held after the roll: the torque path of a tick allocates nothing.
   run(*loop, ticksOf(1.8), ticksOf(0.2));
@@ -245,6 +257,13 @@ TEST(OrientedServo, TheTorqueReachesTheDeviceOnTheProfilesAxesOnly)
   // The spring's lag resists the roll (b_r w plus the proxy's inertia): measured 1.4e-4 N m.
   EXPECT_GT(peak, 5e-5);
   EXPECT_LT(peak, 1e-3);
+  // It resists the roll: against it first, the underdamped spring's overshoot (damping ratio
+  // 0.45: about 20 %) the other way after.
+  EXPECT_LT(start_min, -5e-5);
+  EXPECT_LT(start_max, -0.5 * start_min);
+  RecordProperty("measured", "oriented servo: device torque peak " + std::to_string(peak) +
+                                 " N m during the roll; on the hand at its start " + std::to_string(start_min) +
+                                 " to " + std::to_string(start_max) + " N m about x");
 
   // Saturated at max_torque: a limit under the peak holds it there.
   profile.max_torque = 0.25 * peak;
