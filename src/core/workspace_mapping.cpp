@@ -68,4 +68,14 @@ Eigen::Vector3d WorkspaceMapping::forceToDevice(const Eigen::Vector3d& world_for
 {
   return params_.force_scale * (rotation_.transpose() * world_force);
 }
+
+Eigen::Quaterniond WorkspaceMapping::orientationToWorld(const Eigen::Quaterniond& device_orientation) const
+{
+  return params_.rotation * device_orientation;
+}
+
+Eigen::Vector3d WorkspaceMapping::torqueToDevice(const Eigen::Vector3d& world_torque) const
+{
+  return rotation_.transpose() * world_torque;
+}
 }  // namespace god_finger

@@ -58,8 +58,33 @@ WaypointPath readScript(const ParameterSource& source, const Eigen::Vector3d& fa
   }
 }
 
-FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand)
-    : params_(params), hand_(std::move(hand)), position_(hand_.at(0.0))
+std::optional<OrientationPath> readOrientationScript(const ParameterSource& source)
+{
+  std::vector<std::vector<double>> rows;
+  if (!readTable(source, "orientation_script", 5, "a list of [t, w, x, y, z] orientation waypoints (s, quaternion)",
+                 &rows))
+  {
+    return std::nullopt;
+  }
+  std::vector<OrientationWaypoint> waypoints;
+  for (const std::vector<double>& row : rows)
+  {
+    waypoints.push_back({row[0], Eigen::Quaterniond(row[1], row[2], row[3], row[4])});
+  }
+  try
+  {
+    return OrientationPath(waypoints);
+  }
+  catch (const InputError& error)
+  {
+    throw InputError("parameter '" + source.fullName("orientation_script") + "': " + error.what());
+  }
+}
+
+FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand) : FakeDevice(params, std::move(hand), {}) {}
+
+FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand, std::optional<OrientationPath> orientation)
+    : params_(params), hand_(std::move(hand)), orientation_(std::move(orientation)), position_(hand_.at(0.0))
 {
   const std::string error = validate(params);
   if (!error.empty())
@@ -81,8 +106,16 @@ bool FakeDevice::setHandTarget(const Eigen::Vector3d& position)
   return true;
 }
 
+DeviceReading FakeDevice::updateWrench(double time, const Eigen::Vector3d& force, const Eigen::Vector3d& torque)
+{
+  DeviceReading reading = update(time, force);
+  torque_ = torque;
+  return reading;
+}
+
 DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
 {
+  torque_.setZero();
   bool has_target = false;
   Eigen::Vector3d target;
   {
@@ -122,6 +155,11 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
   DeviceReading reading;
   reading.position = position_;
   reading.velocity = velocity_;
+  if (orientation_)
+  {
+    reading.has_orientation = true;
+    reading.orientation = orientation_->at(last_time_ - start_time_);
+  }
   return reading;
 }
 }  // namespace god_finger

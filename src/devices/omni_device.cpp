@@ -42,6 +42,23 @@ Eigen::Vector3d OmniDevice::omniToDevice(const std::array<double, 3>& omni_mm, c
   return Eigen::Vector3d(-(omni_mm[2] - center_mm[2]), -(omni_mm[0] - center_mm[0]), omni_mm[1] - center_mm[1]) * 1e-3;
 }
 
+Eigen::Quaterniond OmniDevice::stylusToDevice(const std::array<double, 9>& rotation)
+{
+  // Omni axes to device axes (device = (-z, -x, y)), and the finger's axes in the stylus frame
+  // (columns: x = -z_s, y = x_s, z = -y_s).
+  Eigen::Matrix3d omni_to_device;
+  omni_to_device << 0, 0, -1, -1, 0, 0, 0, 1, 0;
+  Eigen::Matrix3d finger_in_stylus;
+  finger_in_stylus << 0, 1, 0, 0, 0, -1, -1, 0, 0;
+  const Eigen::Map<const Eigen::Matrix3d> stylus(rotation.data());  // column-major, as the HD API's
+  const Eigen::Matrix3d finger = omni_to_device * stylus * finger_in_stylus;
+  if (!finger.allFinite())
+  {
+    return Eigen::Quaterniond(NAN, NAN, NAN, NAN);
+  }
+  return Eigen::Quaterniond(finger);
+}
+
 void OmniDevice::start()
 {
   const std::string shown_name = params_.device_name.empty() ? "the default device" : "'" + params_.device_name + "'";
@@ -106,6 +123,11 @@ DeviceReading OmniDevice::update(double time, const Eigen::Vector3d& force)
   reading.position = omniToDevice(last_frame_.position_mm, params_.center_mm);
   reading.velocity = velocity_.update(time, reading.position);
   reading.buttons = last_frame_.buttons;
+  reading.has_orientation = last_frame_.has_rotation;
+  if (reading.has_orientation)
+  {
+    reading.orientation = stylusToDevice(last_frame_.rotation);
+  }
   return reading;
 }
 }  // namespace god_finger

@@ -14,7 +14,11 @@ class PoseSource : public HandSource
 {
  public:
   PoseSource(const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed, std::function<double()> now)
-      : params_(params), feed_(std::move(feed)), now_(std::move(now)), last_(params.fingers.size(), params.rest)
+      : params_(params),
+        feed_(std::move(feed)),
+        now_(std::move(now)),
+        last_(params.fingers.size(), params.rest),
+        last_orientation_(params.fingers.size())
   {
   }
   std::string name() const override
@@ -37,8 +41,11 @@ class PoseSource : public HandSource
       if (reading.tracked)
       {
         last_[i] = pose.position;
+        last_orientation_[i] = pose;
       }
       reading.position = last_[i];
+      reading.has_orientation = last_orientation_[i].has_orientation;
+      reading.orientation = last_orientation_[i].orientation;
       reading.velocity.setZero();  // the loop estimates it from the positions
       reading.buttons = 0;
     }
@@ -48,7 +55,8 @@ class PoseSource : public HandSource
   PoseSourceParams params_;
   std::shared_ptr<PoseFeed> feed_;
   std::function<double()> now_;
-  std::vector<Eigen::Vector3d> last_;  // m: each finger's last tracked position
+  std::vector<Eigen::Vector3d> last_;         // m: each finger's last tracked position
+  std::vector<FingerPose> last_orientation_;  // each finger's last tracked pose, for its orientation
 };
 }  // namespace
 
@@ -98,6 +106,12 @@ PoseSourceParams readPoseSourceParams(const ParameterSource& source)
   readRows(source, poseSourceParameterTable(), &params);
   params.rest = readVector(source, "rest", params.rest);
   return params;
+}
+
+void setPoseOrientation(double x, double y, double z, double w, FingerPose* pose)
+{
+  pose->has_orientation = !(x == 0.0 && y == 0.0 && z == 0.0 && w == 0.0);
+  pose->orientation = pose->has_orientation ? Eigen::Quaterniond(w, x, y, z) : Eigen::Quaterniond::Identity();
 }
 
 void PoseFeed::write(const std::vector<FingerPose>& poses)

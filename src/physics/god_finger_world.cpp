@@ -6,6 +6,7 @@
 #include "dormant_bodies.h"
 #include "finger_contact_friction.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/orientation_path.h"
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/physics/scene_budget.h"
@@ -695,8 +696,7 @@ void GodFingerWorld::setInterfaceTarget(int interface, const Eigen::Vector3d& po
 void GodFingerWorld::setInterfaceTarget(int interface, const Eigen::Vector3d& position,
                                         const Eigen::Quaterniond& orientation)
 {
-  const double norm = orientation.norm();
-  if (!position.allFinite() || !orientation.coeffs().allFinite() || !(norm >= 0.5 && norm <= 2.0))
+  if (!position.allFinite() || !usableOrientation(orientation))
   {
     ++impl_->rejected_targets;
     return;

@@ -59,6 +59,7 @@ struct PhysicsNode::Impl
     bool stepped = false;  // in the world, so feedback and proxy are published
     ros::Time feedback_stamp;
     Eigen::Vector3d user_force = Eigen::Vector3d::Zero();      // N, world
+    Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();     // N m, world (an oriented finger's)
     Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world
   };
 
@@ -226,6 +227,7 @@ struct PhysicsNode::Impl
       const InterfaceState& state = world->interfaceState(interface.index);
       interface.feedback_stamp = interface.target_stamp;
       interface.user_force = state.user_force;
+      interface.user_torque = state.user_torque;
       interface.proxy_position = state.proxy_position;
     }
   }
@@ -243,7 +245,8 @@ struct PhysicsNode::Impl
       // Stamped with the pose it answers (the device state's time, through the haptic node),
       // so that the driver can measure the whole round trip.
       interface.feedback_publisher.publish(
-          feedbackMessage(interface.feedback_stamp.isZero() ? stamp : interface.feedback_stamp, interface.user_force));
+          feedbackMessage(interface.feedback_stamp.isZero() ? stamp : interface.feedback_stamp, interface.user_force,
+                          interface.user_torque));
       interface.proxy_publisher.publish(proxyMessage(stamp, interface.proxy_position));
     }
   }

@@ -50,6 +50,8 @@ std::shared_ptr<void> connectTf(ros::NodeHandle nh, const PoseSourceParams& para
                                            params.reference_frame, params.frames[i], ros::Time(0));
                                        const geometry_msgs::Vector3& t = transform.transform.translation;
                                        pose.position = Eigen::Vector3d(t.x, t.y, t.z);
+                                       const geometry_msgs::Quaternion& q = transform.transform.rotation;
+                                       setPoseOrientation(q.x, q.y, q.z, q.w, &pose);
                                        pose.stamp = steadyStamp(transform.header.stamp);
                                      }
                                      catch (const tf2::TransformException&)
@@ -85,6 +87,8 @@ std::shared_ptr<void> connectPoseFeed(ros::NodeHandle nh, const PoseSourceParams
     {
       const geometry_msgs::Point& p = message->poses[i].position;
       (*poses)[i].position = Eigen::Vector3d(p.x, p.y, p.z);
+      const geometry_msgs::Quaternion& q = message->poses[i].orientation;
+      setPoseOrientation(q.x, q.y, q.z, q.w, &(*poses)[i]);
       (*poses)[i].stamp = stamp;
     }
     target->write(*poses);

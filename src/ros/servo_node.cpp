@@ -148,17 +148,17 @@ struct ServoNode::Impl
     pose->header.stamp = stamp;
     pose->header.frame_id = "world";
     pose->pose.position = toPoint(sample.interface_position);
-    pose->pose.orientation.w = 1.0;
+    pose->pose.orientation = toQuaternion(sample.interface_orientation);
     interface.pose.publish(pose);
 
-    interface.feedback.publish(feedbackMessage(stamp, sample.user_force));
+    interface.feedback.publish(feedbackMessage(stamp, sample.user_force, sample.user_torque));
     interface.proxy.publish(proxyMessage(stamp, sample.proxy_position));
 
     geometry_msgs::TransformStamped transform;
     transform.header = pose->header;
     transform.child_frame_id = interface.interface_frame;
     transform.transform.translation = toVector(sample.interface_position);
-    transform.transform.rotation.w = 1.0;
+    transform.transform.rotation = pose->pose.orientation;
     broadcaster.sendTransform(transform);
   }
 
@@ -202,6 +202,7 @@ struct ServoNode::Impl
     add("dropped_samples", std::to_string(counters.dropped_samples.load()));
     add("dropped_snapshots", std::to_string(counters.dropped_snapshots.load()));
     add("rejected_readings", std::to_string(counters.rejected_readings.load()));
+    add("rejected_orientations", std::to_string(counters.rejected_orientations.load()));  // ignored, position taken
     add("rejected_forces", std::to_string(counters.rejected_forces.load()));
     add("force_stopped", counters.force_stopped ? "true" : "false");  // /stop_force
     // The multi-rate scheme: interface-ticks whose force the haptic side rendered because the

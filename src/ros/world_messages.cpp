@@ -47,12 +47,14 @@ visualization_msgs::MarkerArrayPtr markerMessage(const SceneDescription& scene, 
   return markers;
 }
 
-geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Eigen::Vector3d& user_force)
+geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Eigen::Vector3d& user_force,
+                                                const Eigen::Vector3d& user_torque)
 {
   geometry_msgs::WrenchStampedPtr feedback(new geometry_msgs::WrenchStamped);
   feedback->header.stamp = stamp;
   feedback->header.frame_id = "world";
   feedback->wrench.force = toVector(user_force);
+  feedback->wrench.torque = toVector(user_torque);
   return feedback;
 }
 

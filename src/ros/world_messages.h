@@ -24,7 +24,10 @@ god_finger::ContactAreaArrayPtr contactAreaMessage(const SceneDescription& scene
 visualization_msgs::MarkerArrayPtr markerMessage(const SceneDescription& scene, const WorldSnapshot& world,
                                                  double proxy_radius, const ros::Time& stamp);
 // An interface's feedback (the force on the hand, N) and proxy (m), in `world`.
-geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Eigen::Vector3d& user_force);
+// The force (N) and, for an oriented finger, the rotational coupling's torque (N m; zero for a
+// 3-DOF finger) on the hand, world frame.
+geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Eigen::Vector3d& user_force,
+                                                const Eigen::Vector3d& user_torque);
 geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position);
 std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescription& scene, const WorldSnapshot& world,
                                                             const ros::Time& stamp);

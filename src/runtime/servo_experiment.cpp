@@ -1,6 +1,5 @@
 #include "god_finger/runtime/servo_experiment.h"
 
-#include "god_finger/core/input_error.h"
 #include "god_finger/runtime/servo_loop.h"
 
 #include <cmath>
@@ -10,18 +9,19 @@ namespace god_finger
 ExperimentResult runServoExperiment(const ExperimentOptions& options, const FakeDeviceParams& handle)
 {
   const ScenarioSetup setup = loadScenario(options);
-  if (!setup.orientations.empty())
-  {
-    throw InputError(std::string("scenario '") + scenarioName(options.scenario) +
-                     "' orients its fingers, and the fake device has no orientation yet: run it with --hand ideal");
-  }
   const WorldParams params = scenarioParams(options);
   std::vector<ServoInterface> interfaces;
   for (std::size_t f = 0; f < setup.fingers.size(); ++f)
   {
     ServoInterface interface;
     interface.name = "finger" + std::to_string(f);
-    auto device = std::make_unique<FakeDevice>(handle, setup.fingers[f]);
+    // An oriented scenario's fingers (roll_finger) report the script's orientation too.
+    std::optional<OrientationPath> orientation;
+    if (f < setup.orientations.size())
+    {
+      orientation = setup.orientations[f];
+    }
+    auto device = std::make_unique<FakeDevice>(handle, setup.fingers[f], orientation);
     device->setScriptStart(0.0);
     interface.device = std::move(device);
     interface.profile.coupling = params.coupling;  // the scenario's coupling, as the ideal hand's

@@ -1,6 +1,7 @@
 #include "god_finger/runtime/servo_loop.h"
 
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/orientation_path.h"
 #include "god_finger/core/workspace_bound.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
@@ -125,6 +126,8 @@ void ServoLoop::prepare()
   frame_.targets.resize(n);
   frame_.velocities.resize(n, Eigen::Vector3d::Zero());
   frame_.let_go.resize(n, 0);
+  frame_.orientations.resize(n, Eigen::Quaterniond::Identity());
+  frame_.oriented.resize(n, 0);
   for (std::size_t i = 0; i < n; ++i)
   {
     ServoInterface& interface = interfaces_[i];
@@ -297,12 +300,15 @@ void ServoLoop::readDevices(double time)
   {
     ServoInterface& interface = interfaces_[i];
     applied_[i] = guards_[i].output(time);
-    const DeviceReading reading = interface.device->update(time, applied_[i]);
+    Render& render = render_[i];
+    // The torque decided for the last reading (zero for a device with no torque axes, and while
+    // the force is stopped).
+    const Eigen::Vector3d torque = guards_[i].stopped() ? Eigen::Vector3d::Zero() : render.torque;
+    const DeviceReading reading = interface.device->updateWrench(time, applied_[i], torque);
     read_at_[i] = steadySeconds();
     // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
     const WorkspaceBound bound = boundToWorkspace(reading.position, interface.profile, interface.mapping);
     const Eigen::Vector3d target = interface.mapping.toWorld(bound.position);
-    Render& render = render_[i];
     render.previous_target = render.target;
     // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
     // non-finite device state): its buttons are not pressed, the world gets the last good
@@ -336,6 +342,19 @@ void ServoLoop::readDevices(double time)
       cycle_model = cycle_model || (pressed & 1u);
       reset = reset || (pressed & 2u);
       toggle_stop = toggle_stop || (pressed & 4u);
+      if (reading.has_orientation && usableOrientation(reading.orientation))
+      {
+        render.device_orientation = reading.orientation.normalized();
+        frame_.orientations[i] = interface.mapping.orientationToWorld(render.device_orientation);
+        frame_.oriented[i] = 1;
+      }
+      else if (reading.has_orientation)
+      {
+        // Ignored, counted: the last good orientation stays, and the samples carry it.
+        ++counters_.rejected_orientations;
+        readings_[i].has_orientation = frame_.oriented[i] != 0;
+        readings_[i].orientation = render.device_orientation;
+      }
     }
     else
     {
@@ -371,15 +390,25 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
   counters_.skipped_targets += consecutive ? 0 : frame.tick - last_frame_tick_ - 1;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
-    if (consecutive && !frame.let_go[i])
+    const bool by_difference = consecutive && !frame.let_go[i];
+    if (by_difference && frame.oriented[i])
+    {
+      world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i], frame.orientations[i]);
+    }
+    else if (by_difference)
     {
       world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i]);
     }
     else
     {
       // The skipped ticks' motion is not one step's: the damping takes the device's velocity
-      // (a let-go finger's: zero).
+      // (a let-go finger's: zero; the rotational coupling's takes the orientation's change over
+      // the skipped ticks).
       world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i], frame.velocities[i]);
+      if (frame.oriented[i])
+      {
+        world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i], frame.orientations[i]);
+      }
     }
   }
   last_frame_tick_ = frame.tick;
@@ -415,6 +444,7 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
     const InterfaceState& state = world_->interfaceState(static_cast<int>(i));
     out->proxies[i].proxy_position = state.proxy_position;
     out->proxies[i].user_force = state.user_force;
+    out->proxies[i].user_torque = state.user_torque;
   }
   if (frame.tick >= next_snapshot_tick_)
   {
@@ -506,6 +536,8 @@ void ServoLoop::decide(long tick, double time, double period_us)
       }
     }
     render.force = force;
+    // The torque: the last completed step's, in the device frame, on the profile's axes only.
+    render.torque = renderableTorque(interfaces_[i].profile, interfaces_[i].mapping.torqueToDevice(proxy.user_torque));
     if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force) + render.wall_force))
     {
       ++counters_.rejected_forces;
@@ -524,8 +556,12 @@ void ServoLoop::decide(long tick, double time, double period_us)
     sample->applied_force = applied_[i];
     sample->commanded_force = guards_[i].commanded();
     sample->interface_position = render.target;
+    sample->interface_orientation =
+        frame_.oriented[i] ? frame_.orientations[i] : Eigen::Quaterniond(Eigen::Quaterniond::Identity());
     sample->proxy_position = proxy.proxy_position;
     sample->user_force = force;
+    sample->user_torque = proxy.user_torque;
+    sample->commanded_torque = render.torque;
     sample->read_at = read_at_[i];
     sample->period_us = period_us;
     sample->latency_us = 1e6 * ((params_.simulated_time ? commanded_at : render.ready_at) - read_at_[i]);

@@ -5,6 +5,7 @@
 // round trip: 1-2 ticks with nodelets, more over a network). A run is stable when the handle
 // settles (peak-to-peak over the last 0.3 s under 10 um). The test finds the first unstable k
 // for each delay and checks that the profile's k stays a factor of 4 below it.
+#include "device_profile_file.h"
 #include "god_finger/core/device_profile.h"
 #include "god_finger/devices/fake_device.h"
 
@@ -21,25 +22,6 @@ namespace god_finger
 {
 namespace
 {
-// The numbers of a flat `key: value  # comment` YAML file, as the parameters a launch loads
-// (lists such as workspace_offset are not this test's and are left out).
-MapParameterSource readProfile(const std::string& path)
-{
-  std::ifstream file(path);
-  MapParameterSource values(path + ": ");
-  std::string line;
-  while (std::getline(file, line))
-  {
-    const auto colon = line.find(':');
-    if (line.empty() || line[0] == '#' || colon == std::string::npos || line.find('[', colon) < line.find('#', colon))
-    {
-      continue;
-    }
-    values.set(line.substr(0, colon), ParameterValue::of(std::stod(line.substr(colon + 1))));
-  }
-  return values;
-}
-
 // The wall is a proxy held at z = 0 by the one coupling function (core/virtual_coupling.h),
 // unsaturated so that only the loop's dynamics limit the stiffness.
 bool settles(const FakeDeviceParams& params, double stiffness, double damping, int delay)
@@ -85,7 +67,8 @@ bool settles(const FakeDeviceParams& params, double stiffness, double damping, i
 
 TEST(CouplingStability, ProfileStiffnessStaysAFactorOfFourBelowTheLimit)
 {
-  const MapParameterSource profile = readProfile(std::string(GOD_FINGER_SOURCE_DIR) + "/config/devices/fake.yaml");
+  const MapParameterSource profile =
+      test::readDeviceProfileSource(std::string(GOD_FINGER_SOURCE_DIR) + "/config/devices/fake.yaml");
   const FakeDeviceParams params = readFakeDeviceParams(profile);
   const DeviceProfile device = readDeviceProfile(profile);
   const double profile_k = device.coupling.stiffness;

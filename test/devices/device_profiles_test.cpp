@@ -53,13 +53,52 @@ TEST(DeviceProfiles, ShippedDeviceProfilesSetOnlyRowsOfTheProfileTable)
       }
       EXPECT_TRUE(known) << entry.path() << ": '" << match[1]
                          << "' is no row of deviceProfileTable() (or, for the fake device, of its own table)";
-      source.set(match[1], ParameterValue::of(std::stod(line.substr(line.find(':') + 1))));
+      // The value: a number, or a choice's name (torque_axes), up to the comment.
+      const std::regex value("^\\w+:\\s*([^\\s#]+)");
+      std::smatch text;
+      ASSERT_TRUE(std::regex_search(line, text, value)) << entry.path() << ": " << line;
+      source.set(match[1], parseValueText(text[1]));
     }
     EXPECT_NO_THROW(readDeviceProfile(source)) << entry.path();
     EXPECT_NO_THROW(readFakeDeviceParams(source)) << entry.path();
     ++files;
   }
   EXPECT_EQ(files, 3);
+}
+
+TEST(DeviceProfiles, TheOmniAndTheFalconRenderForceOnly)
+{
+  for (const char* name : {"omni.yaml", "falcon.yaml"})
+  {
+    std::ifstream in(std::string(GOD_FINGER_SOURCE_DIR) + "/config/devices/" + name);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_NE(text.str().find("\ntorque_axes: none"), std::string::npos) << name;
+  }
+  EXPECT_EQ(DeviceProfile().torque_axes, 0u);  // and a profile that says nothing renders none
+}
+
+TEST(DeviceProfiles, TorqueAxesReadByNameAndRenderableTorqueMasksThenSaturates)
+{
+  MapParameterSource source("test: ");
+  source.set("torque_axes", ParameterValue::of(std::string("xz")));
+  source.set("max_torque", ParameterValue::of(0.05));
+  const DeviceProfile profile = readDeviceProfile(source);
+  EXPECT_EQ(profile.torque_axes, kTorqueX | kTorqueZ);
+  EXPECT_EQ(torqueAxesName(profile.torque_axes), "xz");
+  // 0.03 on x, 0.04 on z: length 0.05, at the limit; y dropped.
+  Eigen::Vector3d torque = renderableTorque(profile, Eigen::Vector3d(0.03, 0.7, 0.04));
+  EXPECT_DOUBLE_EQ(torque.x(), 0.03);
+  EXPECT_EQ(torque.y(), 0.0);
+  EXPECT_DOUBLE_EQ(torque.z(), 0.04);
+  // Twice as much: saturated to length 0.05, direction kept.
+  torque = renderableTorque(profile, Eigen::Vector3d(0.06, 0.0, 0.08));
+  EXPECT_NEAR(torque.norm(), 0.05, 1e-15);
+  EXPECT_NEAR(torque.x() / torque.z(), 0.75, 1e-12);
+  EXPECT_TRUE(renderableTorque(profile, Eigen::Vector3d(NAN, 0.0, 0.0)).isZero());
+  EXPECT_TRUE(renderableTorque(DeviceProfile(), Eigen::Vector3d(1.0, 2.0, 3.0)).isZero());  // none
+  source.set("torque_axes", ParameterValue::of(std::string("w")));
+  EXPECT_THROW(readDeviceProfile(source), InputError);
 }
 
 TEST(DeviceProfiles, TheReadmeShowsTheBackendTablesAsGenerated)

@@ -9,6 +9,18 @@ namespace god_finger
 {
 namespace
 {
+// A list of rows, as a YAML list of lists reads.
+ParameterValue table(const std::vector<std::vector<double>>& rows)
+{
+  ParameterValue value;
+  value.kind = ParameterValue::Kind::kList;
+  for (const std::vector<double>& row : rows)
+  {
+    value.items.push_back(ParameterValue::of(row));
+  }
+  return value;
+}
+
 TEST(FakeDevice, FollowsItsScriptedHand)
 {
   FakeDevice device(FakeDeviceParams{},
@@ -35,6 +47,46 @@ TEST(FakeDevice, ConstantForceDeflectsTheHandleByForceOverGripStiffness)
   // A non-finite force is not applied.
   const DeviceReading same = device.update(13.001, Eigen::Vector3d(NAN, 0, 0));
   EXPECT_TRUE(same.position.allFinite());
+}
+
+// The orientation script (config/scripts/*.yaml orientation_script: [t, w, x, y, z]): slerped,
+// reported with every reading; without one, no orientation (a 3-DOF finger). A torque given to
+// updateWrench is recorded and moves nothing.
+TEST(FakeDevice, ReportsItsOrientationScriptAndRecordsTheTorque)
+{
+  MapParameterSource source("test: ");
+  source.set("orientation_script", table({{0.0, 1.0, 0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0, 1.0}}));
+  std::optional<OrientationPath> orientation = readOrientationScript(source);
+  ASSERT_TRUE(orientation.has_value());
+  FakeDevice oriented(FakeDeviceParams{}, WaypointPath({{0.0, Eigen::Vector3d::Zero()}}), orientation);
+  FakeDevice plain(FakeDeviceParams{}, WaypointPath({{0.0, Eigen::Vector3d::Zero()}}));
+  DeviceReading reading;
+  DeviceReading plain_reading;
+  for (int i = 0; i <= 500; ++i)
+  {
+    reading = oriented.updateWrench(i * 1e-3, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.01, 0.0));
+    plain_reading = plain.update(i * 1e-3, Eigen::Vector3d::Zero());
+  }
+  ASSERT_TRUE(reading.has_orientation);
+  // Half way from identity to 180 degrees about z: 90 degrees about z.
+  EXPECT_LT(
+      reading.orientation.angularDistance(Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()))),
+      1e-12);
+  EXPECT_EQ(oriented.lastTorque(), Eigen::Vector3d(0.0, 0.01, 0.0));
+  EXPECT_EQ(reading.position, plain_reading.position);  // the torque moves nothing
+  EXPECT_FALSE(plain_reading.has_orientation);
+  EXPECT_FALSE(readOrientationScript(MapParameterSource("test: ")).has_value());
+  // A zero quaternion in the script is refused, named.
+  source.set("orientation_script", table({{0.0, 0.0, 0.0, 0.0, 0.0}}));
+  try
+  {
+    readOrientationScript(source);
+    ADD_FAILURE() << "a zero quaternion was taken";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("test: orientation_script"), std::string::npos) << error.what();
+  }
 }
 
 TEST(FakeDevice, BadParametersAreNamed)

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <cmath>
 
 namespace god_finger
@@ -128,6 +131,45 @@ TEST(OmniDevice, AxesAndUnitsFollowRep103)
   const std::array<double, 3> omni_step{-step.y(), step.z(), -step.x()};
   EXPECT_NEAR(omni_force[0] * omni_step[0] + omni_force[1] * omni_step[1] + omni_force[2] * omni_step[2],
               force.dot(step), 1e-15);
+}
+
+// The stylus rotation (HD_CURRENT_TRANSFORM) to the finger frame in the device frame: at the home
+// pose pulp down pointing away from the user; the pen rolled about its own axis rolls the finger
+// about device x by the same angle; a pen turned left (about Omni y) turns the finger about
+// device z. No rotation read: no orientation (a 3-DOF finger).
+TEST(OmniDevice, TheStylusRotationGivesTheFingersOrientation)
+{
+  Fixture f;
+  f.device->start();
+  EXPECT_FALSE(f.device->update(1.0, Eigen::Vector3d::Zero()).has_orientation);
+  f.io->stylus.has_rotation = true;
+  const auto read = [&f](const Eigen::Matrix3d& stylus)
+  {
+    std::copy(stylus.data(), stylus.data() + 9, f.io->stylus.rotation.begin());
+    const DeviceReading reading = f.device->update(1.0, Eigen::Vector3d::Zero());
+    EXPECT_TRUE(reading.has_orientation);
+    return reading.orientation;
+  };
+  const Eigen::Quaterniond home = read(Eigen::Matrix3d::Identity());
+  const Eigen::Quaterniond pulp_down(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()));
+  EXPECT_LT(home.angularDistance(pulp_down), 1e-12);
+  // Rolled 0.4 rad about the pen's axis (Omni z, device -x): the finger rolls about device x.
+  const Eigen::Quaterniond rolled = read(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()).toRotationMatrix());
+  const Eigen::AngleAxisd roll(rolled * home.inverse());
+  EXPECT_NEAR(roll.angle(), 0.4, 1e-12);
+  EXPECT_NEAR(std::abs(roll.axis().x()), 1.0, 1e-12);
+  // Turned 0.3 rad about Omni y (up): about device z (up), the same sense.
+  const Eigen::Quaterniond turned = read(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()).toRotationMatrix());
+  const Eigen::AngleAxisd turn(turned * home.inverse());
+  EXPECT_NEAR(turn.angle(), 0.3, 1e-12);
+  EXPECT_NEAR(turn.axis().z(), 1.0, 1e-12);
+  // The finger's x (towards the tip) then points 0.3 rad to the user's left of forward.
+  const Eigen::Vector3d tip = turned * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(std::atan2(tip.y(), tip.x()), 0.3, 1e-12);
+  // A non-finite rotation gives a non-finite orientation, which the servo loop refuses.
+  Eigen::Matrix3d broken = Eigen::Matrix3d::Identity();
+  broken(0, 0) = NAN;
+  EXPECT_FALSE(read(broken).coeffs().allFinite());
 }
 
 TEST(OmniDevice, ForceIsClampedToTheProfileAndTheDeviceAndNaNSentAsZero)

@@ -3,9 +3,9 @@
 // rotational coupling and its torque, the roll_finger scenario, and bad input.
 #include "god_finger/physics/oriented_finger.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/orientation_path.h"
 #include "god_finger/physics/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/physics/orientation_path.h"
 
 #include <gtest/gtest.h>
 

@@ -40,8 +40,7 @@ PROFILES = backend_profiles()
 def scenarios():
     """Every scenario, from the one list (experiment.h) through god_finger_experiment, that the
     fake devices can run (`--hand fake`); each has its launch, launch/SCENARIO.launch. A scenario
-    the fake hand cannot run (roll_finger: the fake device has no orientation) has none, and the
-    tool must say so."""
+    the fake hand cannot run would have none, and the tool must say so."""
     tools = find_node("god_finger", "god_finger_experiment")
     if not tools:
         raise AssertionError("god_finger_experiment not built")

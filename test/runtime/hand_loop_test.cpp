@@ -256,6 +256,37 @@ double mugHeightAfterLift(int fingers)
   return mug_z;
 }
 
+// A pose source's orientations (PoseArray, TF; setPoseOrientation): a finger given one is an
+// oriented finger at that orientation; an all-zero quaternion (unset) leaves it 3-DOF; a NaN one
+// is ignored and counted by the loop, never reaching the physics.
+TEST(HandLoop, PoseOrientationsOrientTheirFingersUnsetOnesStay3Dof)
+{
+  PoseHand hand;
+  const Eigen::Quaterniond rolled(Eigen::AngleAxisd(M_PI + 0.3, Eigen::Vector3d::UnitX()));
+  hand.runUntil(0.2,
+                [&hand, &rolled](double t)
+                {
+                  std::vector<FingerPose> poses(3);
+                  for (int i = 0; i < 3; ++i)
+                  {
+                    poses[i].position = kPressed[i] + Eigen::Vector3d(0.0, 0.0, 0.02);  // above the table
+                    poses[i].stamp = t;
+                  }
+                  setPoseOrientation(0.0, 0.0, 0.0, 0.0, &poses[0]);  // unset
+                  setPoseOrientation(rolled.x(), rolled.y(), rolled.z(), rolled.w(), &poses[1]);
+                  setPoseOrientation(NAN, 0.0, 0.0, 1.0, &poses[2]);
+                  hand.feed->write(poses);
+                });
+  const GodFingerWorld& world = hand.loop->world();
+  EXPECT_FALSE(world.interfaceState(0).oriented);
+  ASSERT_TRUE(world.interfaceState(1).oriented);
+  EXPECT_LT(world.interfaceState(1).interface_orientation.angularDistance(rolled), 1e-12);
+  EXPECT_LT(world.interfaceState(1).proxy_orientation.angularDistance(rolled), 1e-6);  // at rest there
+  EXPECT_FALSE(world.interfaceState(2).oriented);
+  EXPECT_EQ(hand.loop->counters().rejected_orientations.load(), 200);  // the NaN one, every tick
+  EXPECT_EQ(world.rejectedTargets(), 0);
+}
+
 TEST(HandLoop, FakeHandGraspsAndLiftsTheMug)
 {
   // The mug's origin starts 0.5 mm above the table: carried up ~10 cm by a thumb and 2 or 4 fingers.

@@ -1,6 +1,6 @@
 // A shipped device profile read from its file (config/devices/NAME.yaml: flat
-// "key: number  # comment" lines) through the one profile table (core/device_profile.h), as
-// the nodes read it, so that a test uses the file's numbers instead of copies of them.
+// "key: value  # comment" lines, a value a number or a choice's name) through the one profile table
+// (core/device_profile.h), as the nodes read it, so that a test uses the file's numbers instead of copies of them.
 #pragma once
 
 #include "god_finger/core/device_profile.h"
@@ -14,7 +14,9 @@ namespace god_finger
 {
 namespace test
 {
-inline DeviceProfile readDeviceProfileFile(const std::string& path)
+// The file's rows as parameters, as a launch loads them (lists such as workspace_offset left
+// out: they are not the profile table's).
+inline MapParameterSource readDeviceProfileSource(const std::string& path)
 {
   std::ifstream in(path);
   if (!in)
@@ -22,16 +24,21 @@ inline DeviceProfile readDeviceProfileFile(const std::string& path)
     throw InputError("device profile '" + path + "': cannot be read");
   }
   MapParameterSource source(path + ": ");
-  const std::regex row("^(\\w+):\\s*([-+0-9.eE]+)");
+  const std::regex row("^(\\w+):\\s*([^\\s#\\[]+)");
   for (std::string line; std::getline(in, line);)
   {
     std::smatch match;
     if (std::regex_search(line, match, row))
     {
-      source.set(match[1], ParameterValue::of(std::stod(match[2])));
+      source.set(match[1], parseValueText(match[2]));
     }
   }
-  return readDeviceProfile(source);
+  return source;
+}
+
+inline DeviceProfile readDeviceProfileFile(const std::string& path)
+{
+  return readDeviceProfile(readDeviceProfileSource(path));
 }
 
 // config/devices/NAME.yaml of the source tree.

@@ -4,7 +4,9 @@
 // to REP-103 by its backend, metres). Force: f_device = force_scale * R^T f_world. With
 // force_scale = scale the mapping is passive (the work done in the world equals the work
 // done on the hand); the default 1 renders world forces as they are and leaves the device's
-// stiffness at k_world / scale. Invariant: R is a rotation (orthonormal, det +1).
+// stiffness at k_world / scale. Orientation (an oriented finger's, physics/oriented_finger.h):
+// q_world = R q_device, not scaled; so torque maps by the rotation alone, tau_device = R^T
+// tau_world (angles are not scaled: that is passive). Invariant: R is a rotation (orthonormal, det +1).
 #pragma once
 
 #include "god_finger/core/parameter_table.h"
@@ -36,6 +38,10 @@ class WorkspaceMapping
   Eigen::Vector3d velocityToWorld(const Eigen::Vector3d& device_velocity) const;
   Eigen::Vector3d toDevice(const Eigen::Vector3d& world_position) const;
   Eigen::Vector3d forceToDevice(const Eigen::Vector3d& world_force) const;
+  // The finger frame's orientation in the device frame -> in the world (unit in, unit out).
+  Eigen::Quaterniond orientationToWorld(const Eigen::Quaterniond& device_orientation) const;
+  // N m, world -> device frame.
+  Eigen::Vector3d torqueToDevice(const Eigen::Vector3d& world_torque) const;
   const WorkspaceMappingParams& params() const
   {
     return params_;

@@ -3,16 +3,22 @@
 // through the physics is therefore closed as with a real device: the coupling force moves the
 // handle, and a stiff virtual coupling can make it ring, as it would a real one.
 //
-// Units: kg, N/m, N s/m, s, m. Integration: semi-implicit Euler over the time between two
+// An optional orientation script makes it an oriented finger: the hand turns the handle rigidly
+// (no rotational dynamics; the reading's orientation is the script's), and a torque given to
+// updateWrench() is recorded (lastTorque()) but moves nothing.
+//
+// Units: kg, N/m, N s/m, s, m, N m. Integration: semi-implicit Euler over the time between two
 // update() calls, split into sub-steps of at most 1 ms. Deterministic for identical calls.
 #pragma once
 
+#include "god_finger/core/orientation_path.h"
 #include "god_finger/core/parameter_source.h"
 #include "god_finger/core/parameter_table.h"
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/devices/haptic_device.h"
 
 #include <mutex>
+#include <optional>
 
 namespace god_finger
 {
@@ -31,18 +37,32 @@ FakeDeviceParams readFakeDeviceParams(const ParameterSource& source);
 // `script`: a list of [t, x, y, z] waypoints (s, m, device frame); without it the hand holds
 // the handle at `fallback` (m). InputError on a malformed script.
 WaypointPath readScript(const ParameterSource& source, const Eigen::Vector3d& fallback);
+// `orientation_script`: a list of [t, w, x, y, z] waypoints (s, a quaternion: the finger frame
+// of physics/oriented_finger.h in the device frame; slerped between, core/orientation_path.h);
+// unset: none (a 3-DOF finger). InputError on a malformed one.
+std::optional<OrientationPath> readOrientationScript(const ParameterSource& source);
 
 class FakeDevice : public HapticDevice
 {
  public:
   // Throws InputError on bad parameters. The handle starts at the script's first position.
   FakeDevice(const FakeDeviceParams& params, WaypointPath hand);
+  // An oriented finger: every reading carries `orientation`'s orientation at the script's time.
+  FakeDevice(const FakeDeviceParams& params, WaypointPath hand, std::optional<OrientationPath> orientation);
   std::string name() const override
   {
     return "fake";
   }
   void start() override;
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
+  // As update(), recording `torque` (N m, device frame) for lastTorque().
+  DeviceReading updateWrench(double time, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) override;
+  // The torque of the last updateWrench() (zero after update()). Read it from the thread that
+  // calls update() (or after the loop stopped).
+  const Eigen::Vector3d& lastTorque() const
+  {
+    return torque_;
+  }
   // Makes the script's time 0 the given time of update()'s clock (several fake devices then
   // follow their scripts in step); before it the hand waits at the first waypoint. Without
   // it, the script starts at the first update.
@@ -64,6 +84,8 @@ class FakeDevice : public HapticDevice
  private:
   FakeDeviceParams params_;
   WaypointPath hand_;
+  std::optional<OrientationPath> orientation_;
+  Eigen::Vector3d torque_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d position_;
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
   double last_time_ = 0.0;

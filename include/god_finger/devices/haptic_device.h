@@ -2,12 +2,13 @@
 //
 // Frames and units: positions in metres and velocities in m/s in the device frame, whose axes
 // follow REP-103 as the user sees them (x forward, away from the user; y to the user's left;
-// z up; origin at the workspace centre); forces in newtons in the same frame. A backend converts its vendor's units and
-// axes and nothing else: saturation and the watchdog live in ForceGuard, the workspace mapping in WorkspaceMapping, so
-// they are the same for every device.
+// z up; origin at the workspace centre); forces in newtons and torques in N m in the same frame. A backend converts its
+// vendor's units and axes and nothing else: saturation and the watchdog live in ForceGuard, the workspace mapping in
+// WorkspaceMapping, so they are the same for every device.
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
@@ -31,6 +32,14 @@ struct DeviceReading
   // False: the source lost this finger (a pose source's stream lost or late,
   // devices/hand_device.h); the position is then not the finger's, and the loop lets it go.
   bool tracked = true;
+  // A backend that knows the finger's orientation (an Omni/Touch stylus, a fake script with
+  // orientations, a pose source) sets has_orientation and `orientation`: the finger frame
+  // (physics/oriented_finger.h: z out of the pulp, x towards the tip) in the device frame, a
+  // unit quaternion. False (every force-only backend): the finger is a 3-DOF point and the
+  // loop runs exactly the 3-DOF code. The servo loop never lets a non-finite or non-unit-ish
+  // orientation (norm outside [0.5, 2]) reach the physics (runtime/servo_loop.h).
+  bool has_orientation = false;
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };
 
 class HapticDevice;
@@ -50,6 +59,15 @@ class HapticDevice
   // One servo tick at `time` (s, monotonic): applies `force` (N, device frame, already
   // guarded) and reads the state. Throws DeviceError on a fault it cannot recover from.
   virtual DeviceReading update(double time, const Eigen::Vector3d& force) = 0;
+  // As update(), with a torque (N m, device frame, already masked to the profile's torque axes
+  // and saturated at its max_torque by the servo loop). A device that renders no torque keeps
+  // this default, which drops the torque. Same real-time rules as update().
+  // (A name of its own: an override of update() alone does not hide it.) The servo loop calls
+  // this one.
+  virtual DeviceReading updateWrench(double time, const Eigen::Vector3d& force, const Eigen::Vector3d& /*torque*/)
+  {
+    return update(time, force);
+  }
   // Simulated devices that follow a script (fake, replay): the time of update()'s clock at
   // which the script's time 0 is played, so that the devices of one session move in step.
   // Devices a person holds ignore it.

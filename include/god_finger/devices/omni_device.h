@@ -8,6 +8,13 @@
 // the user sees it: x away from the user, y to the left, z up, in metres, origin at
 // `center_mm` of the Omni frame. So
 //   device = (-(z - c_z), -(x - c_x), y - c_y) / 1000,   omni force = (-f_y, f_z, -f_x).
+// Orientation: the HD API's stylus transform (HD_CURRENT_TRANSFORM's rotation: the gimbal
+// angles through the arm's kinematics) in the Omni frame; its stylus frame at the home pose is
+// the Omni frame, the pen along z with its tip towards -z (away from the user). The finger
+// held on the pen (physics/oriented_finger.h): x towards the tip = stylus -z, z out of the pulp
+// = stylus -y (the index finger on top of the pen, its pulp down on it). So at the home pose the
+// finger points away from the user with its pulp down (180 degrees about device x). These axis
+// conventions are from the HD API's documentation, not yet checked on a device.
 // Invariants: the force sent to the motors never exceeds min(max_force, the device's nominal
 // maximum); non-finite forces are sent as zero.
 #pragma once
@@ -17,6 +24,7 @@
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
 
+#include <Eigen/Geometry>
 #include <array>
 #include <functional>
 #include <memory>
@@ -35,6 +43,10 @@ struct OmniFrame
 {
   std::array<double, 3> position_mm{0.0, 0.0, 0.0};  // mm, Omni frame
   unsigned buttons = 0;                              // bit i: stylus button i
+  // The stylus frame's rotation in the Omni frame, column-major 3x3 (HD_CURRENT_TRANSFORM's
+  // upper-left block); has_rotation false when the I/O layer does not read it.
+  bool has_rotation = false;
+  std::array<double, 9> rotation{1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
 };
 
 // The HD API calls god_finger needs, one method each.
@@ -88,6 +100,9 @@ class OmniDevice : public HapticDevice
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
 
   static Eigen::Vector3d omniToDevice(const std::array<double, 3>& omni_mm, const std::array<double, 3>& center_mm);
+  // The finger frame in the device frame for a stylus rotation (OmniFrame::rotation; see above).
+  // Not normalised: a non-finite or non-rotation input gives what the servo loop rejects.
+  static Eigen::Quaterniond stylusToDevice(const std::array<double, 9>& rotation);
   // The force limit in use after start(): min(max_force, nominal maximum if the device reports one).
   double forceLimit() const
   {

@@ -5,6 +5,11 @@
 // Frames and units: positions in metres in the device frame (the interface's workspace mapping
 // takes them to the world; with the default offset 0 the device frame is the world); stamps
 // in seconds on the PoseSource's clock (`now`, steadySeconds() in the servo node).
+// Orientations: a pose's orientation (the PoseArray's, the TF frame's rotation) is the finger's
+// (an oriented finger, physics/oriented_finger.h): the fingertip frame must follow the finger
+// frame's convention (z out of the pulp, x towards the tip; no frame offset is applied yet). An
+// all-zero quaternion (a PoseArray that leaves it unset) means none: the finger is 3-DOF. Any
+// other is passed on as given; the servo loop ignores and counts one that is not usable.
 //
 // Lost fingers: a finger whose newest finite pose is older than `pose_timeout`, or that has
 // none yet, reads tracked = false at its last known position (`rest` before any): the loop lets
@@ -22,6 +27,7 @@
 #include "god_finger/devices/hand_device.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <functional>
 #include <memory>
 #include <string>
@@ -54,7 +60,13 @@ struct FingerPose
 {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, device frame
   double stamp = -1.0;                                 // s, the source's clock; < 0: none
+  bool has_orientation = false;
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // finger frame, device frame
 };
+
+// Sets `pose`'s orientation from a message's quaternion (x, y, z, w): none when all four are
+// zero (see above), else as given.
+void setPoseOrientation(double x, double y, double z, double w, FingerPose* pose);
 
 class PoseFeed
 {

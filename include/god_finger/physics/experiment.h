@@ -39,7 +39,7 @@
 //    fingertip_radius x 40 degrees), max_force_step_N (the largest change of the force on the
 //    hand from one step to the next, from the roll's start on), rolled_rad (the proxy's roll over
 //    the same span) and contact_lost_steps (steps from the roll's start without a contact area
-//    on the box). --hand fake refuses it: the fake device has no orientation yet.
+//    on the box). --hand fake runs it too: the fake device reports the script's orientation.
 //  - kPinchThin (urdf/scenes/holder_plate.urdf): two fingers pinch a clamped 2 mm plate across
 //    its thickness, 3 cm apart along it, and drift towards each other for 2 s until they face
 //    each other; 3.5 s in all. The paper's overlap of contact areas (Discussion), and its push
@@ -52,9 +52,9 @@
 // Contact parameters: the core's defaults (ContactParams; D0' = 1 mm).
 #pragma once
 
+#include "god_finger/core/orientation_path.h"
 #include "god_finger/core/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/physics/orientation_path.h"
 #include "god_finger/physics/scene_description.h"
 #include "god_finger/physics/world_params.h"
 

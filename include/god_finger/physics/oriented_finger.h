@@ -13,9 +13,9 @@
 //       the hand feels -tau. Stable in free space iff (k_r dt + 2 b_r) dt / I < 4.
 //     The proxy's orientation is not yet limited by its contacts: nothing a flat pad touches
 //     resists the finger's roll, so the torque is the spring's lag only. The torque is
-//     InterfaceState::user_torque; no device renders it yet (the Omni/Touch and the Falcon render
-//     force only, so their profiles would name no torque axes; the profile's axes and the servo
-//     loop sending the torque on them are the next step).
+//     InterfaceState::user_torque; the servo loop sends it to a device on its profile's
+//     torque_axes, saturated at max_torque (core/device_profile.h; the Omni/Touch and the
+//     Falcon render force only: none).
 //  2. The pad sits on the pulp: with phi the angle between the pulp normal (finger z) and the
 //     inward surface normal (-c_n), the contact radius is the Eq. 1 radius times
 //     cos(pi/2 phi / nail_angle) (1 when the pulp faces the surface, smaller on the side, 0 from

@@ -1,10 +1,12 @@
-// Eigen vectors to geometry_msgs (SI units, frames unchanged).
+// Eigen vectors and quaternions to geometry_msgs (SI units, frames unchanged).
 #pragma once
 
 #include <geometry_msgs/Point.h>
+#include <geometry_msgs/Quaternion.h>
 #include <geometry_msgs/Vector3.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace god_finger
 {
@@ -23,6 +25,16 @@ inline geometry_msgs::Vector3 toVector(const Eigen::Vector3d& v)
   result.x = v.x();
   result.y = v.y();
   result.z = v.z();
+  return result;
+}
+
+inline geometry_msgs::Quaternion toQuaternion(const Eigen::Quaterniond& q)
+{
+  geometry_msgs::Quaternion result;
+  result.x = q.x();
+  result.y = q.y();
+  result.z = q.z();
+  result.w = q.w();
   return result;
 }
 

@@ -23,6 +23,18 @@
 //      tracked again, its target ramps from that proxy position to the tracked pose over the
 //      force guard's soft start (softStartScale, core/force_guard.h): no step of coupling force;
 //   3. leaves a sample per interface in a lock-free queue for the publishers.
+// Oriented fingers (a reading with has_orientation, physics/oriented_finger.h): the reading's
+// orientation, mapped into the world (WorkspaceMapping::orientationToWorld), goes to the
+// physics with the position (GodFingerWorld::setInterfaceTarget's quaternion overload), and the
+// rotational coupling's torque on the hand (InterfaceState::user_torque, world) comes back,
+// mapped into the device frame (torqueToDevice) and cut to the profile's torque axes and
+// max_torque (renderableTorque, core/device_profile.h): it is sent at the next tick's update
+// (HapticDevice::updateWrench) with the force, zero while the guard is stopped. It is the last
+// completed step's torque, also while the physics is late (no haptic-side rendering of torque).
+// An orientation that is not usable (non-finite, norm outside [0.5, 2]: core/orientation_path.h
+// usableOrientation) is ignored and counted (rejected_orientations): the finger keeps its last
+// good orientation (a 3-DOF finger until it had one); the position is still taken. A finger
+// whose device never reports an orientation runs exactly the 3-DOF calls, bit for bit.
 // The physics side, one step per targets it takes (the latest; older ones are skipped when it
 // is late, the skipped motion entering the coupling's damping as the device's velocity):
 // applies the world commands that came in (contact model, contact parameters, reset) and the
@@ -153,10 +165,16 @@ struct ServoSample
   // watchdog, soft start, continuous budget, rate limit and stop that give the next applied_force).
   Eigen::Vector3d commanded_force = Eigen::Vector3d::Zero();
   Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();  // m, world (the device mapped)
-  Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();      // m, world
-  Eigen::Vector3d user_force = Eigen::Vector3d::Zero();          // N, world: the coupling's reaction
-  double read_at = 0.0;                                          // s, steadySeconds() when the device was read
-  double period_us = 0.0;                                        // since the previous tick began (wall clock)
+  // World: an oriented finger's mapped orientation (the finger frame); identity for a 3-DOF one.
+  Eigen::Quaterniond interface_orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world
+  Eigen::Vector3d user_force = Eigen::Vector3d::Zero();      // N, world: the coupling's reaction
+  // Oriented fingers: the rotational coupling's torque on the hand (N m, world), and the torque
+  // sent with the next update (N m, device frame: on the profile's axes, saturated). Zero else.
+  Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();
+  Eigen::Vector3d commanded_torque = Eigen::Vector3d::Zero();
+  double read_at = 0.0;    // s, steadySeconds() when the device was read
+  double period_us = 0.0;  // since the previous tick began (wall clock)
   // From this device's reading to its force being ready (wall clock): simulated time, the
   // command; real time, the step's completion when on time, else the haptic side's rendering
   // (at the next tick's start). Either way the force is applied at the next tick's update.
@@ -197,9 +215,10 @@ struct ServoCounters
   std::atomic<long> overruns{0};
   std::atomic<long> dropped_samples{0};  // real time: the publishers were behind
   std::atomic<long> dropped_snapshots{0};
-  std::atomic<long> rejected_readings{0};   // non-finite device readings (position or velocity)
-  std::atomic<long> rejected_forces{0};     // non-finite forces refused by a guard
-  std::atomic<long> untracked_readings{0};  // interface-ticks of fingers their source lost (let go)
+  std::atomic<long> rejected_readings{0};      // non-finite device readings (position or velocity)
+  std::atomic<long> rejected_forces{0};        // non-finite forces refused by a guard
+  std::atomic<long> untracked_readings{0};     // interface-ticks of fingers their source lost (let go)
+  std::atomic<long> rejected_orientations{0};  // unusable orientations ignored (the position taken)
   std::atomic<long> commands{0};
   std::atomic<long> stale_ticks{0};      // interface-ticks whose force came from the anchor
   std::atomic<long> physics_steps{0};    // steps taken
@@ -292,12 +311,16 @@ class ServoLoop
     // (zero: the target rests on the proxy) instead of the targets' difference, so the jump of
     // the target onto the proxy kicks nothing and the damping brings the released proxy to rest.
     std::vector<unsigned char> let_go;
+    // World, unit: the last usable mapped orientation, where oriented[i] (the device reported one).
+    std::vector<Eigen::Quaterniond> orientations;
+    std::vector<char> oriented;
   };
   // Physics -> haptic: the intermediate representation from one completed step.
   struct ProxyResult
   {
     Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world, after the step
     Eigen::Vector3d user_force = Eigen::Vector3d::Zero();      // N, world: the step's coupling reaction
+    Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();     // N m, world: the rotational coupling's
   };
   struct StepResult
   {
@@ -315,6 +338,8 @@ class ServoLoop
     Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
     Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // m
     Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N on the hand, the last decided
+    Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m, device frame: renderable, the last decided
+    Eigen::Quaterniond device_orientation = Eigen::Quaterniond::Identity();  // the last usable, device frame
     Eigen::Vector3d wall_force =
         Eigen::Vector3d::Zero();  // N, device frame: the workspace wall (core/workspace_bound.h)
     bool exact = true;            // the force is the step's reaction

@@ -49,7 +49,24 @@ class ScriptedFaults : public HapticDevice
   }
   DeviceReading update(double time, const Eigen::Vector3d& force) override
   {
-    DeviceReading reading = device_->update(time, force);
+    return faulted(time, device_->update(time, force));
+  }
+  DeviceReading updateWrench(double time, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) override
+  {
+    return faulted(time, device_->updateWrench(time, force, torque));
+  }
+  void setScriptStart(double time) override
+  {
+    device_->setScriptStart(time);
+  }
+  bool setHandTarget(const Eigen::Vector3d& position) override
+  {
+    return device_->setHandTarget(position);
+  }
+
+ private:
+  DeviceReading faulted(double time, DeviceReading reading) const
+  {
     const double script_time = time - device_->startTime();
     if (script_time >= press_[0] && script_time < press_[1])
     {
@@ -62,16 +79,7 @@ class ScriptedFaults : public HapticDevice
     }
     return reading;
   }
-  void setScriptStart(double time) override
-  {
-    device_->setScriptStart(time);
-  }
-  bool setHandTarget(const Eigen::Vector3d& position) override
-  {
-    return device_->setHandTarget(position);
-  }
 
- private:
   std::unique_ptr<FakeDevice> device_;
   double from_;
   double until_;
@@ -80,9 +88,11 @@ class ScriptedFaults : public HapticDevice
 
 std::unique_ptr<HapticDevice> makeFake(const DeviceContext& context)
 {
-  // No script: the hand holds the handle at the workspace centre.
+  // No script: the hand holds the handle at the workspace centre. No orientation script: a
+  // 3-DOF finger.
   auto device = std::make_unique<FakeDevice>(readFakeDeviceParams(context.params),
-                                             readScript(context.params, Eigen::Vector3d::Zero()));
+                                             readScript(context.params, Eigen::Vector3d::Zero()),
+                                             readOrientationScript(context.params));
   // Test seams: non_finite_readings [from, until], pressed_buttons [from, until, buttons] (s of
   // the script's time; buttons: a bit mask); unset: none.
   const Eigen::VectorXd faulty = readVector(context.params, "non_finite_readings", Eigen::Vector2d(-1.0, -1.0));

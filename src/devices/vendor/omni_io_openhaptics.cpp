@@ -16,6 +16,7 @@ struct ServoExchange
   HDdouble position[3];
   HDint buttons;
   HDErrorInfo error;
+  HDdouble transform[16];  // HD_CURRENT_TRANSFORM, column-major (zero-initialised)
 };
 
 HDCallbackCode HDCALLBACK servoFrame(void* data)
@@ -23,6 +24,7 @@ HDCallbackCode HDCALLBACK servoFrame(void* data)
   auto* exchange = static_cast<ServoExchange*>(data);
   hdBeginFrame(exchange->device);
   hdGetDoublev(HD_CURRENT_POSITION, exchange->position);
+  hdGetDoublev(HD_CURRENT_TRANSFORM, exchange->transform);  // column-major 4x4
   hdGetIntegerv(HD_CURRENT_BUTTONS, &exchange->buttons);
   hdSetDoublev(HD_CURRENT_FORCE, exchange->force);
   hdEndFrame(exchange->device);
@@ -110,6 +112,14 @@ class OpenHapticsIo : public OmniIo
     }
     frame->position_mm = {exchange.position[0], exchange.position[1], exchange.position[2]};
     frame->buttons = static_cast<unsigned>(exchange.buttons);
+    frame->has_rotation = true;
+    for (int column = 0; column < 3; ++column)
+    {
+      for (int row = 0; row < 3; ++row)
+      {
+        frame->rotation[3 * column + row] = exchange.transform[4 * column + row];
+      }
+    }
     return true;
   }
   double nominalMaxForce() override

@@ -1,4 +1,4 @@
-#include "god_finger/physics/orientation_path.h"
+#include "god_finger/core/orientation_path.h"
 
 #include "god_finger/core/input_error.h"
 
@@ -7,6 +7,12 @@
 
 namespace god_finger
 {
+bool usableOrientation(const Eigen::Quaterniond& orientation)
+{
+  const double norm = orientation.norm();
+  return orientation.coeffs().allFinite() && norm >= 0.5 && norm <= 2.0;
+}
+
 OrientationPath::OrientationPath(std::vector<OrientationWaypoint> waypoints) : waypoints_(std::move(waypoints))
 {
   if (waypoints_.empty())
@@ -16,8 +22,7 @@ OrientationPath::OrientationPath(std::vector<OrientationWaypoint> waypoints) : w
   for (std::size_t i = 0; i < waypoints_.size(); ++i)
   {
     OrientationWaypoint& waypoint = waypoints_[i];
-    const double norm = waypoint.orientation.norm();
-    if (!std::isfinite(waypoint.time) || !waypoint.orientation.coeffs().allFinite() || !(norm >= 0.5 && norm <= 2.0))
+    if (!std::isfinite(waypoint.time) || !usableOrientation(waypoint.orientation))
     {
       throw InputError("orientation path: waypoint " + std::to_string(i) +
                        " needs a finite time and a finite quaternion of norm in [0.5, 2]");

@@ -12,6 +12,10 @@
 
 namespace god_finger
 {
+// What every orientation a finger is given must be (a path's waypoint, a device's reading, a
+// world target): a finite quaternion of norm in [0.5, 2], normalised where used. Real-time safe.
+bool usableOrientation(const Eigen::Quaterniond& orientation);
+
 struct OrientationWaypoint
 {
   double time = 0.0;  // s
