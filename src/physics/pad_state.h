@@ -12,6 +12,15 @@
 //   (pad_torsion.h). Frame: the object's centre of mass frame in the world. Let go when a
 //   torsional row reached its bound (slip), or when the last step had no pad.
 //
+// Both are the object's orientations in the world: the pad's reference is the world's, right for a
+// 3-DOF finger (its proxy never rotates), and an oriented finger's too (its proxy's orientation,
+// oriented_finger.h, is not used here): a 6-DOF finger turning with what it holds is resisted as a
+// non-turning one (cylinder turn with oriented fingers, 20 mm: no turn). Open: which part of the
+// finger's rotation the pad follows. All of it turns the cylinder (90 degrees at 20 mm) but drags
+// the box under roll_finger's rolling pulp (force step 1.3e-3 N, 1.7e-5 before) and, in the
+// distances, tilts the pad into it (points layout: contact lost for 63 steps); the pulp rolled
+// onto the surface (its twist only) keeps roll_finger but turns the cylinder 0.07 rad.
+//
 // Units: SI, world frame unless said. Real-time safe (no allocation).
 #pragma once
 

@@ -1,12 +1,14 @@
 // Pinch and turn a cylinder 90 degrees (physics/cylinder_turn_task.h): a pad turns it with the
 // fingers, a point (a ball that keeps its orientation) rolls on the mantle and swings it about
-// the pinch line, a light squeeze drops it, and a 3-DOF pad resists the mantle's roll.
+// the pinch line, a light squeeze drops it, and a 3-DOF pad resists the mantle's roll until the
+// hand's pull, which a harder squeeze shortens, no longer overcomes it.
 #include "god_finger/core/input_error.h"
 #include "god_finger/physics/cylinder_turn_task.h"
 #include "god_finger/physics/pad_fidelity.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace god_finger
@@ -80,6 +82,32 @@ TEST(CylinderTurn, APadThatCannotTurnResistsTheRollMoreTheHarderItPresses)
   EXPECT_GT(light, firm);
   EXPECT_GT(firm, hard);
   EXPECT_LT(hard, 0.7);
+}
+
+TEST(CylinderTurn, TheHandsPullNotFrictionStopsTheTurn)
+{
+  // Each finger's target goes round a circle of radius R - s about the axis (R = r + proxy
+  // radius), so with the cylinder (and the pad stuck on it) lagging the target by `lag` the
+  // coupling pulls the pad along the mantle with k (R - s) sin(lag): at most 5.2 N at 20 mm. The
+  // turn stops where that pull's torque about the axis meets the pads' resistance to the roll,
+  // N a_eff: a_eff is the tilt rows' area radius (r_max) plus the centre of pressure's shift, far
+  // under mu r (24 mm), and friction (mu N) is never reached. Measured (perfect hand, 20 mm): turn
+  // 0.6175 rad, lag 0.953 rad, pull 4.24 N, mean grip 9.73 N (10.24 N at the end), a_eff 13.1 mm
+  // (12.4 mm at the end's grip: 10.2 mm tilt rows, 2.1 mm centre of pressure), slip 1.8 mm.
+  const WorldParams params;
+  const double squeeze = 0.02;
+  const CylinderTurnResult hard = turn(kPad, squeeze);
+  const double lag = kTurnAngle - hard.turn_rad;
+  const double pull =
+      params.coupling.stiffness * (kTurnCylinderRadius + params.coupling.proxy_radius - squeeze) * std::sin(lag);
+  const double lever = pull * kTurnCylinderRadius / hard.mean_grip_force_N;
+  std::printf("[ 20 mm: lag %.4f rad, pull %.3f N, a_eff %.2f mm ]\n", lag, pull, lever * 1e3);
+  EXPECT_GT(lag, 0.8);
+  EXPECT_GT(lever, params.contact.max_radius);
+  EXPECT_LT(lever, 1.5 * params.contact.max_radius);
+  EXPECT_LT(1.5 * params.contact.max_radius, kTurnCylinderFriction * kTurnCylinderRadius);
+  EXPECT_LT(pull, 0.6 * kTurnCylinderFriction * hard.mean_grip_force_N);
+  EXPECT_LT(hard.max_slip_m, 0.003);
 }
 
 TEST(CylinderTurn, ABadSqueezeIsRefused)

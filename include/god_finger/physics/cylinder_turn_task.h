@@ -14,8 +14,13 @@
 // degrees with them (a point contact, a ball that does not turn, rolls on the mantle: the
 // cylinder turns kTurnAngle (r + proxy radius) / r); a slip turns it less, and a point contact lets
 // it swing about the pinch line. The fingers are 3-DOF: they keep their orientation, so the
-// mantle rolls under each pad, and a pad that resists a tilt (god_finger's tilt rows, up to N a)
-// resists the turn: the harder the squeeze, the less it turns.
+// mantle rolls under each pad, and a pad that resists a tilt (god_finger's tilt rows, up to N a,
+// and its centre of pressure shifted against the pull: N a_eff) resists the turn. What turns it
+// is the hand's pull, not friction: the target circles at R - s from the axis (R = r + proxy
+// radius), so a pad stuck on the mantle, lagging its target by `lag`, is pulled along it with
+// k (R - s) sin(lag) <= k (R - s); the turn stops where k (R - s) sin(lag) r = N a_eff. A harder
+// squeeze raises N and shortens R - s: the harder, the less it turns (god_finger at 20 mm:
+// a_eff 12 mm, far under mu r = 24 mm; cylinder_turn_test).
 // Deterministic: the same options give the same result, bit for bit. Units SI, frames world
 // (z up). Not real-time (builds a world).
 #pragma once
