@@ -9,6 +9,7 @@
 #include "god_finger/core/spsc_queue.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/device_registry.h"
+#include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "hand_marker.h"
@@ -241,6 +242,11 @@ struct DeviceDriverNode::Impl
     state->applied_force.x = sample.applied_force.x();
     state->applied_force.y = sample.applied_force.y();
     state->applied_force.z = sample.applied_force.z();
+    state->has_orientation = sample.reading.has_orientation;
+    if (sample.reading.has_orientation)
+    {
+      state->orientation = toQuaternion(sample.reading.orientation);
+    }
     state_publisher.publish(state);
   }
 
@@ -304,7 +310,17 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   {
     HapticDevice* hand = impl.device.get();
     impl.marker_server = makeHandMarker(nh, impl.frame, readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)),
-                                        [hand](const Eigen::Vector3d& target) { hand->setHandTarget(target); });
+                                        [hand](const HandMarkerPose& target)
+                                        {
+                                          if (target.rotated)
+                                          {
+                                            hand->setHandPose(target.position, target.orientation);
+                                          }
+                                          else
+                                          {
+                                            hand->setHandTarget(target.position);
+                                          }
+                                        });
   }
   impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", kPublisherQueue);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);

@@ -239,6 +239,10 @@ void ServoLoop::applyHandTargets(double time)
         guard.resume(time);
       }
     }
+    else if (command.hand_oriented)
+    {
+      interfaces_[command.interface].device->setHandPose(command.hand_target, command.hand_orientation);
+    }
     else
     {
       interfaces_[command.interface].device->setHandTarget(command.hand_target);
@@ -301,9 +305,9 @@ void ServoLoop::readDevices(double time)
     ServoInterface& interface = interfaces_[i];
     applied_[i] = guards_[i].output(time);
     Render& render = render_[i];
-    // The torque decided for the last reading (zero for a device with no torque axes, and while
-    // the force is stopped).
-    const Eigen::Vector3d torque = guards_[i].stopped() ? Eigen::Vector3d::Zero() : render.torque;
+    // The torque decided for the last reading (zero for a device with no torque axes), through
+    // the force's guard: its soft start and watchdog ramp, zero while the force is stopped.
+    const Eigen::Vector3d torque = guards_[i].scale(time) * render.torque;
     const DeviceReading reading = interface.device->updateWrench(time, applied_[i], torque);
     read_at_[i] = steadySeconds();
     // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.

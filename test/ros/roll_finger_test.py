@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""rostest: launch/roll_finger.launch, servo topology. The fake device's script
+"""rostest: launch/roll_finger.launch, servo topology (roll_finger.test) and processes
+(roll_finger_processes.test: the orientation over DeviceState and the pose topic). The fake device's script
 (config/scripts/roll_finger.yaml) presses the box's top with the finger pulp down, then rolls it
 40 degrees about its own axis (x) from 0.8 s to 1.8 s of script time. In ROS, as offline: the
 finger's contact area on the cube moves across the finger (y) by fingertip_radius x 40 degrees

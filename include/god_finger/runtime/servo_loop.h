@@ -206,6 +206,10 @@ struct ServoCommand
   PadSolver pad_solver = WorldParams().pad_solver;  // kSetPadSolver, validated by post()
   int interface = 0;
   Eigen::Vector3d hand_target = Eigen::Vector3d::Zero();  // m, device frame
+  // kHandTarget: with an orientation too (HapticDevice::setHandPose; the finger frame in the
+  // device frame, unit), else the position alone (setHandTarget).
+  bool hand_oriented = false;
+  Eigen::Quaterniond hand_orientation = Eigen::Quaterniond::Identity();
 };
 
 // Counters since the loop began; readable from any thread.
