@@ -1,6 +1,7 @@
 // The device driver node: one haptic device served at ~rate (1 kHz) in its own thread.
 //
-// Publishes device/state (god_finger/DeviceState) every tick; subscribes device/force
+// Publishes device/state (god_finger/DeviceState, with the reading's orientation when it has
+// one) every tick; subscribes device/force
 // (geometry_msgs/Vector3Stamped, device frame, N). Every force goes through a ForceGuard:
 // saturated to the profile's max_force, rejected (and counted) when not finite, ramped to zero
 // within ramp_time when no command came for command_timeout, ramped in over soft_start at
