@@ -49,6 +49,7 @@ struct HapticNode::Impl
   ros::Subscriber proxy_subscriber;
   ros::Publisher pose_publisher;
   ros::Publisher force_publisher;
+  ros::Publisher torque_publisher;  // device/torque: a profile with torque_axes only
   ros::Publisher diagnostics_publisher;
   ros::ServiceClient model_client;
   ros::ServiceClient reset_client;
@@ -167,6 +168,18 @@ struct HapticNode::Impl
 
   void onFeedback(const geometry_msgs::WrenchStamped::ConstPtr& feedback)
   {
+    // An oriented finger's torque on the hand, to the device frame, for a profile that renders
+    // torque (the driver keeps it on the torque axes, saturated, through its guard). Rendered
+    // from the physics' feedback whatever the coupling: the proxy's orientation is there only.
+    const Eigen::Vector3d torque = fromVector(feedback->wrench.torque);
+    if (profile.torque_axes != 0 && torque.allFinite())
+    {
+      geometry_msgs::Vector3StampedPtr message(new geometry_msgs::Vector3Stamped);
+      message->header.stamp = feedback->header.stamp;
+      message->header.frame_id = frame + "_device";
+      message->vector = toVector(mapping.torqueToDevice(torque));
+      torque_publisher.publish(message);
+    }
     if (local_coupling)
     {
       return;
@@ -298,6 +311,10 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   impl.reset_client = physics_nh.serviceClient<std_srvs::Trigger>("reset_scene");
   impl.pose_publisher = nh.advertise<geometry_msgs::PoseStamped>("pose", kPublisherQueue);
   impl.force_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/force", kPublisherQueue);
+  if (impl.profile.torque_axes != 0)
+  {
+    impl.torque_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/torque", kPublisherQueue);
+  }
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   impl.state_subscriber = nh.subscribe("device/state", kSubscriberQueue, &Impl::onState, &impl, hints);
   impl.feedback_subscriber = nh.subscribe("feedback", kSubscriberQueue, &Impl::onFeedback, &impl, hints);

@@ -136,6 +136,7 @@ struct ServoNode::Impl
     state->velocity = toVector(sample.reading.velocity);
     state->buttons = sample.reading.buttons;
     state->applied_force = toVector(sample.applied_force);
+    state->applied_torque = toVector(sample.applied_torque);
     state->has_orientation = sample.reading.has_orientation;
     if (sample.reading.has_orientation)
     {

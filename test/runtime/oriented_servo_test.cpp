@@ -325,18 +325,22 @@ TEST(OrientedServo, TheTorqueStopsAndRampsInWithTheForce)
   ASSERT_TRUE(loop->post(resume));
   const double resumed = static_cast<double>(ticksOf(1.2)) * loop->period();
   std::vector<Eigen::Vector3d> decided(ticksOf(2.0), Eigen::Vector3d::Zero());  // by sample tick
+  std::vector<Eigen::Vector3d> applied(ticksOf(2.0), Eigen::Vector3d::Zero());  // the samples' applied_torque
+  std::vector<Eigen::Vector3d> given(ticksOf(2.0), Eigen::Vector3d::Zero());    // what the device got, by tick
   long compared = 0;
   double at_quarter = NAN;  // the scale 0.125 s after the resume
   for (long k = ticksOf(1.2); k < ticksOf(1.8); ++k)
   {
     run(*loop, k, 1,
-        [&decided](const ServoSample& sample)
+        [&decided, &applied](const ServoSample& sample)
         {
           if (sample.tick >= 0 && sample.tick < static_cast<long>(decided.size()))
           {
             decided[sample.tick] = sample.commanded_torque;
+            applied[sample.tick] = sample.applied_torque;
           }
         });
+    given[k] = fake->lastTorque();
     if (k == ticksOf(1.2))
     {
       ASSERT_EQ(fake->lastTorque(), Eigen::Vector3d::Zero());  // read before the resume was taken
@@ -355,6 +359,11 @@ TEST(OrientedServo, TheTorqueStopsAndRampsInWithTheForce)
     {
       at_quarter = fake->lastTorque().x() / decided[k - 1].x();
     }
+  }
+  // The samples (device/state's applied_torque) carry what the device got at their tick.
+  for (long k = ticksOf(1.2); k < ticksOf(1.79); ++k)
+  {
+    ASSERT_EQ(applied[k], given[k]) << "tick " << k;
   }
   EXPECT_GT(compared, ticksOf(0.5));  // a torque to scale on nearly every tick
   EXPECT_NEAR(at_quarter, 0.25, 1e-9);

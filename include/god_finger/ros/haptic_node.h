@@ -5,8 +5,9 @@
 // mapped by it, or the all-zero quaternion for a device that reports none: ros/world_messages.h
 // poseMessage; an unusable orientation is counted, rejected_orientations, and the last usable
 // one kept) and its TF (world -> ~interface_frame). Turns feedback (geometry_msgs/WrenchStamped,
-// world) into device/force (geometry_msgs/Vector3Stamped, device frame); the feedback's torque
-// is not sent to the device (no topic carries it to the driver yet).
+// world) into device/force (geometry_msgs/Vector3Stamped, device frame); with a profile that has
+// torque_axes, the feedback's torque (an oriented finger's) into device/torque
+// (geometry_msgs/Vector3Stamped, N m, device frame), whatever ~local_coupling.
 // With ~local_coupling (the default) the node renders the virtual coupling itself, with the
 // device's profile (the one the physics pulls the proxy with, read from the interface's
 // namespace), from the freshest device position and the last god-object position (proxy,
