@@ -98,6 +98,20 @@ void ForceGuard::resume(double time)
   }
 }
 
+double ForceGuard::scale(double time) const
+{
+  if (!have_command_ || stopped_)
+  {
+    return 0.0;
+  }
+  // 2. Watchdog.
+  const double late = time - last_command_time_ - params_.command_timeout;
+  const double watchdog = late <= 0.0 ? 1.0 : std::max(0.0, 1.0 - late / params_.ramp_time);
+  // 3. Soft start.
+  const double soft = softStartScale(time - start_time_, params_.soft_start);
+  return watchdog * soft;
+}
+
 Eigen::Vector3d ForceGuard::output(double time)
 {
   if (!std::isfinite(time) || (have_output_ && time <= output_time_))
@@ -107,16 +121,8 @@ Eigen::Vector3d ForceGuard::output(double time)
   const double dt = have_output_ ? time - output_time_ : 0.0;
   output_time_ = time;
   have_output_ = true;
-  Eigen::Vector3d target = Eigen::Vector3d::Zero();
-  if (have_command_ && !stopped_)
-  {
-    // 2. Watchdog.
-    const double late = time - last_command_time_ - params_.command_timeout;
-    const double watchdog = late <= 0.0 ? 1.0 : std::max(0.0, 1.0 - late / params_.ramp_time);
-    // 3. Soft start.
-    const double soft = softStartScale(time - start_time_, params_.soft_start);
-    target = (watchdog * soft) * last_force_;
-  }
+  // 2., 3. and 6.
+  Eigen::Vector3d target = scale(time) * last_force_;
   // 4. Continuous budget.
   const double decay = std::exp(-dt / params_.thermal_time_constant);
   const double continuous = std::min(params_.continuous_force, max_force_);

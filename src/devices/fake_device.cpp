@@ -106,6 +106,18 @@ bool FakeDevice::setHandTarget(const Eigen::Vector3d& position)
   return true;
 }
 
+bool FakeDevice::setHandPose(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation)
+{
+  setHandTarget(position);
+  if (orientation.coeffs().allFinite() && std::abs(orientation.norm() - 1.0) < 1e-3)
+  {
+    std::lock_guard<std::mutex> lock(target_mutex_);
+    target_orientation_ = orientation.normalized();
+    has_target_orientation_ = true;
+  }
+  return true;
+}
+
 DeviceReading FakeDevice::updateWrench(double time, const Eigen::Vector3d& force, const Eigen::Vector3d& torque)
 {
   DeviceReading reading = update(time, force);
@@ -118,10 +130,14 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
   torque_.setZero();
   bool has_target = false;
   Eigen::Vector3d target;
+  bool has_target_orientation = false;
+  Eigen::Quaterniond target_orientation;
   {
     std::lock_guard<std::mutex> lock(target_mutex_);
     has_target = has_target_;
     target = target_;
+    has_target_orientation = has_target_orientation_;
+    target_orientation = target_orientation_;
   }
   if (!started_clock_)
   {
@@ -155,7 +171,12 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
   DeviceReading reading;
   reading.position = position_;
   reading.velocity = velocity_;
-  if (orientation_)
+  if (has_target_orientation)
+  {
+    reading.has_orientation = true;
+    reading.orientation = target_orientation;
+  }
+  else if (orientation_)
   {
     reading.has_orientation = true;
     reading.orientation = orientation_->at(last_time_ - start_time_);

@@ -9,6 +9,7 @@
 #include "god_finger/core/spsc_queue.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/device_registry.h"
+#include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "hand_marker.h"
@@ -42,7 +43,8 @@ struct DriverSample
 {
   ros::Time stamp;  // when the device was read (wall clock)
   DeviceReading reading;
-  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();  // N, device frame
+  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();   // N, device frame
+  Eigen::Vector3d applied_torque = Eigen::Vector3d::Zero();  // N m, device frame
 };
 // Ticks of samples the publisher thread may lag behind (a second at 1 kHz); beyond it a sample
 // is dropped (counted) rather than the loop waiting.
@@ -64,6 +66,12 @@ struct DeviceDriverNode::Impl
   ros::Publisher state_publisher;
   ros::Publisher diagnostics_publisher;
   ros::Subscriber force_subscriber;
+  ros::Subscriber torque_subscriber;
+  DeviceProfile profile;  // torque_axes, max_torque (renderableTorque)
+  // Under `mutex`: the last device/torque (N m, device frame, renderable) and when it came
+  // (now()); one older than the guard's command_timeout is not rendered.
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  double torque_time = -1e9;
   ros::ServiceServer stop_service;  // stop_force, in the interface's namespace
   std::unique_ptr<interactive_markers::InteractiveMarkerServer> marker_server;
   std::mutex mutex;  // guards the guard, and nothing else
@@ -113,6 +121,21 @@ struct DeviceDriverNode::Impl
         std::fprintf(timing, "%.3f\n", 1e6 * round_trip);
       }
     }
+  }
+
+  // device/torque (an oriented finger's torque on the hand, device frame): kept for the loop,
+  // on the profile's torque axes and saturated at its max_torque; a non-finite one is dropped.
+  void onTorque(const geometry_msgs::Vector3Stamped::ConstPtr& message)
+  {
+    const Eigen::Vector3d value(message->vector.x, message->vector.y, message->vector.z);
+    if (!value.allFinite())
+    {
+      return;
+    }
+    const Eigen::Vector3d renderable = renderableTorque(profile, value);
+    std::lock_guard<std::mutex> lock(mutex);
+    torque = renderable;
+    torque_time = now();
   }
 
   // stop_force: true stops this device's force at once, false resumes it with the soft start.
@@ -186,14 +209,20 @@ struct DeviceDriverNode::Impl
     {
       const double t = now();
       Eigen::Vector3d force;
+      Eigen::Vector3d applied_torque = Eigen::Vector3d::Zero();
       {
         std::lock_guard<std::mutex> lock(mutex);
         force = guard->output(t);
+        // The torque through the force's guard (soft start, watchdog ramp, stop), while fresh.
+        if (t - torque_time <= guard->params().command_timeout)
+        {
+          applied_torque = guard->scale(t) * torque;
+        }
       }
       DeviceReading reading;
       try
       {
-        reading = device->update(t, force);
+        reading = device->updateWrench(t, force, applied_torque);
       }
       catch (const DeviceError& error)
       {
@@ -207,6 +236,7 @@ struct DeviceDriverNode::Impl
         sample->stamp = ros::Time::now();
         sample->reading = reading;
         sample->applied_force = force;
+        sample->applied_torque = applied_torque;
         samples.commit();
         sem_post(&samples_ready);
       }
@@ -241,6 +271,12 @@ struct DeviceDriverNode::Impl
     state->applied_force.x = sample.applied_force.x();
     state->applied_force.y = sample.applied_force.y();
     state->applied_force.z = sample.applied_force.z();
+    state->applied_torque = toVector(sample.applied_torque);
+    state->has_orientation = sample.reading.has_orientation;
+    if (sample.reading.has_orientation)
+    {
+      state->orientation = toQuaternion(sample.reading.orientation);
+    }
     state_publisher.publish(state);
   }
 
@@ -291,6 +327,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   const LayeredParameterSource device_params(private_params, interface_params);
   const InterfaceConfig config = readInterfaceConfig(device_params, nh.getNamespace());
   impl.guard = std::make_unique<ForceGuard>(config.profile.coupling.max_force, config.profile.guard);
+  impl.profile = config.profile;
   const std::string backend_name = readString(device_params, "backend", "fake");
   const DeviceBackend& backend = findDeviceBackend(backend_name, device_params.fullName("backend"));
   impl.frame = readString(pnh, "frame", "device");
@@ -304,12 +341,24 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   {
     HapticDevice* hand = impl.device.get();
     impl.marker_server = makeHandMarker(nh, impl.frame, readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)),
-                                        [hand](const Eigen::Vector3d& target) { hand->setHandTarget(target); });
+                                        [hand](const HandMarkerPose& target)
+                                        {
+                                          if (target.rotated)
+                                          {
+                                            hand->setHandPose(target.position, target.orientation);
+                                          }
+                                          else
+                                          {
+                                            hand->setHandTarget(target.position);
+                                          }
+                                        });
   }
   impl.state_publisher = nh.advertise<god_finger::DeviceState>("device/state", kPublisherQueue);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.force_subscriber =
       nh.subscribe("device/force", kSubscriberQueue, &Impl::onForce, &impl, ros::TransportHints().tcpNoDelay());
+  impl.torque_subscriber =
+      nh.subscribe("device/torque", kSubscriberQueue, &Impl::onTorque, &impl, ros::TransportHints().tcpNoDelay());
   impl.stop_service = nh.advertiseService("stop_force", &Impl::onStopForce, &impl);
   impl.timing = openTimingCsv(pnh, "latency_us");
   ROS_INFO("device_driver: backend '%s' at %.0f Hz, max force %.1f N", backend_name.c_str(), 1.0 / impl.period,

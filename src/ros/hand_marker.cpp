@@ -10,15 +10,20 @@
 
 namespace god_finger
 {
+Eigen::Quaterniond fingerOrientationOfMarker(const Eigen::Quaterniond& marker)
+{
+  return (marker * Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0)).normalized();  // (w, x, y, z): 180 deg about x
+}
+
 std::unique_ptr<interactive_markers::InteractiveMarkerServer> makeHandMarker(
     ros::NodeHandle& nh, const std::string& frame, const Eigen::Vector3d& start,
-    std::function<void(const Eigen::Vector3d&)> on_move)
+    std::function<void(const HandMarkerPose&)> on_move)
 {
   auto server = std::make_unique<interactive_markers::InteractiveMarkerServer>(nh.resolveName("device_marker"));
   visualization_msgs::InteractiveMarker marker;
   marker.header.frame_id = frame;
   marker.name = "hand";
-  marker.description = "drag to move the finger";
+  marker.description = "drag to move the finger, turn a ring to orient it";
   marker.scale = 0.05;
   marker.pose.position.x = start.x();
   marker.pose.position.y = start.y();
@@ -37,27 +42,45 @@ std::unique_ptr<interactive_markers::InteractiveMarkerServer> makeHandMarker(
   free.markers.push_back(ball);
   marker.controls.push_back(free);
   const double axes[3][4] = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}};  // quaternions x, y, z of each arrow pair
-  const char* names[3] = {"move_x", "move_z", "move_y"};
+  const char* names[3] = {"x", "z", "y"};
   for (int i = 0; i < 3; ++i)
   {
-    visualization_msgs::InteractiveMarkerControl axis;
-    axis.name = names[i];
-    axis.orientation.w = axes[i][3] / std::sqrt(2.0);
-    axis.orientation.x = axes[i][0] / std::sqrt(2.0);
-    axis.orientation.y = axes[i][1] / std::sqrt(2.0);
-    axis.orientation.z = axes[i][2] / std::sqrt(2.0);
-    axis.interaction_mode = visualization_msgs::InteractiveMarkerControl::MOVE_AXIS;
-    marker.controls.push_back(axis);
+    for (const bool rotate : {false, true})
+    {
+      visualization_msgs::InteractiveMarkerControl axis;
+      axis.name = std::string(rotate ? "rotate_" : "move_") + names[i];
+      axis.orientation.w = axes[i][3] / std::sqrt(2.0);
+      axis.orientation.x = axes[i][0] / std::sqrt(2.0);
+      axis.orientation.y = axes[i][1] / std::sqrt(2.0);
+      axis.orientation.z = axes[i][2] / std::sqrt(2.0);
+      axis.interaction_mode = rotate ? visualization_msgs::InteractiveMarkerControl::ROTATE_AXIS
+                                     : visualization_msgs::InteractiveMarkerControl::MOVE_AXIS;
+      marker.controls.push_back(axis);
+    }
   }
-  server->insert(
-      marker,
-      [on_move](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback)
-      {
-        if (feedback->event_type == visualization_msgs::InteractiveMarkerFeedback::POSE_UPDATE)
-        {
-          on_move(Eigen::Vector3d(feedback->pose.position.x, feedback->pose.position.y, feedback->pose.position.z));
-        }
-      });
+  bool rotated = false;  // the server calls back from one thread
+  server->insert(marker,
+                 [on_move, rotated](const visualization_msgs::InteractiveMarkerFeedbackConstPtr& feedback) mutable
+                 {
+                   if (feedback->event_type != visualization_msgs::InteractiveMarkerFeedback::POSE_UPDATE)
+                   {
+                     return;
+                   }
+                   const geometry_msgs::Quaternion& q = feedback->pose.orientation;
+                   const Eigen::Quaterniond marker_orientation(q.w, q.x, q.y, q.z);
+                   // A moved (not turned) marker keeps the identity; a ring's update turns it.
+                   rotated = rotated || feedback->control_name.rfind("rotate_", 0) == 0 ||
+                             std::abs(std::abs(marker_orientation.w()) - 1.0) > 1e-9;
+                   HandMarkerPose pose;
+                   pose.position =
+                       Eigen::Vector3d(feedback->pose.position.x, feedback->pose.position.y, feedback->pose.position.z);
+                   if (rotated && marker_orientation.coeffs().allFinite() && marker_orientation.norm() > 0.5)
+                   {
+                     pose.rotated = true;
+                     pose.orientation = fingerOrientationOfMarker(marker_orientation.normalized());
+                   }
+                   on_move(pose);
+                 });
   server->applyChanges();
   return server;
 }

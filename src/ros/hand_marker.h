@@ -1,22 +1,42 @@
 // The interactive backend's hand: an rviz interactive marker in the device frame (a sphere
-// moved freely in the view plane, and arrows along each axis). `on_move` gets every dragged
-// position (m, device frame), in the marker server's thread.
+// moved freely in the view plane, arrows along each axis, and rings turning it about each
+// axis). `on_move` gets every dragged pose, in the marker server's thread.
+//
+// The marker's orientation is the finger's with its pulp down: at the start (the marker
+// aligned with the device frame) the finger lies along device x with its pulp facing -z (the
+// finger frame of physics/oriented_finger.h is the marker's turned 180 degrees about x), and
+// the ring about x (rotate_x) rolls the finger about its own axis. Until the user first turns
+// a ring the poses carry no orientation (rotated false: the finger stays 3-DOF, as before the
+// rings existed); from then on every pose carries one.
 #pragma once
 
 #include <interactive_markers/interactive_marker_server.h>
 #include <ros/node_handle.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <functional>
 #include <memory>
 #include <string>
 
 namespace god_finger
 {
+// A dragged marker's pose, in the device frame.
+struct HandMarkerPose
+{
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m
+  bool rotated = false;  // a ring was turned since the marker was made: `orientation` is valid
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // the finger frame (unit)
+};
+
+// The finger frame in the device frame for a marker at `marker` (the marker's orientation in
+// the device frame): `marker` turned 180 degrees about its x (the pulp faces the marker's -z).
+Eigen::Quaterniond fingerOrientationOfMarker(const Eigen::Quaterniond& marker);
+
 // The server is `nh`'s device_marker (rviz: InteractiveMarkers, NAME/device_marker/update).
 std::unique_ptr<interactive_markers::InteractiveMarkerServer> makeHandMarker(
     ros::NodeHandle& nh, const std::string& frame, const Eigen::Vector3d& start,
-    std::function<void(const Eigen::Vector3d&)> on_move);
+    std::function<void(const HandMarkerPose&)> on_move);
 
 // When the scripts of the launch's simulated devices start, on a clock that reads `clock_now`
 // (s) now: the launch's /god_finger_script_epoch (wall clock) plus ~script_delay (`pnh`);

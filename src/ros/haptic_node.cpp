@@ -14,6 +14,7 @@
 #include "interface_parameters.h"
 #include "parameters.h"
 #include "queues.h"
+#include "world_messages.h"
 
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PointStamped.h>
@@ -48,6 +49,7 @@ struct HapticNode::Impl
   ros::Subscriber proxy_subscriber;
   ros::Publisher pose_publisher;
   ros::Publisher force_publisher;
+  ros::Publisher torque_publisher;  // device/torque: a profile with torque_axes only
   ros::Publisher diagnostics_publisher;
   ros::ServiceClient model_client;
   ros::ServiceClient reset_client;
@@ -69,6 +71,9 @@ struct HapticNode::Impl
   bool pending_reset = false;
   ContactModel model = ContactModel::kGodFinger;  // the physics' initial one (~model)
   long rejected_states = 0;
+  long rejected_orientations = 0;  // unusable orientations of device states (the position taken)
+  bool oriented = false;           // a state carried a usable orientation (an oriented finger)
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // world: the last usable one
   long rejected_feedback = 0;
   long states = 0;
   long timer_ticks = 0;
@@ -100,23 +105,31 @@ struct HapticNode::Impl
     // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
     const WorkspaceBound bound = boundToWorkspace(position, profile, mapping);
     const Eigen::Vector3d world = mapping.toWorld(bound.position);
-    geometry_msgs::PoseStampedPtr pose(new geometry_msgs::PoseStamped);
-    pose->header.stamp = state->header.stamp;
-    pose->header.frame_id = "world";
-    pose->pose.position.x = world.x();
-    pose->pose.position.y = world.y();
-    pose->pose.position.z = world.z();
-    pose->pose.orientation.w = 1.0;
+    // An oriented finger's orientation, mapped into the world; one unusable (non-finite, norm
+    // outside [0.5, 2]) is counted and the last usable one kept, as the servo loop does.
+    const Eigen::Quaterniond* world_orientation = nullptr;
+    if (state->has_orientation)
+    {
+      const Eigen::Quaterniond q(state->orientation.w, state->orientation.x, state->orientation.y,
+                                 state->orientation.z);
+      std::lock_guard<std::mutex> lock(mutex);
+      if (q.coeffs().allFinite() && q.norm() >= 0.5 && q.norm() <= 2.0)
+      {
+        orientation = mapping.orientationToWorld(q.normalized());
+        oriented = true;
+      }
+      else
+      {
+        ++rejected_orientations;
+      }
+      if (oriented)
+      {
+        world_orientation = &orientation;  // written by this callback only
+      }
+    }
+    const geometry_msgs::PoseStampedPtr pose = poseMessage(state->header.stamp, world, world_orientation);
     pose_publisher.publish(pose);
-
-    geometry_msgs::TransformStamped transform;
-    transform.header = pose->header;
-    transform.child_frame_id = frame;
-    transform.transform.translation.x = world.x();
-    transform.transform.translation.y = world.y();
-    transform.transform.translation.z = world.z();
-    transform.transform.rotation.w = 1.0;
-    broadcaster.sendTransform(transform);
+    broadcaster.sendTransform(interfaceTransform(*pose, frame));
     if (!state->header.frame_id.empty() && state->header.frame_id != device_frame)
     {
       publishDeviceFrame(state->header.frame_id);
@@ -155,6 +168,18 @@ struct HapticNode::Impl
 
   void onFeedback(const geometry_msgs::WrenchStamped::ConstPtr& feedback)
   {
+    // An oriented finger's torque on the hand, to the device frame, for a profile that renders
+    // torque (the driver keeps it on the torque axes, saturated, through its guard). Rendered
+    // from the physics' feedback whatever the coupling: the proxy's orientation is there only.
+    const Eigen::Vector3d torque = fromVector(feedback->wrench.torque);
+    if (profile.torque_axes != 0 && torque.allFinite())
+    {
+      geometry_msgs::Vector3StampedPtr message(new geometry_msgs::Vector3Stamped);
+      message->header.stamp = feedback->header.stamp;
+      message->header.frame_id = frame + "_device";
+      message->vector = toVector(mapping.torqueToDevice(torque));
+      torque_publisher.publish(message);
+    }
     if (local_coupling)
     {
       return;
@@ -208,6 +233,7 @@ struct HapticNode::Impl
     std::lock_guard<std::mutex> lock(mutex);
     addValue(&status, "device_states", std::to_string(states));
     addValue(&status, "rejected_states", std::to_string(rejected_states));
+    addValue(&status, "rejected_orientations", std::to_string(rejected_orientations));
     addValue(&status, "rejected_feedback", std::to_string(rejected_feedback));
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
@@ -285,6 +311,10 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   impl.reset_client = physics_nh.serviceClient<std_srvs::Trigger>("reset_scene");
   impl.pose_publisher = nh.advertise<geometry_msgs::PoseStamped>("pose", kPublisherQueue);
   impl.force_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/force", kPublisherQueue);
+  if (impl.profile.torque_axes != 0)
+  {
+    impl.torque_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/torque", kPublisherQueue);
+  }
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   impl.state_subscriber = nh.subscribe("device/state", kSubscriberQueue, &Impl::onState, &impl, hints);
   impl.feedback_subscriber = nh.subscribe("feedback", kSubscriberQueue, &Impl::onFeedback, &impl, hints);

@@ -51,6 +51,9 @@ struct PhysicsNode::Impl
     ros::Publisher proxy_publisher;
     // Written by the pose callback, read by the loop.
     Eigen::Vector3d target = Eigen::Vector3d::Zero();
+    // The pose's orientation (world_messages.h poseOrientation): an oriented finger's, else none.
+    bool oriented = false;
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
     ros::Time target_stamp;  // of the pose the target came from: feedback carries it on
     bool have_target = false;
     bool fresh = false;  // a pose came since the last step
@@ -113,6 +116,7 @@ struct PhysicsNode::Impl
       return;
     }
     interfaces[i].target = p;
+    interfaces[i].oriented = poseOrientation(message->pose, &interfaces[i].orientation);
     interfaces[i].target_stamp = message->header.stamp;
     interfaces[i].have_target = true;
     interfaces[i].fresh = true;
@@ -212,7 +216,14 @@ struct PhysicsNode::Impl
           continue;
         }
       }
-      world->setInterfaceTarget(interface.index, interface.target);
+      if (interface.oriented)
+      {
+        world->setInterfaceTarget(interface.index, interface.target, interface.orientation);
+      }
+      else
+      {
+        world->setInterfaceTarget(interface.index, interface.target);
+      }
     }
     const auto start = std::chrono::steady_clock::now();
     world->step();

@@ -136,6 +136,12 @@ struct ServoNode::Impl
     state->velocity = toVector(sample.reading.velocity);
     state->buttons = sample.reading.buttons;
     state->applied_force = toVector(sample.applied_force);
+    state->applied_torque = toVector(sample.applied_torque);
+    state->has_orientation = sample.reading.has_orientation;
+    if (sample.reading.has_orientation)
+    {
+      state->orientation = toQuaternion(sample.reading.orientation);
+    }
     interface.state.publish(state);
 
     geometry_msgs::Vector3StampedPtr force(new geometry_msgs::Vector3Stamped);
@@ -144,22 +150,14 @@ struct ServoNode::Impl
     force->vector = toVector(sample.commanded_force);
     interface.force.publish(force);
 
-    geometry_msgs::PoseStampedPtr pose(new geometry_msgs::PoseStamped);
-    pose->header.stamp = stamp;
-    pose->header.frame_id = "world";
-    pose->pose.position = toPoint(sample.interface_position);
-    pose->pose.orientation = toQuaternion(sample.interface_orientation);
+    const geometry_msgs::PoseStampedPtr pose = poseMessage(
+        stamp, sample.interface_position, sample.reading.has_orientation ? &sample.interface_orientation : nullptr);
     interface.pose.publish(pose);
 
     interface.feedback.publish(feedbackMessage(stamp, sample.user_force, sample.user_torque));
     interface.proxy.publish(proxyMessage(stamp, sample.proxy_position));
 
-    geometry_msgs::TransformStamped transform;
-    transform.header = pose->header;
-    transform.child_frame_id = interface.interface_frame;
-    transform.transform.translation = toVector(sample.interface_position);
-    transform.transform.rotation = pose->pose.orientation;
-    broadcaster.sendTransform(transform);
+    broadcaster.sendTransform(interfaceTransform(*pose, interface.interface_frame));
   }
 
   void publishDiagnostics()
@@ -338,12 +336,14 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
       ServoLoop* loop = impl.loop.get();
       const int index = static_cast<int>(i);
       interface.hand_marker = makeHandMarker(interface_nh, interface.device_frame, setup.hand_starts[i],
-                                             [loop, index](const Eigen::Vector3d& target)
+                                             [loop, index](const HandMarkerPose& target)
                                              {
                                                ServoCommand command;
                                                command.kind = ServoCommand::Kind::kHandTarget;
                                                command.interface = index;
-                                               command.hand_target = target;
+                                               command.hand_target = target.position;
+                                               command.hand_oriented = target.rotated;
+                                               command.hand_orientation = target.orientation;
                                                loop->post(command);
                                              });
     }

@@ -58,6 +58,55 @@ geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Ei
   return feedback;
 }
 
+geometry_msgs::PoseStampedPtr poseMessage(const ros::Time& stamp, const Eigen::Vector3d& position,
+                                          const Eigen::Quaterniond* orientation)
+{
+  geometry_msgs::PoseStampedPtr pose(new geometry_msgs::PoseStamped);
+  pose->header.stamp = stamp;
+  pose->header.frame_id = "world";
+  pose->pose.position = toPoint(position);
+  if (orientation)
+  {
+    pose->pose.orientation = toQuaternion(*orientation);
+  }
+  else
+  {
+    pose->pose.orientation.w = 0.0;  // none (a 3-DOF finger)
+  }
+  return pose;
+}
+
+geometry_msgs::TransformStamped interfaceTransform(const geometry_msgs::PoseStamped& pose, const std::string& frame)
+{
+  geometry_msgs::TransformStamped transform;
+  transform.header = pose.header;
+  transform.child_frame_id = frame;
+  transform.transform.translation.x = pose.pose.position.x;
+  transform.transform.translation.y = pose.pose.position.y;
+  transform.transform.translation.z = pose.pose.position.z;
+  Eigen::Quaterniond orientation;
+  if (poseOrientation(pose.pose, &orientation))
+  {
+    transform.transform.rotation = pose.pose.orientation;
+  }
+  else
+  {
+    transform.transform.rotation.w = 1.0;
+  }
+  return transform;
+}
+
+bool poseOrientation(const geometry_msgs::Pose& pose, Eigen::Quaterniond* orientation)
+{
+  const geometry_msgs::Quaternion& q = pose.orientation;
+  if (q.w == 0.0 && q.x == 0.0 && q.y == 0.0 && q.z == 0.0)
+  {
+    return false;
+  }
+  *orientation = Eigen::Quaterniond(q.w, q.x, q.y, q.z);
+  return true;
+}
+
 geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position)
 {
   geometry_msgs::PointStampedPtr proxy(new geometry_msgs::PointStamped);

@@ -7,6 +7,7 @@
 #include "god_finger/physics/god_finger_world.h"
 
 #include <geometry_msgs/PointStamped.h>
+#include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/time.h>
@@ -28,6 +29,18 @@ visualization_msgs::MarkerArrayPtr markerMessage(const SceneDescription& scene, 
 // 3-DOF finger) on the hand, world frame.
 geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Eigen::Vector3d& user_force,
                                                 const Eigen::Vector3d& user_torque);
+// An interface's pose (NAME/pose, `world`; the physics node's input in the topic topologies):
+// the device mapped into the world (m), and an oriented finger's orientation (the finger frame
+// in the world, unit). A 3-DOF finger's (`orientation` null) is the all-zero quaternion: "no
+// orientation", never a rotation. The TF of NAME_interface (interfaceTransform) takes the
+// identity there.
+geometry_msgs::PoseStampedPtr poseMessage(const ros::Time& stamp, const Eigen::Vector3d& position,
+                                          const Eigen::Quaterniond* orientation);
+geometry_msgs::TransformStamped interfaceTransform(const geometry_msgs::PoseStamped& pose, const std::string& frame);
+// A pose's orientation as poseMessage() wrote it: false for the all-zero quaternion (a 3-DOF
+// finger); else `orientation` is the message's as it is (GodFingerWorld::setInterfaceTarget
+// normalises it, or ignores and counts it when unusable).
+bool poseOrientation(const geometry_msgs::Pose& pose, Eigen::Quaterniond* orientation);
 geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position);
 std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescription& scene, const WorldSnapshot& world,
                                                             const ros::Time& stamp);

@@ -70,6 +70,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
       buttons_(interfaces_.size(), 0u),
       readings_(interfaces_.size()),
       applied_(interfaces_.size(), Eigen::Vector3d::Zero()),
+      applied_torque_(interfaces_.size(), Eigen::Vector3d::Zero()),
       read_at_(interfaces_.size(), 0.0),
       render_(interfaces_.size()),
       samples_(static_cast<std::size_t>(params.queue_ticks) * std::max<std::size_t>(1, interfaces_.size())),
@@ -239,6 +240,10 @@ void ServoLoop::applyHandTargets(double time)
         guard.resume(time);
       }
     }
+    else if (command.hand_oriented)
+    {
+      interfaces_[command.interface].device->setHandPose(command.hand_target, command.hand_orientation);
+    }
     else
     {
       interfaces_[command.interface].device->setHandTarget(command.hand_target);
@@ -301,10 +306,10 @@ void ServoLoop::readDevices(double time)
     ServoInterface& interface = interfaces_[i];
     applied_[i] = guards_[i].output(time);
     Render& render = render_[i];
-    // The torque decided for the last reading (zero for a device with no torque axes, and while
-    // the force is stopped).
-    const Eigen::Vector3d torque = guards_[i].stopped() ? Eigen::Vector3d::Zero() : render.torque;
-    const DeviceReading reading = interface.device->updateWrench(time, applied_[i], torque);
+    // The torque decided for the last reading (zero for a device with no torque axes), through
+    // the force's guard: its soft start and watchdog ramp, zero while the force is stopped.
+    applied_torque_[i] = guards_[i].scale(time) * render.torque;
+    const DeviceReading reading = interface.device->updateWrench(time, applied_[i], applied_torque_[i]);
     read_at_[i] = steadySeconds();
     // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
     const WorkspaceBound bound = boundToWorkspace(reading.position, interface.profile, interface.mapping);
@@ -554,6 +559,7 @@ void ServoLoop::decide(long tick, double time, double period_us)
     sample->interface = static_cast<int>(i);
     sample->reading = readings_[i];
     sample->applied_force = applied_[i];
+    sample->applied_torque = applied_torque_[i];
     sample->commanded_force = guards_[i].commanded();
     sample->interface_position = render.target;
     sample->interface_orientation =

@@ -53,6 +53,13 @@ TEST(DeviceRegistry, FakeDeviceFollowsItsScriptFromTheSharedStart)
   }
   EXPECT_NEAR(z, 0.05, 1e-4);
   EXPECT_TRUE(device->setHandTarget(Eigen::Vector3d(0, 0, 0.2)));
+  EXPECT_FALSE(device->update(4.001, Eigen::Vector3d::Zero()).has_orientation);
+  // The registry's device passes a turned hand on (setHandPose).
+  const Eigen::Quaterniond turned(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()));
+  EXPECT_TRUE(device->setHandPose(Eigen::Vector3d(0, 0, 0.2), turned));
+  const DeviceReading reading = device->update(4.002, Eigen::Vector3d::Zero());
+  ASSERT_TRUE(reading.has_orientation);
+  EXPECT_LT(reading.orientation.angularDistance(turned), 1e-12);
 }
 
 TEST(DeviceRegistry, EachBackendChecksItsOwnParameters)

@@ -89,6 +89,61 @@ TEST(FakeDevice, ReportsItsOrientationScriptAndRecordsTheTorque)
   }
 }
 
+// The interactive hand (setHandTarget, setHandPose): dragged by position only the device
+// reports no orientation, its readings the same as before (a 3-DOF finger); once turned
+// (setHandPose) every reading carries the last orientation given, also after later
+// position-only drags, and over an orientation script; an unusable orientation is ignored and
+// its position still taken.
+TEST(FakeDevice, AnInteractiveHandIsOrientedOnlyOnceTurned)
+{
+  const WaypointPath still({{0.0, Eigen::Vector3d::Zero()}});
+  FakeDevice dragged(FakeDeviceParams{}, still);
+  FakeDevice same(FakeDeviceParams{}, still);
+  dragged.setHandTarget(Eigen::Vector3d(0.01, 0.0, 0.02));
+  same.setHandTarget(Eigen::Vector3d(0.01, 0.0, 0.02));
+  DeviceReading reading;
+  for (int i = 0; i <= 500; ++i)
+  {
+    reading = dragged.update(i * 1e-3, Eigen::Vector3d(0, 0, 1.0));
+    const DeviceReading other = same.update(i * 1e-3, Eigen::Vector3d(0, 0, 1.0));
+    ASSERT_EQ(reading.position, other.position) << i;
+    ASSERT_FALSE(reading.has_orientation) << i;
+  }
+  EXPECT_NEAR(reading.position.x(), 0.01, 1e-5);
+  // Turned 20 degrees about the finger's axis from pulp down (180 degrees about x).
+  const Eigen::Quaterniond rolled(Eigen::AngleAxisd(M_PI + 20.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()));
+  EXPECT_TRUE(dragged.setHandPose(Eigen::Vector3d(0.0, 0.02, 0.02), rolled));
+  reading = dragged.update(0.501, Eigen::Vector3d::Zero());
+  ASSERT_TRUE(reading.has_orientation);
+  EXPECT_LT(reading.orientation.angularDistance(rolled), 1e-12);
+  for (int i = 502; i <= 1500; ++i)
+  {
+    reading = dragged.update(i * 1e-3, Eigen::Vector3d::Zero());
+  }
+  EXPECT_NEAR(reading.position.y(), 0.02, 1e-5);  // the pose's position is the hand's
+  // A later position-only drag keeps the orientation; a zero or non-finite one is ignored.
+  dragged.setHandTarget(Eigen::Vector3d(0.0, 0.0, 0.03));
+  dragged.setHandPose(Eigen::Vector3d(0.0, 0.0, 0.03), Eigen::Quaterniond(0, 0, 0, 0));
+  dragged.setHandPose(Eigen::Vector3d(0.0, 0.0, 0.03), Eigen::Quaterniond(NAN, 0, 0, 0));
+  for (int i = 1501; i <= 2500; ++i)
+  {
+    reading = dragged.update(i * 1e-3, Eigen::Vector3d::Zero());
+  }
+  ASSERT_TRUE(reading.has_orientation);
+  EXPECT_LT(reading.orientation.angularDistance(rolled), 1e-12);
+  EXPECT_NEAR(reading.position.z(), 0.03, 1e-5);
+  // Over an orientation script: the hand's orientation wins once given, not before.
+  MapParameterSource source("test: ");
+  source.set("orientation_script", table({{0.0, 0.0, 1.0, 0.0, 0.0}}));
+  FakeDevice scripted(FakeDeviceParams{}, still, readOrientationScript(source));
+  scripted.setHandTarget(Eigen::Vector3d::Zero());
+  reading = scripted.update(0.0, Eigen::Vector3d::Zero());
+  EXPECT_LT(reading.orientation.angularDistance(Eigen::Quaterniond(0, 1, 0, 0)), 1e-12);
+  scripted.setHandPose(Eigen::Vector3d::Zero(), rolled);
+  reading = scripted.update(0.001, Eigen::Vector3d::Zero());
+  EXPECT_LT(reading.orientation.angularDistance(rolled), 1e-12);
+}
+
 TEST(FakeDevice, BadParametersAreNamed)
 {
   FakeDeviceParams params;

@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """rostest: the interactive backend. Plays a user dragging the rviz marker (feedback messages,
 as rviz sends them): the device handle follows the marker in free space, and dragged down
-onto the ball the finger touches it: a contact area appears and the hand feels the force."""
+onto the ball the finger touches it: a contact area appears and the hand feels the force.
+Dragged only, the finger stays 3-DOF (DeviceState.has_orientation false); its ring about x
+turned 20 degrees, the finger is oriented: its pose rolls 20 degrees from pulp down and its
+area moves on the ball by fingertip_radius x 20 degrees (8 mm x 0.349 rad = 2.8 mm)."""
 import math
 import sys
 import time
@@ -9,9 +12,9 @@ import unittest
 
 import rospy
 import rostest
-from geometry_msgs.msg import WrenchStamped
+from geometry_msgs.msg import Point, PoseStamped, WrenchStamped
 from god_finger.msg import ContactAreaArray, DeviceState
-from ros_test_support import drag_marker
+from ros_test_support import drag_marker, turn_marker
 from visualization_msgs.msg import InteractiveMarkerFeedback
 
 
@@ -21,6 +24,10 @@ class Interactive(unittest.TestCase):
         self.state = None
         self.force = 0.0
         self.areas = 0
+        self.has_orientation = False  # some device state carried an orientation
+        self.area_point = None  # the ball's area centre (m, world)
+        self.turned = 0.0  # rad: the finger's pose from pulp down
+        rospy.Subscriber("/finger/pose", PoseStamped, self.on_pose, queue_size=10)
         rospy.Subscriber("/finger/device/state", DeviceState, self.on_state, queue_size=10)
         rospy.Subscriber("/finger/feedback", WrenchStamped, self.on_feedback, queue_size=10)
         rospy.Subscriber("/contact_areas", ContactAreaArray, self.on_areas, queue_size=10)
@@ -28,6 +35,12 @@ class Interactive(unittest.TestCase):
 
     def on_state(self, message):
         self.state = message.position
+        self.has_orientation = self.has_orientation or message.has_orientation
+
+    def on_pose(self, message):
+        q = message.pose.orientation
+        # From pulp down (180 degrees about x: w=0, x=1): 2 acos(|<q, q0>|); none (all zero): 0.
+        self.turned = 0.0 if (q.w, q.x, q.y, q.z) == (0, 0, 0, 0) else 2.0 * math.acos(min(1.0, abs(q.x)))
 
     def on_feedback(self, message):
         f = message.wrench.force
@@ -35,6 +48,9 @@ class Interactive(unittest.TestCase):
 
     def on_areas(self, message):
         self.areas = len(message.areas)
+        for area in message.areas:
+            if area.radius > 0.0:
+                self.area_point = (area.point.x, area.point.y, area.point.z)
 
     def wait_for(self, condition, seconds, what):
         """Polls `condition` until it holds or `seconds` pass; fails naming `what` (a string, or
@@ -73,6 +89,25 @@ class Interactive(unittest.TestCase):
         self.assertEqual(self.areas, 1)
         # The finger rests on the ball (god-object at 8.3 cm) while the hand is lower.
         self.assertLess(self.state.z, 0.083)
+        # Dragged only: a 3-DOF finger, as before the marker had rings.
+        self.assertFalse(self.has_orientation)
+        self.wait_for(lambda: self.area_point is not None, 10.0, "the ball's contact area")
+        before = self.area_point
+        turn_marker(self.drag, Point(0.0, 0.0, 0.075), math.radians(20.0), 1.0)
+        self.wait_for(lambda: self.has_orientation and abs(self.turned - math.radians(20.0)) < 1e-3, 10.0,
+                      lambda: "the finger oriented and rolled 20 degrees (%s, %.4f rad)"
+                      % (self.has_orientation, self.turned))
+        expected = 0.008 * math.radians(20.0)
+
+        def travel():
+            return math.sqrt(sum((a - b) ** 2 for a, b in zip(self.area_point, before)))
+
+        self.wait_for(lambda: abs(travel() - expected) < 3e-4, 10.0,
+                      lambda: "the area to move %.5f m on the ball (%.5f m)" % (expected, travel()))
+        print("interactive: ring turned 20 degrees, finger rolled %.4f rad, area moved %.5f m (R_f theta %.5f m)"
+              % (self.turned, travel(), expected))
+        # Across the finger (y), not along it.
+        self.assertLess(abs(self.area_point[0] - before[0]), 3e-4)
 
 
 if __name__ == "__main__":

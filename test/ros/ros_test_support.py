@@ -1,6 +1,7 @@
 """What the Python rostests share: waiting on a condition with a deadline (never sleeping to
 synchronise), running a command as a user types it, and dragging the interactive device's rviz
 marker as a user does. A mixin for unittest.TestCase."""
+import math
 import subprocess
 import time
 
@@ -27,6 +28,27 @@ def drag_marker(publisher, start, x, y, z, seconds):
         # Paces the drag (mouse events spread over `seconds`, as a hand drags), not a
         # synchronisation: the tests wait on what the drag does.
         time.sleep(seconds / 20.0)
+
+
+def turn_marker(publisher, position, angle, seconds):
+    """Turns the interactive device's marker, held at `position` (a point, device frame), from
+    rest to `angle` (rad) about its x (the finger's own axis: its ring rotate_x) in 20 mouse
+    events over `seconds`, as rviz sends them."""
+    for k in range(1, 21):
+        feedback = InteractiveMarkerFeedback()
+        feedback.header.frame_id = "finger_device"
+        feedback.client_id = "/rviz/InteractiveMarkers"
+        feedback.marker_name = "hand"
+        feedback.control_name = "rotate_x"
+        feedback.event_type = InteractiveMarkerFeedback.POSE_UPDATE
+        feedback.pose.position.x = position.x
+        feedback.pose.position.y = position.y
+        feedback.pose.position.z = position.z
+        half = 0.5 * angle * k / 20.0
+        feedback.pose.orientation.w = math.cos(half)
+        feedback.pose.orientation.x = math.sin(half)
+        publisher.publish(feedback)
+        time.sleep(seconds / 20.0)  # paces the turn, as drag_marker
 
 
 class RosTestSupport:

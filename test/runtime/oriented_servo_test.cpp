@@ -293,12 +293,16 @@ TEST(OrientedServo, TheTorqueReachesTheDeviceOnTheProfilesAxesOnly)
   EXPECT_GT(force_only_loop->world().interfaceState(0).user_torque.norm(), 0.0);  // there was one to send
 }
 
-// While the force is stopped (kStopForce) the device gets no torque either.
-TEST(OrientedServo, StoppedForceSendsNoTorque)
+// The torque goes through the force's guard (ForceGuard::scale): while the force is stopped
+// (kStopForce) the device gets no torque; resumed (kResumeForce), the torque ramps in with the
+// force's soft start: each tick's torque is softStartScale(t - t_resume, soft_start) times the
+// torque decided for it, on the force's clock.
+TEST(OrientedServo, TheTorqueStopsAndRampsInWithTheForce)
 {
   DeviceProfile profile;
   profile.torque_axes = kTorqueX;
   profile.max_torque = 1.0;
+  const double soft_start = profile.guard.soft_start;  // 0.5 s
   auto device = rollingHand();
   FakeDevice* fake = device.get();
   auto loop = makeLoop(std::move(device), profile);
@@ -315,6 +319,100 @@ TEST(OrientedServo, StoppedForceSendsNoTorque)
       ASSERT_EQ(fake->lastTorque(), Eigen::Vector3d::Zero()) << "tick " << k;
     }
   }
+  // Resumed at 1.2 s (the command is taken at the end of that tick): mid-roll, a torque to send.
+  ServoCommand resume;
+  resume.kind = ServoCommand::Kind::kResumeForce;
+  ASSERT_TRUE(loop->post(resume));
+  const double resumed = static_cast<double>(ticksOf(1.2)) * loop->period();
+  std::vector<Eigen::Vector3d> decided(ticksOf(2.0), Eigen::Vector3d::Zero());  // by sample tick
+  std::vector<Eigen::Vector3d> applied(ticksOf(2.0), Eigen::Vector3d::Zero());  // the samples' applied_torque
+  std::vector<Eigen::Vector3d> given(ticksOf(2.0), Eigen::Vector3d::Zero());    // what the device got, by tick
+  long compared = 0;
+  double at_quarter = NAN;  // the scale 0.125 s after the resume
+  for (long k = ticksOf(1.2); k < ticksOf(1.8); ++k)
+  {
+    run(*loop, k, 1,
+        [&decided, &applied](const ServoSample& sample)
+        {
+          if (sample.tick >= 0 && sample.tick < static_cast<long>(decided.size()))
+          {
+            decided[sample.tick] = sample.commanded_torque;
+            applied[sample.tick] = sample.applied_torque;
+          }
+        });
+    given[k] = fake->lastTorque();
+    if (k == ticksOf(1.2))
+    {
+      ASSERT_EQ(fake->lastTorque(), Eigen::Vector3d::Zero());  // read before the resume was taken
+      continue;
+    }
+    const double t = static_cast<double>(k) * loop->period();
+    const double scale = softStartScale(t - resumed, soft_start);
+    // What the device got this tick: the torque decided at the tick before, scaled.
+    ASSERT_NEAR(fake->lastTorque().x(), scale * decided[k - 1].x(), 1e-15) << "tick " << k;
+    ASSERT_LE(std::abs(fake->lastTorque().x()), std::abs(decided[k - 1].x())) << "tick " << k;
+    if (decided[k - 1].x() != 0.0)
+    {
+      ++compared;
+    }
+    if (k == ticksOf(1.325))
+    {
+      at_quarter = fake->lastTorque().x() / decided[k - 1].x();
+    }
+  }
+  // The samples (device/state's applied_torque) carry what the device got at their tick.
+  for (long k = ticksOf(1.2); k < ticksOf(1.79); ++k)
+  {
+    ASSERT_EQ(applied[k], given[k]) << "tick " << k;
+  }
+  EXPECT_GT(compared, ticksOf(0.5));  // a torque to scale on nearly every tick
+  EXPECT_NEAR(at_quarter, 0.25, 1e-9);
+  RecordProperty("measured", "torque 0.125 s after resume: " + std::to_string(at_quarter) + " of the decided torque");
+}
+
+// The interactive hand through the loop (kHandTarget, as hand_marker.h posts it): dragged by
+// position only the finger stays 3-DOF; once the marker is turned (hand_oriented) the finger is
+// oriented, and rolling the marker 40 degrees about the finger's axis in 2-degree mouse steps
+// moves the area across the box by fingertip_radius x 40 degrees.
+TEST(OrientedServo, TheInteractiveHandOrientsTheFingerOnlyOnceTurned)
+{
+  auto loop = makeLoop(rollingHand(false), DeviceProfile());
+  const Eigen::Vector3d pressing(0.002, 0.0, 0.053);  // roll_finger's pressing hand (device = world)
+  ServoCommand drag;
+  drag.kind = ServoCommand::Kind::kHandTarget;
+  drag.hand_target = pressing;
+  run(*loop, 0, ticksOf(0.3));
+  ASSERT_TRUE(loop->post(drag));
+  run(*loop, ticksOf(0.3), ticksOf(0.4));
+  const InterfaceState dragged = loop->world().interfaceState(0);
+  EXPECT_FALSE(dragged.oriented);
+  ASSERT_EQ(dragged.contact_count, 1);
+  // The marker's first turn: at rest (identity) it is the finger pulp down (hand_marker.h
+  // fingerOrientationOfMarker: 180 degrees about x); the roll turns it about x.
+  drag.hand_oriented = true;
+  drag.hand_orientation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitX()));
+  ASSERT_TRUE(loop->post(drag));
+  run(*loop, ticksOf(0.7), ticksOf(0.1));
+  const InterfaceState before = loop->world().interfaceState(0);
+  ASSERT_TRUE(before.oriented);
+  ASSERT_EQ(before.contact_count, 1);
+  long k = ticksOf(0.8);
+  for (int step = 1; step <= 20; ++step, k += ticksOf(0.02))
+  {
+    drag.hand_orientation = Eigen::Quaterniond(Eigen::AngleAxisd(M_PI + step * kRoll / 20.0, Eigen::Vector3d::UnitX()));
+    ASSERT_TRUE(loop->post(drag));
+    run(*loop, k, ticksOf(0.02));
+  }
+  run(*loop, k, ticksOf(0.3));
+  const InterfaceState after = loop->world().interfaceState(0);
+  ASSERT_EQ(after.contact_count, 1);
+  const double rolled = before.proxy_orientation.angularDistance(after.proxy_orientation);
+  EXPECT_NEAR(rolled, kRoll, 1e-3);
+  const double travel = (after.contacts[0].point - before.contacts[0].point).norm();
+  EXPECT_NEAR(travel, rollParams().finger.fingertip_radius * kRoll, 1e-4) << "travel " << travel;
+  EXPECT_LT(std::abs(after.contacts[0].point.x() - before.contacts[0].point.x()), 1e-4);
+  RecordProperty("measured", "interactive roll: area moved " + std::to_string(travel) + " m, rolled " +
+                                 std::to_string(rolled) + " rad");
 }
 
 // NaN, zero-norm and far-from-unit quaternions from a device are ignored and counted: the finger

@@ -193,6 +193,47 @@ TEST(ForceGuard, StopZeroesAtOnceAndResumeRampsIn)
   EXPECT_EQ(guard.output(t), command);
 }
 
+// scale(): the factor the force's target gets from the watchdog, the soft start and stop (an
+// oriented finger's torque is scaled by it): 0 before the first command, the soft start's
+// (t - t0) / soft_start, the watchdog's ramp, 0 while stopped and the soft start again on resume.
+TEST(ForceGuard, ScaleIsTheSoftStartTimesTheWatchdogAndZeroWhenStopped)
+{
+  ForceGuardParams params;  // soft_start 0.5 s, command_timeout 20 ms, ramp_time 10 ms
+  ForceGuard guard(kMaxForce, params);
+  const Eigen::Vector3d command(1, 0, 0);
+  EXPECT_EQ(guard.scale(0.0), 0.0);  // no command yet
+  guard.command(1.0, command);
+  EXPECT_EQ(guard.scale(1.0), 0.0);
+  EXPECT_NEAR(guard.scale(1.01), 0.02, 1e-12);  // within the timeout: the soft start alone
+  double last = 1.0;                            // the last command's time
+  for (double t = 1.0; t <= 1.6; t += kPeriod)
+  {
+    guard.command(t, command);
+    last = t;
+    ASSERT_NEAR(guard.scale(t), std::min(1.0, (t - 1.0) / 0.5), 1e-12) << t;
+    guard.output(t);
+  }
+  // The force's own target is the same factor times the command (the rate limit does not bind
+  // at 1e4 N/s): no second ramp.
+  EXPECT_NEAR(guard.output(last).x(), guard.scale(last) * command.x(), 1e-12);
+  EXPECT_EQ(guard.scale(last), 1.0);
+  // The watchdog (20 ms without a command), 5 ms into its 10 ms ramp: half.
+  EXPECT_NEAR(guard.scale(last + 0.02 + 0.005), 0.5, 1e-9);
+  EXPECT_EQ(guard.scale(last + 0.02 + 0.011), 0.0);
+  guard.command(2.0, command);  // after the watchdog tripped: the soft start again
+  EXPECT_NEAR(guard.scale(2.01), 0.02, 1e-12);
+  guard.stop();
+  EXPECT_EQ(guard.scale(2.01), 0.0);
+  guard.command(2.015, command);
+  EXPECT_EQ(guard.scale(2.015), 0.0);  // commands are taken while stopped, nothing goes out
+  guard.resume(2.015);
+  for (double t = 2.015; t < 2.265; t += kPeriod)
+  {
+    guard.command(t, command);
+  }
+  EXPECT_NEAR(guard.scale(2.265), 0.5, 1e-9);  // 0.25 s into the soft start
+}
+
 TEST(ForceGuard, ResumesWithTheSoftStartAfterTheWatchdog)
 {
   ForceGuardParams params;

@@ -22,6 +22,11 @@
 //  6. stop(): the output is zero at once (not rate-limited) and stays zero until resume(),
 //     which restarts the soft start. Commands are still taken (and the watchdog runs) while
 //     stopped.
+// An oriented finger's torque goes through rules 2, 3 and 6 of the same guard (scale(): the
+// watchdog's ramp times the soft start, zero while stopped or before the first force command):
+// it starts, resumes and fades with the force, on the force's clock, with no ramp of its own.
+// Its saturation is the profile's max_torque (core/device_profile.h renderableTorque); rules 4
+// and 5 are the force's only.
 // Units: N, N/s and s, the device frame. Time is passed in (any monotonic clock), so the guard is
 // testable. Invariants: |output| <= max_force, |output(t2) - output(t1)| <= max_force_rate
 // (t2 - t1) except at stop(). output() advances the state: call it with non-decreasing times (a
@@ -68,6 +73,11 @@ class ForceGuard
   // The force to apply at `time` (non-decreasing; see above). Advances the soft start, the
   // budget and the rate limit.
   Eigen::Vector3d output(double time);
+  // What rules 2, 3 and 6 multiply the command by at `time`, in [0, 1]: the watchdog's ramp
+  // times the soft start (softStartScale), 0 while stopped or before the first command. The
+  // servo loop scales an oriented finger's torque by it. Reads the state, advances nothing;
+  // real-time safe.
+  double scale(double time) const;
   // The last good command, saturated (N, device frame): the guard's input.
   const Eigen::Vector3d& commanded() const
   {

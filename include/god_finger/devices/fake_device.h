@@ -75,6 +75,11 @@ class FakeDevice : public HapticDevice
   // the script: an interactive hand (an rviz marker dragged with the mouse). Thread-safe; a
   // non-finite position is ignored.
   bool setHandTarget(const Eigen::Vector3d& position) override;
+  // As setHandTarget(), and from now on every reading carries `orientation` (normalised; the
+  // finger frame in the device frame) instead of the orientation script's: the interactive
+  // hand rotated. Thread-safe; a non-finite position or an orientation whose norm is not within
+  // 1e-3 of 1 is ignored (each on its own).
+  bool setHandPose(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) override;
   // The update() time at which the script's time is 0.
   double startTime() const
   {
@@ -95,5 +100,7 @@ class FakeDevice : public HapticDevice
   std::mutex target_mutex_;
   bool has_target_ = false;
   Eigen::Vector3d target_ = Eigen::Vector3d::Zero();
+  bool has_target_orientation_ = false;  // setHandPose() was given a usable orientation
+  Eigen::Quaterniond target_orientation_ = Eigen::Quaterniond::Identity();
 };
 }  // namespace god_finger

@@ -79,6 +79,16 @@ class HapticDevice
   {
     return false;
   }
+  // As setHandTarget(), the hand also turning the handle to `orientation` (the finger frame of
+  // physics/oriented_finger.h in the device frame): from the first such call on, every reading
+  // has_orientation with the last one given (an interactive marker the user rotated); before
+  // it the device reports what it did (a 3-DOF finger stays one). A non-unit or non-finite
+  // orientation is ignored (the position is still taken). Devices that take no hand target:
+  // false. Same threads as setHandTarget().
+  virtual bool setHandPose(const Eigen::Vector3d& /*position*/, const Eigen::Quaterniond& /*orientation*/)
+  {
+    return false;
+  }
   // A device that carries several fingers (devices/hand_device.h): one device per finger, in
   // order, each run as its own interface; called once, before start(). Empty (every other
   // device): the device is one finger.

@@ -1,6 +1,10 @@
 // The device driver node: one haptic device served at ~rate (1 kHz) in its own thread.
 //
-// Publishes device/state (god_finger/DeviceState) every tick; subscribes device/force
+// Publishes device/state (god_finger/DeviceState, with the reading's orientation when it has
+// one, and the torque applied) every tick; subscribes device/torque (geometry_msgs/Vector3Stamped,
+// N m, device frame: kept on the profile's torque_axes and saturated at max_torque, given to the
+// device scaled by the guard's ForceGuard::scale, not at all once older than command_timeout)
+// and device/force
 // (geometry_msgs/Vector3Stamped, device frame, N). Every force goes through a ForceGuard:
 // saturated to the profile's max_force, rejected (and counted) when not finite, ramped to zero
 // within ramp_time when no command came for command_timeout, ramped in over soft_start at

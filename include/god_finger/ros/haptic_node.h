@@ -1,9 +1,13 @@
 // The haptic node: between one device driver and the physics, for one interface.
 //
 // Subscribes device/state (god_finger/DeviceState); publishes pose (geometry_msgs/PoseStamped,
-// frame world: the interface position mapped by WorkspaceMapping) and its TF (world ->
-// ~interface_frame). Turns feedback (geometry_msgs/WrenchStamped, world) into device/force
-// (geometry_msgs/Vector3Stamped, device frame).
+// frame world: the interface position mapped by WorkspaceMapping, and a state's orientation
+// mapped by it, or the all-zero quaternion for a device that reports none: ros/world_messages.h
+// poseMessage; an unusable orientation is counted, rejected_orientations, and the last usable
+// one kept) and its TF (world -> ~interface_frame). Turns feedback (geometry_msgs/WrenchStamped,
+// world) into device/force (geometry_msgs/Vector3Stamped, device frame); with a profile that has
+// torque_axes, the feedback's torque (an oriented finger's) into device/torque
+// (geometry_msgs/Vector3Stamped, N m, device frame), whatever ~local_coupling.
 // With ~local_coupling (the default) the node renders the virtual coupling itself, with the
 // device's profile (the one the physics pulls the proxy with, read from the interface's
 // namespace), from the freshest device position and the last god-object position (proxy,

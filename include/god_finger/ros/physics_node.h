@@ -1,13 +1,16 @@
 // The physics node: a GodFingerWorld stepped at a fixed rate in its own thread, for N
 // interfaces named by ~interfaces (each a namespace under the node's one).
 //
-// Per interface NAME: subscribes NAME/pose (geometry_msgs/PoseStamped, frame world);
-// publishes NAME/feedback (geometry_msgs/WrenchStamped: the force on the hand, world, every
-// step) and NAME/proxy (geometry_msgs/PointStamped: the god-object, every step). Publishes
-// contact_areas (god_finger/ContactAreaArray), markers (visualization_msgs/MarkerArray) and
-// the TF of every body (world -> link name) at ~publish_rate; /diagnostics at 1 Hz (step rate,
-// overruns, rejected poses). Services: reset_scene (std_srvs/Trigger), set_contact_model
-// (god_finger/SetContactModel). A proxy appears at an interface's first valid pose.
+// Per interface NAME: subscribes NAME/pose (geometry_msgs/PoseStamped, frame world; a non-zero
+// orientation, the finger frame in the world, makes the interface an oriented finger, the
+// all-zero quaternion keeps it 3-DOF: ros/world_messages.h poseMessage); publishes
+// NAME/feedback (geometry_msgs/WrenchStamped: the force on the hand and an oriented finger's
+// torque, world, every step) and NAME/proxy (geometry_msgs/PointStamped: the god-object, every
+// step). Publishes contact_areas (god_finger/ContactAreaArray), markers
+// (visualization_msgs/MarkerArray) and the TF of every body (world -> link name) at
+// ~publish_rate; /diagnostics at 1 Hz (step rate, overruns, rejected poses). Services:
+// reset_scene (std_srvs/Trigger), set_contact_model (god_finger/SetContactModel). A proxy
+// appears at an interface's first valid pose.
 //
 // Parameters (private; checked at start-up, a bad one is an InputError naming it): scene (URDF
 // path, required), interfaces (["finger"]), rate (Hz, 1000), publish_rate (Hz, 60), model,

@@ -173,6 +173,9 @@ struct ServoSample
   // sent with the next update (N m, device frame: on the profile's axes, saturated). Zero else.
   Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();
   Eigen::Vector3d commanded_torque = Eigen::Vector3d::Zero();
+  // N m, device frame: the torque given to the device at this tick (a commanded_torque of the
+  // tick before, scaled by the guard, ForceGuard::scale).
+  Eigen::Vector3d applied_torque = Eigen::Vector3d::Zero();
   double read_at = 0.0;    // s, steadySeconds() when the device was read
   double period_us = 0.0;  // since the previous tick began (wall clock)
   // From this device's reading to its force being ready (wall clock): simulated time, the
@@ -206,6 +209,10 @@ struct ServoCommand
   PadSolver pad_solver = WorldParams().pad_solver;  // kSetPadSolver, validated by post()
   int interface = 0;
   Eigen::Vector3d hand_target = Eigen::Vector3d::Zero();  // m, device frame
+  // kHandTarget: with an orientation too (HapticDevice::setHandPose; the finger frame in the
+  // device frame, unit), else the position alone (setHandTarget).
+  bool hand_oriented = false;
+  Eigen::Quaterniond hand_orientation = Eigen::Quaterniond::Identity();
 };
 
 // Counters since the loop began; readable from any thread.
@@ -376,7 +383,8 @@ class ServoLoop
   std::vector<std::uint32_t> buttons_;
   std::vector<DeviceReading> readings_;  // the last finite reading of each device
   std::vector<Eigen::Vector3d> applied_;
-  std::vector<double> read_at_;  // wall-clock seconds of each reading
+  std::vector<Eigen::Vector3d> applied_torque_;  // N m, device frame, given at this tick
+  std::vector<double> read_at_;                  // wall-clock seconds of each reading
   std::vector<Render> render_;
   long cycle_presses_ = 0;  // haptic side's counts
   long reset_presses_ = 0;

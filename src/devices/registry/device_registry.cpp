@@ -63,6 +63,10 @@ class ScriptedFaults : public HapticDevice
   {
     return device_->setHandTarget(position);
   }
+  bool setHandPose(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) override
+  {
+    return device_->setHandPose(position, orientation);
+  }
 
  private:
   DeviceReading faulted(double time, DeviceReading reading) const
