@@ -33,50 +33,96 @@ double lensArea(double r1, double r2, double d)
   return a1 + a2 - 0.5 * std::sqrt(std::max(0.0, k));
 }
 
+namespace
+{
+bool finiteDisk(const AreaDisk& disk)
+{
+  if (!disk.centre.allFinite() || !disk.normal.allFinite() || !std::isfinite(disk.radius) ||
+      !std::isfinite(disk.reach) || disk.point_count < 0 || (disk.point_count > 0 && disk.points == nullptr))
+  {
+    return false;
+  }
+  for (int i = 0; i < disk.point_count; ++i)
+  {
+    if (!disk.points[i].allFinite())
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Whether `point` (m, world, on the surface) lies on `disk`: within kOverlapMargin of its plane
+// and its radius of its centre.
+bool onDisk(const Eigen::Vector3d& point, const AreaDisk& disk)
+{
+  const Eigen::Vector3d offset = point - disk.centre;
+  const double height = offset.dot(disk.normal);
+  return std::abs(height) < kOverlapMargin && (offset - height * disk.normal).norm() <= disk.radius;
+}
+
+// The part of `pad`'s disk area (m^2) whose points (its centre and its sub-god-objects, an equal
+// share each) lie on `other`'s disk.
+double sharedPart(const AreaDisk& pad, const AreaDisk& other)
+{
+  int on = onDisk(pad.centre, other) ? 1 : 0;
+  for (int i = 0; i < pad.point_count; ++i)
+  {
+    on += onDisk(pad.points[i], other) ? 1 : 0;
+  }
+  return M_PI * pad.radius * pad.radius * on / (pad.point_count + 1);
+}
+
+// Unit, in the plane of normal `plane_normal`, from a's centre to b's (see AreaOverlap::direction).
+Eigen::Vector3d separation(const AreaDisk& a, const AreaDisk& b, const Eigen::Vector3d& plane_normal)
+{
+  const Eigen::Vector3d between = b.centre - a.centre;
+  const Eigen::Vector3d in_plane = between - between.dot(plane_normal) * plane_normal;
+  const double distance = in_plane.norm();
+  return distance > kCoincident ? Eigen::Vector3d(in_plane / distance) : plane_normal.unitOrthogonal();
+}
+}  // namespace
+
 AreaOverlap areaOverlap(const AreaDisk& a, const AreaDisk& b)
 {
   AreaOverlap result;
-  const bool finite = a.centre.allFinite() && b.centre.allFinite() && a.normal.allFinite() && b.normal.allFinite() &&
-                      std::isfinite(a.radius) && std::isfinite(b.radius) && std::isfinite(a.reach) &&
-                      std::isfinite(b.reach);
-  if (!finite || a.radius <= 0.0 || b.radius <= 0.0)
+  if (!finiteDisk(a) || !finiteDisk(b) || a.radius <= 0.0 || b.radius <= 0.0)
   {
     return result;
   }
   const double cosine = a.normal.dot(b.normal);
-  const double tolerance = std::cos(kOverlapAngle);
-  Eigen::Vector3d plane_normal;
-  OverlapKind kind;
-  if (cosine >= tolerance)
+  if (!(cosine > 0.0))
   {
-    kind = OverlapKind::kSameSide;
-    plane_normal = (a.normal + b.normal).normalized();
+    return result;  // opposite faces: a pinch, never an overlap
   }
-  else if (cosine <= -tolerance)
+  const Eigen::Vector3d plane_normal = (a.normal + b.normal).normalized();
+  if (cosine >= std::cos(kOverlapAngle))
   {
-    kind = OverlapKind::kFacing;
-    plane_normal = (a.normal - b.normal).normalized();
+    const Eigen::Vector3d between = b.centre - a.centre;
+    const double apart = std::abs(between.dot(plane_normal));
+    if (!(apart < std::max(0.0, a.reach) + std::max(0.0, b.reach) + kOverlapMargin))
+    {
+      return result;
+    }
+    const double area = lensArea(a.radius, b.radius, (between - between.dot(plane_normal) * plane_normal).norm());
+    if (area <= 0.0)
+    {
+      return result;
+    }
+    result.kind = OverlapKind::kSameSide;
+    result.area = area;
   }
   else
   {
-    return result;
+    const double area = std::max(sharedPart(a, b), sharedPart(b, a));
+    if (area <= 0.0)
+    {
+      return result;
+    }
+    result.kind = OverlapKind::kWrapped;
+    result.area = area;
   }
-  const Eigen::Vector3d between = b.centre - a.centre;
-  const double apart = std::abs(between.dot(plane_normal));
-  if (!(apart < std::max(0.0, a.reach) + std::max(0.0, b.reach) + kOverlapMargin))
-  {
-    return result;
-  }
-  const Eigen::Vector3d in_plane = between - between.dot(plane_normal) * plane_normal;
-  const double distance = in_plane.norm();
-  const double area = lensArea(a.radius, b.radius, distance);
-  if (area <= 0.0)
-  {
-    return result;
-  }
-  result.kind = kind;
-  result.area = area;
-  result.direction = distance > kCoincident ? Eigen::Vector3d(in_plane / distance) : plane_normal.unitOrthogonal();
+  result.direction = separation(a, b, plane_normal);
   return result;
 }
 }  // namespace god_finger

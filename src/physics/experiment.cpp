@@ -1,5 +1,6 @@
 #include "god_finger/physics/experiment.h"
 #include "god_finger/physics/overlap_metrics.h"
+#include "god_finger/physics/pinch_metrics.h"
 #include "god_finger/physics/scenario_metrics.h"
 #include "roll_metrics.h"
 
@@ -250,12 +251,12 @@ Script rollFingerScript(std::uint64_t seed)
 }
 
 // holder_plate.urdf: a 2 mm plate clamped upright, its faces at x = -+0.001, 10 cm wide along y.
-// Two fingers, 3.5 cm up, come from x = -+0.02 to x = 0 in 0.5 s (their proxies stop on the faces
-// at x = -+0.004: 4 mm of coupling stretch, 1.6 N each, pads of r = 9.8 mm), 1.5 cm to either side
-// of the middle along y (3 cm apart: the areas do not overlap yet). They wait 0.2 s, then drift
-// towards each other along y for 2 s until facing each other across the plate (their areas would
-// cover each other), and hold until 3.5 s. Asymmetry: the right finger ends 1 mm (+ jitter) past
-// the left one along y, and 0.5 mm higher.
+// Two fingers on the same face (-x), 3.5 cm up, come from x = -0.02 to x = 0 in 0.5 s (their
+// proxies stop on the face at x = -0.004: 4 mm of coupling stretch, 1.6 N each, pads of r = 9.8 mm),
+// 1.5 cm to either side of the middle along y (3 cm apart: the areas do not overlap yet). They
+// wait 0.2 s, then slide towards each other along the face for 2 s until they meet (their areas
+// would cover each other: the paper's bimanual overlap), and hold until 3.5 s. Asymmetry: the right
+// finger ends 1 mm (+ jitter) past the left one along y, and 0.5 mm higher.
 Script pinchThinScript(std::uint64_t seed)
 {
   const double jitter = seededJitter(seed);
@@ -270,12 +271,56 @@ Script pinchThinScript(std::uint64_t seed)
     const double y0 = 0.015 * side;
     const double y1 = side > 0 ? 0.001 + jitter : 0.0;
     const double zs = z + (side > 0 ? 0.0005 : 0.0);
-    script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(0.02 * side, y0, zs)},
+    script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(-0.02, y0, zs)},
                                                       {0.5, xyz(0.0, y0, zs)},
                                                       {0.7, xyz(0.0, y0, zs)},
                                                       {2.7, xyz(0.0, y1, zs)},
                                                       {script.duration, xyz(0.0, y1, zs)}});
   }
+  return script;
+}
+
+// table_card.urdf: a 14 x 7 x 0.8 cm phone (150 g) on the table, 5.5 cm of it over the edge
+// (x = 0). Two fingers pinch the overhang 2 cm past the edge across the phone's thickness: the top
+// one comes down from 2 cm above it onto its top face in 0.4 s, the bottom one up from under the
+// edge (z = -0.02) onto its bottom face in 0.2-0.6 s, each touching with 1 mm of coupling stretch
+// (0.4 N: less than the phone's weight holds about the edge), then both squeeze together to 1 cm
+// inside their proxies' rest (proxy radius 3 mm; 3.9 N each) in 0.6-0.9 s, so that neither tips the
+// phone over the edge. They lift it 10 cm in 1.0-2.5 s and hold until 3.5 s: its far end comes off
+// the table and only the pinch holds it, against the 0.05 N m of its weight 3.5 cm from the pinch.
+// Asymmetry: the fingers are 2 mm (+ jitter) off the phone's middle along y.
+Script pinchCardScript(std::uint64_t seed)
+{
+  const double x = 0.02;
+  const double y = 0.002 + seededJitter(seed);
+  const double thickness = 0.008;
+  const double proxy = 0.003;
+  const double touch = 0.001;
+  const double squeeze = 0.01;
+  const double lift = 0.1;
+  Script script;
+  script.scene_file = "table_card.urdf";
+  script.object = "card";
+  script.lift_start = 1.0;
+  script.lift_end = 2.5;
+  script.lift_height = lift;
+  script.duration = 3.5;
+  const double top_face = thickness + proxy;  // the top proxy's centre at rest on the face
+  const double bottom_face = -proxy;
+  script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(x, y, top_face + 0.02)},
+                                                    {0.4, xyz(x, y, top_face - touch)},
+                                                    {0.6, xyz(x, y, top_face - touch)},
+                                                    {0.9, xyz(x, y, top_face - squeeze)},
+                                                    {script.lift_start, xyz(x, y, top_face - squeeze)},
+                                                    {script.lift_end, xyz(x, y, top_face - squeeze + lift)},
+                                                    {script.duration, xyz(x, y, top_face - squeeze + lift)}});
+  script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(x, y, -0.02)},
+                                                    {0.2, xyz(x, y, -0.02)},
+                                                    {0.6, xyz(x, y, bottom_face + touch)},
+                                                    {0.9, xyz(x, y, bottom_face + squeeze)},
+                                                    {script.lift_start, xyz(x, y, bottom_face + squeeze)},
+                                                    {script.lift_end, xyz(x, y, bottom_face + squeeze + lift)},
+                                                    {script.duration, xyz(x, y, bottom_face + squeeze + lift)}});
   return script;
 }
 
@@ -299,6 +344,8 @@ Script scriptFor(const ExperimentOptions& options)
       return rollFingerScript(options.seed);
     case Scenario::kPinchThin:
       return pinchThinScript(options.seed);
+    case Scenario::kPinchCard:
+      return pinchCardScript(options.seed);
   }
   return slideScript(options.push_height, options.seed);
 }
@@ -417,6 +464,8 @@ const char* scenarioName(Scenario scenario)
       return "roll_finger";
     case Scenario::kPinchThin:
       return "pinch_thin";
+    case Scenario::kPinchCard:
+      return "pinch_card";
   }
   return "?";
 }
@@ -536,6 +585,12 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   // pinch_thin's hand metrics (the other scenarios' results stay as they were).
   const bool overlap_metrics_wanted = options.scenario == Scenario::kPinchThin;
   OverlapMetrics overlap_metrics(world);
+  // pinch_card: the grip's (pinch_metrics.h).
+  std::unique_ptr<PinchMetrics> pinch;
+  if (options.scenario == Scenario::kPinchCard)
+  {
+    pinch = std::make_unique<PinchMetrics>(object, timesOf(script), world.bodyState(object));
+  }
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));
   ExperimentResult result;
@@ -560,6 +615,10 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
       roll->add(world.time(), world.interfaceState(0));
     }
     overlap_metrics.add(world);
+    if (pinch)
+    {
+      pinch->add(world.time(), world);
+    }
     csv.add(world.time(), state, world);
     if (sample_every > 0 && (i + 1) % sample_every == 0)
     {
@@ -590,6 +649,13 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   if (roll)
   {
     roll->addTo(&result.metrics);
+  }
+  if (pinch)
+  {
+    for (const auto& entry : pinch->metrics())
+    {
+      result.metrics.insert(entry);
+    }
   }
   if (overlap_metrics_wanted)
   {

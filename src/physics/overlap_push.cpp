@@ -21,7 +21,33 @@ AreaDisk diskOf(const WorldContactArea& area, double max_radius)
   disk.radius = area.radius;
   const double r = std::min(area.radius, max_radius);
   disk.reach = max_radius - std::sqrt(std::max(0.0, max_radius * max_radius - r * r));
+  disk.points = area.positions.data();
+  disk.point_count = area.sub_god_object_count;
   return disk;
+}
+
+// Whether finger `finger`'s area `area` holds its body against another finger: some other
+// finger's area on the same body presses against it (normals more than 90 degrees apart, so
+// the two squeeze the body between them). Such a finger is never pushed: the push could slide it
+// out of the grasp.
+bool holdsAgainstAnother(const std::vector<Proxy>& proxies, int finger, const WorldContactArea& area)
+{
+  for (int k = 0; k < static_cast<int>(proxies.size()); ++k)
+  {
+    if (k == finger)
+    {
+      continue;
+    }
+    const InterfaceState& other = proxies[k].state;
+    for (int c = 0; c < other.contact_count; ++c)
+    {
+      if (other.contacts[c].body == area.body && other.contacts[c].normal.dot(area.normal) < 0.0)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 }  // namespace
 
@@ -73,8 +99,14 @@ void OverlapPush::update(const WorldParams& params, std::vector<Proxy>* proxies)
           a.state.overlap_area += overlap.area;
           b.state.overlap_area += overlap.area;
           const Eigen::Vector3d force = params.overlap.stiffness * overlap.area * overlap.direction;
-          targets_[i] -= force;
-          targets_[j] += force;
+          if (!holdsAgainstAnother(*proxies, i, area_a))
+          {
+            targets_[i] -= force;
+          }
+          if (!holdsAgainstAnother(*proxies, j, area_b))
+          {
+            targets_[j] += force;
+          }
         }
       }
     }

@@ -1,7 +1,12 @@
 // The overlap push (paper, Discussion): when two fingers' contact areas on one body overlap
-// (core/area_overlap.h), both proxies are pushed apart, equal and opposite, in the common plane
-// from one area's centre towards the other's, with a force of WorldParams::overlap.stiffness
-// times the overlap area (N/m^2 x m^2), capped at the coupling's max_force. The hands feel it
+// (core/area_overlap.h: they share surface on one side of the body; pads on opposite faces never
+// overlap), both proxies are pushed apart, equal and opposite, in the common plane from one
+// area's centre towards the other's, with a force of WorldParams::overlap.stiffness times the
+// overlap area (N/m^2 x m^2), capped at the coupling's max_force.
+// The push never opens a grasp: a finger whose area on the body is pressed against by another
+// finger's area on the same body (normals more than 90 degrees apart: the body is squeezed
+// between them) gets no push from that overlap, whatever the stiffness; the other finger of the
+// overlapping pair still does, when it holds nothing. The hands feel it
 // through their couplings (scripted hands do not react: the push moves the proxies). Each proxy's
 // push moves towards its target by at most overlap.force_rate * dt per step (N), so that it adds
 // no force step.

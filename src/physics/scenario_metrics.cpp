@@ -109,6 +109,8 @@ void ScenarioMetrics::add(double time, double dt, const BodyState& state)
       break;
     case Scenario::kPinchThin:
       break;  // the plate is clamped: the hands' metrics are overlap_metrics.h's
+    case Scenario::kPinchCard:
+      break;  // the grip's metrics (pinch_metrics.h)
   }
   last_ = state;
 }
@@ -184,6 +186,7 @@ std::map<std::string, double> ScenarioMetrics::metrics() const
       result["fell_after_release"] = lowest_after_release_ < 0.5 * times_.lift_height ? 1.0 : 0.0;
       break;
     case Scenario::kPinchThin:
+    case Scenario::kPinchCard:
       break;
   }
   return result;

@@ -174,7 +174,7 @@ TEST(Experiment, HandGraspHoldsTheMugLevelAndLetsItFall)
   EXPECT_EQ(run(Scenario::kHandGrasp, ContactModel::kSoftFinger).metrics.at("fell_after_release"), 1.0);
 }
 
-// pinch_thin: two god-fingers pinch a 2 mm plate and drift until they face each other across it.
+// pinch_thin: two god-fingers press the same face of a 2 mm plate and slide until they meet.
 // Without the overlap push their areas come to cover each other; with it (the default) they are
 // kept apart, the overlap at most a fifth of that, and the push adds no force step over 0.5 N.
 // Point contacts (god_object) have no areas to overlap.
@@ -201,6 +201,30 @@ TEST(Experiment, PinchThinOverlapPushKeepsTheFingersApart)
     EXPECT_LE(pushed.metrics.at("max_force_step_N"), 0.5);
   }
   EXPECT_EQ(run(Scenario::kPinchThin, ContactModel::kGodObject).metrics.at("overlap_area_max_m2"), 0.0);
+}
+
+// pinch_card: two fingers pinch a free 8 mm phone across its thickness where it overhangs the
+// table, and lift it 10 cm. Every model holds it (a pinch is no overlap, however thin); the pads
+// hold it level against its weight's 0.05 N m about the pinch (the pad constraint within 1 mrad,
+// the paper's points within 0.05 rad, soft_finger's tilt lever within 0.02), while two points,
+// which resist no tilt, let it swing down about the pinch.
+TEST(Experiment, PinchCardHoldsAPhoneLevelWithPadsAndLetsItSwingOnPoints)
+{
+  for (const PadSolver solver : kPadSolvers)
+  {
+    SCOPED_TRACE(padSolverName(solver));
+    const ExperimentResult finger = run(Scenario::kPinchCard, ContactModel::kGodFinger, solver);
+    EXPECT_EQ(finger.nan, 0);
+    EXPECT_EQ(finger.metrics.at("held"), 1.0);
+    EXPECT_LT(finger.metrics.at("slip_m"), 0.002);
+    EXPECT_LT(finger.metrics.at("turn_rad"), solver == PadSolver::kConstraint ? 0.001 : 0.05);
+  }
+  const ExperimentResult soft = run(Scenario::kPinchCard, ContactModel::kSoftFinger);
+  EXPECT_EQ(soft.metrics.at("held"), 1.0);
+  EXPECT_LT(soft.metrics.at("slip_m"), 0.002);
+  EXPECT_LT(soft.metrics.at("turn_rad"), 0.02);
+  const ExperimentResult object = run(Scenario::kPinchCard, ContactModel::kGodObject);
+  EXPECT_GT(object.metrics.at("turn_rad"), 0.5);
 }
 
 TEST(Experiment, TwoRunsGiveIdenticalCsv)

@@ -1,7 +1,9 @@
 // The overlap push in the world (src/physics/overlap_push.h, WorldParams::overlap): two fingers
 // pressing side by side on one face overlap by the lens of their areas and are pushed apart, the
 // push changing by at most force_rate * dt per step; apart, or with stiffness 0, they feel no push;
-// a reset clears it; bad parameters are refused by name.
+// a reset clears it; bad parameters are refused by name. The push never opens a grasp: two
+// fingers side by side on one face of a free bar, pinched against a third on the opposite face,
+// are not pushed even at the largest stiffness, and the bar stays held.
 #include "god_finger/core/area_overlap.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
@@ -135,6 +137,49 @@ TEST(OverlapPush, OtherModelsHaveNoAreasToOverlap)
   ASSERT_EQ(a.contact_count, 1);
   ASSERT_EQ(fingers.world.interfaceState(1).contact_count, 1);
   EXPECT_GT(a.contacts[0].radius, 0.005);
+}
+
+// A free 100 g bar, 8 mm thick (y), in mid-air: two fingers side by side on its -y face, 6 mm
+// apart along x (their areas overlap), pinch it against a thumb on its +y face, each pulled 1 cm
+// in; held 2 s. The largest stiffness the world takes (1e7 N/m^2) pushes neither side-by-side
+// finger (each is pressed against by the thumb), and the bar neither slips nor turns.
+TEST(OverlapPush, ThePushNeverOpensAGrasp)
+{
+  WorldParams params;
+  params.overlap.stiffness = 1e7;
+  const double thickness = 0.008;
+  SceneDescription scene;
+  scene.name = "bar";
+  scene.bodies.push_back(boxBody("bar", Eigen::Vector3d(0.3, thickness, 0.04), 0.1, Eigen::Vector3d(0, 0, 0.2)));
+  GodFingerWorld world(scene, params);
+  const double face = 0.5 * thickness + params.coupling.proxy_radius;
+  const Eigen::Vector3d starts[] = {{-0.003, -face, 0.2}, {0.003, -face, 0.2}, {0.0, face, 0.2}};
+  const Eigen::Vector3d squeeze[] = {{0, 0.01, 0}, {0, 0.01, 0}, {0, -0.02, 0}};
+  for (int i = 0; i < 3; ++i)
+  {
+    world.addInterface(starts[i]);
+  }
+  const Eigen::Vector3d start = world.bodyState(0).center_of_mass;
+  double overlap = 0.0;
+  double turn = 0.0;
+  for (int step = 0; step < 2000; ++step)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      world.setInterfaceTarget(i, starts[i] + squeeze[i]);
+    }
+    world.step();
+    overlap = std::max(overlap, world.interfaceState(0).overlap_area);
+    for (int i = 0; i < 3; ++i)
+    {
+      EXPECT_EQ(world.interfaceState(i).overlap_push, Eigen::Vector3d::Zero());
+    }
+    turn = std::max(turn, Eigen::AngleAxisd(world.bodyState(0).pose.linear()).angle());
+  }
+  EXPECT_GT(overlap, 1e-4);  // they do overlap, side by side on one face
+  EXPECT_LT(turn, 0.01);
+  // Held: the bar sank only by the couplings' sag (0.98 N over 3 x 400 N/m: 0.8 mm).
+  EXPECT_LT((world.bodyState(0).center_of_mass - start).norm(), 0.002);
 }
 
 TEST(OverlapPush, BadParametersAreRefusedByName)

@@ -1,5 +1,5 @@
 // Overlap of two contact areas (core/area_overlap.h): the lens area against its closed forms, and
-// which pairs of areas overlap (same side, facing across a thin wall, neither).
+// which pairs of areas overlap (same side, a pad wrapped onto the other's face, never across a wall).
 #include "god_finger/core/area_overlap.h"
 
 #include <gtest/gtest.h>
@@ -96,24 +96,49 @@ TEST(AreaOverlap, NormalsTiltedWithinThirtyDegreesProjectOnTheMidPlane)
   EXPECT_EQ(far.area, 0.0);
 }
 
-TEST(AreaOverlap, FacingAreasAcrossAThinWallOverlap)
+TEST(AreaOverlap, PadsOnOppositeFacesNeverOverlapHoweverThinTheWall)
 {
-  // A 2 mm plate between x = -0.001 and 0.001: one area on each face, 5 mm apart along y.
-  const Eigen::Vector3d a_centre(-0.001, 0.0, 0.0);
-  const Eigen::Vector3d b_centre(0.001, 0.005, 0.0);
-  const AreaOverlap pressed = areaOverlap(disk(a_centre, -Eigen::Vector3d::UnitX(), 0.008, 0.001),
-                                          disk(b_centre, Eigen::Vector3d::UnitX(), 0.008, 0.0005));
-  EXPECT_EQ(pressed.kind, OverlapKind::kFacing);
-  EXPECT_NEAR(pressed.area, lensArea(0.008, 0.008, 0.005), 1e-15);
-  EXPECT_NEAR((pressed.direction - Eigen::Vector3d::UnitY()).norm(), 0.0, 1e-12);
-  // A 2 mm wall with fingers that barely touch (reach 0): 2 mm > the 1 mm margin, no overlap.
-  const AreaOverlap light = areaOverlap(disk(a_centre, -Eigen::Vector3d::UnitX(), 0.008, 0.0),
-                                        disk(b_centre, Eigen::Vector3d::UnitX(), 0.008, 0.0));
-  EXPECT_EQ(light.kind, OverlapKind::kNone);
-  // A 5 cm box pinched with 1 cm of reach each: its faces are too far apart.
-  const AreaOverlap thick = areaOverlap(disk({-0.025, 0.0, 0.0}, -Eigen::Vector3d::UnitX(), 0.01, 0.01),
-                                        disk({0.025, 0.0, 0.0}, Eigen::Vector3d::UnitX(), 0.01, 0.01));
-  EXPECT_EQ(thick.kind, OverlapKind::kNone);
+  // A 2 mm plate between x = -0.001 and 0.001: one area on each face, 5 mm apart along y, and
+  // pressed deep; and a 0.1 mm card with the two centres on one line. A pinch, not an overlap.
+  const AreaOverlap pinched = areaOverlap(disk({-0.001, 0.0, 0.0}, -Eigen::Vector3d::UnitX(), 0.008, 0.004),
+                                          disk({0.001, 0.005, 0.0}, Eigen::Vector3d::UnitX(), 0.008, 0.004));
+  EXPECT_EQ(pinched.kind, OverlapKind::kNone);
+  EXPECT_EQ(pinched.area, 0.0);
+  EXPECT_EQ(pinched.direction, Eigen::Vector3d::Zero());
+  const AreaOverlap card = areaOverlap(disk({-0.00005, 0, 0}, -Eigen::Vector3d::UnitX(), 0.01, 0.01),
+                                       disk({0.00005, 0, 0}, Eigen::Vector3d::UnitX(), 0.01, 0.01));
+  EXPECT_EQ(card.kind, OverlapKind::kNone);
+  EXPECT_EQ(card.area, 0.0);
+}
+
+// A pad that wraps over a 45-degree chamfer onto the face another pad presses: only its points
+// on that face, inside the other's disk, count.
+TEST(AreaOverlap, AWrappedPadCountsOnlyItsPartOnTheOtherFace)
+{
+  const double r = 0.01;
+  // b presses the top face (z = 0, normal z) at the origin. a presses the chamfer (normal 45
+  // degrees between z and x) at x = 0.012; of its 8 points, 3 wrapped onto the top face, 2 of them
+  // within b's disk.
+  const AreaDisk b = disk({0, 0, 0}, Eigen::Vector3d::UnitZ(), r, 0.0);
+  const Eigen::Vector3d points[] = {{0.008, 0.0, 0.0},       {0.009, 0.003, 0.0},    {0.011, -0.005, 0.0},
+                                    {0.015, 0.0, -0.003},    {0.016, 0.004, -0.004}, {0.018, 0.0, -0.006},
+                                    {0.014, -0.006, -0.002}, {0.017, -0.003, -0.005}};
+  AreaDisk a = disk({0.012, 0.0, -0.001}, Eigen::Vector3d(1, 0, 1), r, 0.0);
+  a.points = points;
+  a.point_count = 8;
+  const AreaOverlap overlap = areaOverlap(a, b);
+  EXPECT_EQ(overlap.kind, OverlapKind::kWrapped);
+  EXPECT_NEAR(overlap.area, M_PI * r * r * 2.0 / 9.0, 1e-15);
+  EXPECT_NEAR(overlap.direction.norm(), 1.0, 1e-12);
+  EXPECT_EQ(areaOverlap(b, a).area, overlap.area);
+  // Without its wrapped points (a flat disk on the chamfer), nothing is shared.
+  a.point_count = 0;
+  EXPECT_EQ(areaOverlap(a, b).kind, OverlapKind::kNone);
+  // A non-finite point is refused.
+  Eigen::Vector3d bad[] = {{NAN, 0, 0}};
+  a.points = bad;
+  a.point_count = 1;
+  EXPECT_EQ(areaOverlap(a, b).kind, OverlapKind::kNone);
 }
 
 TEST(AreaOverlap, PerpendicularOrDistantAreasDoNotOverlap)
@@ -130,9 +155,9 @@ TEST(AreaOverlap, PerpendicularOrDistantAreasDoNotOverlap)
 
 TEST(AreaOverlap, CoincidentCentresGetAFixedInPlaneDirection)
 {
-  const AreaOverlap overlap = areaOverlap(disk({0, 0, 0}, -Eigen::Vector3d::UnitX(), 0.01, 0.002),
-                                          disk({0.002, 0, 0}, Eigen::Vector3d::UnitX(), 0.01, 0.002));
-  EXPECT_EQ(overlap.kind, OverlapKind::kFacing);
+  const AreaOverlap overlap = areaOverlap(disk({0, 0, 0}, Eigen::Vector3d::UnitX(), 0.01, 0.002),
+                                          disk({0.0005, 0, 0}, Eigen::Vector3d::UnitX(), 0.01, 0.002));
+  EXPECT_EQ(overlap.kind, OverlapKind::kSameSide);
   EXPECT_NEAR(overlap.area, M_PI * 1e-4, 1e-15);
   EXPECT_NEAR(overlap.direction.norm(), 1.0, 1e-12);
   EXPECT_NEAR(overlap.direction.x(), 0.0, 1e-12);

@@ -1,19 +1,26 @@
 // The overlap of two fingers' contact areas on one body (paper, Discussion: god-fingers computed
 // independently may overlap; pushing both devices apart reduces the overlap).
 //
-// Each area is a disk: its centre c (m, world), its unit normal n (world, out of the object), its
-// radius r (m), and its pad's reach (m, >= 0): how deep past c, against n, the finger's pad is
-// pressed (physics/overlap_push.cpp: the depth of a fingertip sphere of radius r_max whose section
-// is the disk). Two areas overlap when
-//  - they lie on the same side of the body (normals within kOverlapAngle), or face each other
-//    across a thin wall (normals opposite within kOverlapAngle): pads that would press into each
-//    other around the thin object;
-//  - their fingers reach a common layer: the centres are closer along the common plane's normal
-//    than the sum of the two reaches plus kOverlapMargin (two fingers on one flat face: 0 apart;
-//    across a 2 mm plate: 2 mm apart, less than two pads pressed 1 mm or more deep);
-//  - and their disks, projected on the common plane (the mid-plane of the two: normal along
-//    n_a + n_b, or n_a - n_b when they face each other, through the mid-point of the centres),
-//    intersect. The overlap area is the lens area of the projected disks.
+// Two areas overlap only where they share surface: on one side of the body, with normals that
+// agree, as when two fingers press side by side or slide onto each other. Pads that face each
+// other across a body (a pinch of a card, a phone, a book) never overlap, however thin the body:
+// that is what a pinch is.
+//
+// Each area is a disk: its centre c (m, world, on the surface), its unit normal n (world, out of
+// the object), its radius r (m), its pad's reach (m, >= 0: how deep past c, against n, the
+// finger's pad is pressed; physics/overlap_push.cpp), and the points the pad really covers (its
+// sub-god-objects, m, world, on the surface), which leave the disk's plane where the pad wraps
+// over an edge. Two areas overlap
+//  - kSameSide: when their normals agree within kOverlapAngle, their centres are closer along the
+//    common plane's normal (n_a + n_b) than the two reaches plus kOverlapMargin (one layer of
+//    surface: two fingers on one flat face are 0 apart), and their disks, projected on the
+//    common plane, intersect: the lens area of the projected disks;
+//  - kWrapped: when their normals differ by more than kOverlapAngle but less than 90 degrees (a pad
+//    that wraps over an edge onto the face the other presses): only the shared part counts. The
+//    share of a's points (its centre and its sub-god-objects, each standing for an equal part of
+//    its disk) that lie on b's disk (within kOverlapMargin of b's plane and r_b of b's centre),
+//    times a's disk area; or the same of b's points on a's disk, whichever is larger;
+//  - never when their normals are 90 degrees or more apart (opposite faces, across any wall).
 //
 // Units: SI. Real-time safe (no allocation, no exceptions).
 #pragma once
@@ -32,22 +39,26 @@ struct AreaDisk
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, world, out of the object
   double radius = 0.0;                                // m, >= 0
   double reach = 0.0;                                 // m, >= 0: the pad's depth past c
+  // The pad's sub-god-objects (m, world): `point_count` of them at `points`; none for a flat disk.
+  const Eigen::Vector3d* points = nullptr;
+  int point_count = 0;
 };
 
 enum class OverlapKind
 {
   kNone,      // no overlap (area 0)
-  kSameSide,  // normals within kOverlapAngle
-  kFacing,    // normals opposite within kOverlapAngle, across a thin wall
+  kSameSide,  // normals within kOverlapAngle: the lens of the disks
+  kWrapped,   // normals within 90 degrees: the part of one pad that lies on the other's disk
 };
 
 struct AreaOverlap
 {
   OverlapKind kind = OverlapKind::kNone;
-  double area = 0.0;  // m^2: the lens area of the projected disks (0 without overlap)
-  // Unit, in the common plane, from a's projected centre to b's: pushing a along -direction and b
-  // along +direction separates the disks. When the projected centres coincide (closer than 1e-9 m),
-  // a fixed unit vector orthogonal to the plane's normal (Eigen's unitOrthogonal). Zero for kNone.
+  double area = 0.0;  // m^2 (0 without overlap)
+  // Unit, in the common plane (normal n_a + n_b), from a's projected centre to b's: pushing a along
+  // -direction and b along +direction separates the areas. When the projected centres coincide
+  // (closer than 1e-9 m), a fixed unit vector orthogonal to the plane's normal (Eigen's
+  // unitOrthogonal). Zero for kNone.
   Eigen::Vector3d direction = Eigen::Vector3d::Zero();
 };
 

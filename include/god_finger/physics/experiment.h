@@ -40,11 +40,15 @@
 //    hand from one step to the next, from the roll's start on), rolled_rad (the proxy's roll over
 //    the same span) and contact_lost_steps (steps from the roll's start without a contact area
 //    on the box). --hand fake runs it too: the fake device reports the script's orientation.
-//  - kPinchThin (urdf/scenes/holder_plate.urdf): two fingers pinch a clamped 2 mm plate across
-//    its thickness, 3 cm apart along it, and drift towards each other for 2 s until they face
-//    each other; 3.5 s in all. The paper's overlap of contact areas (Discussion), and its push
-//    (WorldParams::overlap; ExperimentOptions::overlap_stiffness 0 runs without). Metrics
-//    (overlap_metrics.h): overlap_area_max_m2, max_force_step_N.
+//  - kPinchThin (urdf/scenes/holder_plate.urdf): two fingers press the same face of a clamped
+//    2 mm plate, 3 cm apart along it, and slide towards each other for 2 s until they meet;
+//    3.5 s in all. The paper's overlap of contact areas (Discussion: two fingers' areas on one
+//    side of a body), and its push (WorldParams::overlap; ExperimentOptions::overlap_stiffness 0
+//    runs without). Metrics (overlap_metrics.h): overlap_area_max_m2, max_force_step_N.
+//  - kPinchCard (urdf/scenes/table_card.urdf): two fingers pinch a free 8 mm phone (150 g) across
+//    its thickness where it overhangs the table's edge, one above and one below, lift it 10 cm
+//    in 1.5 s and hold; 3.5 s in all. Pads on opposite faces are a pinch, never an overlap.
+//    Metrics (pinch_metrics.h): held, slip_m, turn_rad.
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
@@ -77,11 +81,12 @@ enum class Scenario
   kHandGrasp,
   kRollFinger,
   kPinchThin,
+  kPinchCard,
 };
 // Every scenario, in the order tools and scripts list them: the one list (scenarioNames()).
-constexpr Scenario kAllScenarios[] = {Scenario::kSlide,         Scenario::kLiftOne,  Scenario::kLiftTwo,
-                                      Scenario::kPinchCylinder, Scenario::kClutter,  Scenario::kHandGrasp,
-                                      Scenario::kRollFinger,    Scenario::kPinchThin};
+constexpr Scenario kAllScenarios[] = {Scenario::kSlide,         Scenario::kLiftOne,   Scenario::kLiftTwo,
+                                      Scenario::kPinchCylinder, Scenario::kClutter,   Scenario::kHandGrasp,
+                                      Scenario::kRollFinger,    Scenario::kPinchThin, Scenario::kPinchCard};
 const char* scenarioName(Scenario scenario);
 // The names of kAllScenarios joined by `separator` ("slide, lift_one, ...").
 std::string scenarioNames(const std::string& separator = ", ");

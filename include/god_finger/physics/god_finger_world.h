@@ -13,8 +13,10 @@
 //     tilt-corrected depth, in manifolds of our own (Bullet's keep at most 4 points and merge
 //     close ones; src/physics/sub_god_object_injection.h);
 //  4. the solver runs; the force on the user is the opposite of the coupling force;
-//  5. kGodFinger: where two fingers' contact areas on one body overlap, both proxies are pushed
-//     apart in the next step (WorldParams::overlap, src/physics/overlap_push.h).
+//  5. kGodFinger: where two fingers' contact areas on one body overlap (share surface on one side
+//     of it: pads on opposite faces are a pinch, never an overlap), both proxies are pushed apart
+//     in the next step, unless a finger holds the body against another (WorldParams::overlap,
+//     src/physics/overlap_push.h).
 //
 // Sleeping (WorldParams::sleep): a dynamic body at rest, out of every proxy's reach, falls asleep
 // with its island and costs almost nothing until a proxy or a woken body comes near it.

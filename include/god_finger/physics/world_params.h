@@ -82,15 +82,16 @@ struct SleepParams
 };
 
 // The overlap push (paper, Discussion; src/physics/overlap_push.h): where two fingers' contact
-// areas on one body overlap (core/area_overlap.h), both proxies are pushed apart with stiffness
-// times the overlap area, the push changing by at most force_rate per second. The default
-// stiffness holds the pinch_thin scenario's fingers (1.6 N of pinch each on a 2 mm plate, hands
-// drifting until they face each other) to less than a fifth of their overlap without it (README,
-// "Experiments": 2.4e-5 m^2 at most against 2.1e-4, 11 %): at 1e5 N/m^2 a full overlap of two
-// 1 cm pads (3.1e-4 m^2) would push with 31 N (capped at the coupling's max_force), and the
-// push balances the couplings' sideways pull and friction (about 3 N) at a few 1e-5 m^2, a tenth
-// of a full overlap. The rate keeps the hand's force steps small: on a 20 g proxy, a push change
-// of F per 1 ms step changes the coupling's damping force by about b dt F / m = 0.2 F.
+// areas on one body overlap (core/area_overlap.h: on one side of it; pads on opposite faces never
+// do), both proxies are pushed apart with stiffness times the overlap area, the push changing by
+// at most force_rate per second; a finger that holds the body against another is never pushed.
+// The default stiffness holds the pinch_thin scenario's fingers (1.6 N each on one face of a 2 mm
+// plate, hands sliding together until they meet) to less than a fifth of their overlap without it
+// (experiment_test; README, "Experiments"): at 1e5 N/m^2 a full overlap of two 1 cm pads
+// (3.1e-4 m^2) would push with 31 N (capped at the coupling's max_force), and the push balances
+// the couplings' sideways pull and friction (about 3 N) at a few 1e-5 m^2, a tenth of a full
+// overlap. The rate keeps the hand's force steps small: on a 20 g proxy, a push change of F per
+// 1 ms step changes the coupling's damping force by about b dt F / m = 0.2 F.
 struct OverlapParams
 {
   double stiffness = 1e5;     // N/m^2, 0: no push
