@@ -7,7 +7,7 @@
 // period_us_p99 - floor_us_p99 <= 50 us with 10 fingers)
 #include "god_finger/devices/hand_device.h"
 #include "god_finger/devices/pose_source.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_loop.h"
 

@@ -7,16 +7,16 @@
 // length (slide 3.3 s, lift_one 4 s, pinch_cylinder 25 s: the scripts of experiment.cpp, so that
 // the metrics are those of runExperiment), building the world excluded. Counters: `steps` (time
 // per step = run time / steps, scripts/bench_report) and the scenario's metrics, computed the
-// same way for every system (physics/scenario_metrics.h, as runExperiment computes them).
+// same way for every system (scenarios/scenario_metrics.h, as runExperiment computes them).
 //
 // Units SI (m, kg, s, N, rad), world frame z up (REP-103), as the scene descriptions.
 //
 // The MuJoCo scene: bench/mujoco_scene.h (mujocoXml).
 #include "god_finger/core/contact_params.h"
 #include "god_finger/core/virtual_coupling.h"
-#include "god_finger/physics/experiment.h"
+#include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/physics/scenario_metrics.h"
+#include "god_finger/scenarios/scenario_metrics.h"
 #include "mujoco_scene.h"
 #include "scale_scene.h"
 
@@ -40,7 +40,7 @@ namespace
 const Scenario kScenarios[] = {Scenario::kSlide, Scenario::kLiftOne, Scenario::kLiftTwo, Scenario::kPinchCylinder};
 const ContactModel kModels[] = {ContactModel::kGodObject, ContactModel::kGodFinger, ContactModel::kSoftFinger};
 
-// The scenario's metrics (physics/scenario_metrics.h, as runExperiment computes them) over the
+// The scenario's metrics (scenarios/scenario_metrics.h, as runExperiment computes them) over the
 // object's states after each step.
 std::map<std::string, double> metricsOf(Scenario scenario, const ScenarioSetup& setup, double dt,
                                         const BodyState& initial, const std::vector<BodyState>& samples)

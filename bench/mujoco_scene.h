@@ -41,7 +41,7 @@
 #include "god_finger/core/contact_params.h"
 #include "god_finger/core/virtual_coupling.h"
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/physics/scene_description.h"
+#include "god_finger/scene/scene_description.h"
 #include "god_finger/physics/world_params.h"
 
 #include <mujoco/mujoco.h>

@@ -1,16 +1,16 @@
 // The human-like operator benchmark (bench/REPORT.md, "Human-like operator"): a two-finger
-// pick and place of a bar gripped 3 cm off its centre (physics/grip_task.h) by operators drawn
-// per seed (physics/human_operator.h: tremor, misalignment up to 3 mm, grip fluctuating
+// pick and place of a bar gripped 3 cm off its centre (scenarios/grip_task.h) by operators drawn
+// per seed (scenarios/human_operator.h: tremor, misalignment up to 3 mm, grip fluctuating
 // +-25 % at ~1 Hz, a grip reflex 100-150 ms late), for each contact layout and squeeze.
 // Not a timing: every line is deterministic.
 //
 // First, per layout, the pick and place (operator_pick_place.h): its twist limit, the smallest
 // squeeze at which a perfect hand lifts and holds the bar still, then `--seeds` pick and places
 // per squeeze in the list and at the layout's target squeeze.
-// Second, the paper's pencil-versus-finger example (physics/sheet_push_task.h): `--seeds`
+// Second, the paper's pencil-versus-finger example (scenarios/sheet_push_task.h): `--seeds`
 // operators drag a sheet by its corner per press in the list.
-// Third, a cylinder pinched and turned 90 degrees about its axis (physics/cylinder_turn_task.h)
-// and a mug lifted by three fingers (physics/mug_grasp_task.h): `--seeds` operators per squeeze
+// Third, a cylinder pinched and turned 90 degrees about its axis (scenarios/cylinder_turn_task.h)
+// and a mug lifted by three fingers (scenarios/mug_grasp_task.h): `--seeds` operators per squeeze
 // in their lists.
 // Prints one JSON line per layout ({"kind":"limit"}) and per run ({"kind":"run"}, with its
 // "task": "pick_place", "sheet_push", "cylinder_turn" or "mug_grasp"), in that order.
@@ -18,11 +18,11 @@
 // usage: operator_bench [--seeds N] [--squeezes MM[,MM...]] [--presses MM[,MM...]]
 //                       [--turn-squeezes MM[,MM...]] [--mug-squeezes MM[,MM...]]
 #include "god_finger/core/text_numbers.h"
-#include "god_finger/physics/cylinder_turn_task.h"
-#include "god_finger/physics/grip_task.h"
-#include "god_finger/physics/mug_grasp_task.h"
-#include "god_finger/physics/pad_fidelity.h"
-#include "god_finger/physics/sheet_push_task.h"
+#include "god_finger/scenarios/cylinder_turn_task.h"
+#include "god_finger/scenarios/grip_task.h"
+#include "god_finger/scenarios/mug_grasp_task.h"
+#include "god_finger/scenarios/pad_fidelity.h"
+#include "god_finger/scenarios/sheet_push_task.h"
 #include "operator_pick_place.h"
 
 #include <nlohmann/json.hpp>

@@ -1,5 +1,5 @@
 // The operator benchmark's pick and place in MuJoCo (bench/REPORT.md, "Human-like operator"):
-// the same bar, hand and operators as bench/operator_bench.cpp (physics/grip_task.h's targets,
+// the same bar, hand and operators as bench/operator_bench.cpp (scenarios/grip_task.h's targets,
 // measured by its GripTaskMeter), in the MuJoCo baseline's scene (bench/mujoco_scene.h: the
 // proxies are spheres on three slide joints pulled by the same coupling, the finger contacts of
 // condim 4 (torsional friction (2/3) mu a) or 6 (and rolling friction a), a = 1 cm). Layouts
@@ -10,7 +10,7 @@
 //
 // usage: operator_mujoco_bench [--seeds N]
 #include "god_finger/core/text_numbers.h"
-#include "god_finger/physics/grip_task.h"
+#include "god_finger/scenarios/grip_task.h"
 #include "mujoco_scene.h"
 #include "operator_pick_place.h"
 

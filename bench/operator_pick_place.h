@@ -1,10 +1,10 @@
-// The operator benchmark's pick and place (physics/grip_task.h) for any simulator that runs the
+// The operator benchmark's pick and place (scenarios/grip_task.h) for any simulator that runs the
 // grip task: a layout's twist limit and its runs per squeeze and seed, printed as JSON lines
 // (bench/operator_bench.cpp has the format; bench/operator_mujoco_bench.cpp runs MuJoCo through
 // it). Deterministic when the runner is.
 #pragma once
 
-#include "god_finger/physics/grip_task.h"
+#include "god_finger/scenarios/grip_task.h"
 
 #include <nlohmann/json.hpp>
 

@@ -4,14 +4,14 @@
 // - kind "capacity": for each layout (god_object, soft_finger, god_finger with the pad
 //   constraint and with the paper's points) and load (twist about the normal, tilt about a
 //   tangent), at normal forces 0.5-5 N, the largest torque held (< 1 mrad in 1 s;
-//   physics/pad_fidelity.h), with the contact radius a and the force N it was measured at.
+//   scenarios/pad_fidelity.h), with the contact radius a and the force N it was measured at.
 // - kind "creep": for both pad solvers and solver iterations 10-120, the pinch_cylinder
 //   scenario's turn about the pinch normal over its 25 s and its median step, and the twist
 //   set-up's turn in 3 s holding 70 % of the layout's analytic capacity at 2 N (the ring's
 //   (8/9) mu N a for points, the uniform disk's (2/3) mu N a for the constraint).
 // Units: SI (N, m, N m, rad, us). Not real-time; about a minute.
-#include "god_finger/physics/experiment.h"
-#include "god_finger/physics/pad_fidelity.h"
+#include "god_finger/scenarios/experiment.h"
+#include "god_finger/scenarios/pad_fidelity.h"
 
 #include <cstdio>
 #include <string>

@@ -3,7 +3,7 @@
 // ball) and of objects (1, 10, 100 balls on a table, one finger). One benchmark iteration is
 // one whole scripted run (the hand's motion included, the world's construction not); the
 // counter `steps` gives steps per run, so time per step = time / steps (scripts/bench_report).
-#include "god_finger/physics/experiment.h"
+#include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <benchmark/benchmark.h>

@@ -8,7 +8,7 @@
 #pragma once
 
 #include "god_finger/core/waypoint_path.h"
-#include "god_finger/physics/scene_description.h"
+#include "god_finger/scene/scene_description.h"
 
 #include <algorithm>
 #include <chrono>

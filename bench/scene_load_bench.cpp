@@ -8,7 +8,7 @@
 // construction; counters: triangles of the file, hull files in the cache folder afterwards.
 #include "god_finger/core/mesh_primitives.h"
 #include "god_finger/mesh_io/mesh_writer.h"
-#include "god_finger/physics/convex_decomposition.h"
+#include "god_finger/scene/convex_decomposition.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <benchmark/benchmark.h>

@@ -9,7 +9,7 @@
 //        [--reference 1]   (marks the lines as the reference run)
 #include "god_finger/core/parameter_json.h"
 #include "god_finger/core/text_numbers.h"
-#include "god_finger/physics/experiment.h"
+#include "god_finger/scenarios/experiment.h"
 
 #include <LinearMath/btScalar.h>
 

@@ -9,8 +9,8 @@
 #pragma once
 
 #include "god_finger/core/triangle_mesh.h"
-#include "god_finger/physics/convex_decomposition.h"
-#include "god_finger/physics/scene_description.h"
+#include "god_finger/scene/convex_decomposition.h"
+#include "god_finger/scene/scene_description.h"
 
 #include <btBulletCollisionCommon.h>
 

@@ -9,7 +9,7 @@
 #include "god_finger/core/orientation_path.h"
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
-#include "god_finger/physics/scene_budget.h"
+#include "god_finger/scene/scene_budget.h"
 #include "hooked_world.h"
 #include "overlap_push.h"
 #include "pad_constraints.h"

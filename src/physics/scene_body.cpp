@@ -2,7 +2,7 @@
 
 #include "bullet_helpers.h"
 
-#include "god_finger/physics/walk_surface.h"
+#include "god_finger/scene/walk_surface.h"
 
 #include <Eigen/Eigenvalues>
 

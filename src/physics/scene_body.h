@@ -12,7 +12,7 @@
 #include "god_finger/core/primitive_walk.h"
 #include "god_finger/core/surface_locator.h"
 #include "god_finger/core/triangle_mesh.h"
-#include "god_finger/physics/scene_description.h"
+#include "god_finger/scene/scene_description.h"
 
 #include <btBulletDynamicsCommon.h>
 

@@ -1,7 +1,7 @@
 #include "scene_parameter.h"
 
 #include "god_finger/core/input_error.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 #include "parameters.h"
 
 #include <ros/package.h>

@@ -2,7 +2,7 @@
 // package lookup (ros::package::getPath) for package:// mesh names.
 #pragma once
 
-#include "god_finger/physics/scene_description.h"
+#include "god_finger/scene/scene_description.h"
 
 #include <ros/node_handle.h>
 

@@ -8,7 +8,7 @@
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/devices/device_registry.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/left_world_report.h"
 #include "god_finger/runtime/loop_statistics.h"

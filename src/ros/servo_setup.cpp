@@ -3,7 +3,7 @@
 #include "bag_track.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/device_registry.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "hand_marker.h"
 #include "interface_parameters.h"

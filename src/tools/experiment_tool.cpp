@@ -2,7 +2,7 @@
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
-#include "god_finger/runtime/servo_experiment.h"
+#include "god_finger/scenarios/servo_experiment.h"
 
 #include <cmath>
 #include <exception>

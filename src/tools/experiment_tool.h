@@ -2,7 +2,7 @@
 // See README "Experiments". Exit codes: 0 success, 2 bad options or input.
 #pragma once
 
-#include "god_finger/physics/experiment.h"
+#include "god_finger/scenarios/experiment.h"
 
 #include <ostream>
 #include <string>

@@ -2,7 +2,7 @@
 // where table_sphere's (no rolling resistance, the paper's slide scenario) rolls on for ever at
 // the speed a finger gave it. Simulated time, deterministic.
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 
 #include <gtest/gtest.h>
 

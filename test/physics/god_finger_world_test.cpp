@@ -4,8 +4,8 @@
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
-#include "god_finger/physics/pad_fidelity.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scenarios/pad_fidelity.h"
+#include "god_finger/scene/urdf_scene.h"
 
 #include <gtest/gtest.h>
 

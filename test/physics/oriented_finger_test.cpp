@@ -4,7 +4,7 @@
 #include "god_finger/physics/oriented_finger.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/orientation_path.h"
-#include "god_finger/physics/experiment.h"
+#include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <gtest/gtest.h>

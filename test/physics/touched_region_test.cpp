@@ -3,7 +3,7 @@
 // same point. The world must make one contact area of them, walked on the true surface. Scene:
 // table_torus (a torus, R = 6 cm, r = 2 cm, 0.1 kg, dynamic, lying on the table).
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 
 #include <gtest/gtest.h>
 

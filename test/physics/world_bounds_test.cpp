@@ -3,7 +3,7 @@
 // time; the bodies that stay are untouched. Simulated time, deterministic.
 #include "god_finger/core/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/hand_device.h"
 #include "god_finger/devices/pose_source.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/runtime/servo_loop.h"
 
 #include <gtest/gtest.h>

@@ -12,7 +12,7 @@
 // that ends at reading k instead, so E_handle = sum F_k . (x_k - x_{k-1}) is reported too.
 // Positive: energy into the hand.
 #include "god_finger/devices/fake_device.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_loop.h"
 

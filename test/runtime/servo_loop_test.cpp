@@ -7,7 +7,7 @@
 #include "device_profile_file.h"
 #include "god_finger/core/input_error.h"
 #include "god_finger/devices/fake_device.h"
-#include "god_finger/physics/urdf_scene.h"
+#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/runtime/servo_clock.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 #include "tool_run.h"
 
 #include "god_finger/physics/contact_model.h"
-#include "god_finger/physics/experiment.h"
+#include "god_finger/scenarios/experiment.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -32,7 +32,7 @@
 #pragma once
 
 #include "god_finger/core/contact_area.h"
-#include "god_finger/physics/scene_description.h"
+#include "god_finger/scene/scene_description.h"
 #include "god_finger/physics/world_params.h"
 
 #include <Eigen/Geometry>

@@ -1,0 +1,37 @@
+// Scenes from URDF (through urdfdom).
+//
+// Conventions:
+//  - The root link is `world` (or any link without geometry): every link joined to it by a
+//    `fixed` joint is static; by a `floating` joint, a free rigid body starting at the joint
+//    origin. Other joint types, and chains deeper than one joint, are rejected: scenes are
+//    sets of rigid objects, not robots.
+//  - Each body has exactly one <collision> (box, sphere, cylinder, or mesh with scale);
+//    dynamic bodies need an <inertial> with mass > 0 and a positive-definite inertia.
+//  - Contact materials come from PyBullet's URDF extension, the documented source Bullet
+//    users already know: <link><contact><lateral_friction value=".."/>
+//    <rolling_friction value=".."/><spinning_friction value=".."/>
+//    <restitution value=".."/></contact></link>. Missing values keep ContactMaterial's defaults.
+//  - Mesh file names: absolute, relative to the URDF file, file://..., or package://NAME/...
+//    (NAME found by the PackageResolver given: the ROS layer passes ros::package::getPath;
+//    without one, the folders above the URDF file whose package.xml names NAME).
+//
+// Errors: InputError with one line naming the file, the link and the problem; a
+// ResourceLimitError (core/memory_budget.h) for more than kMaxBodies bodies (scene_budget.h).
+#pragma once
+
+#include "god_finger/scene/scene_description.h"
+
+#include <functional>
+#include <string>
+
+namespace god_finger
+{
+// The folder of package `name`, or "" when it is not known.
+using PackageResolver = std::function<std::string(const std::string& name)>;
+
+SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolver& packages = PackageResolver());
+// Same, from a string; relative mesh paths are resolved against `base_directory`.
+SceneDescription parseUrdfScene(const std::string& urdf_xml, const std::string& base_directory,
+                                const std::string& source_name = "<string>",
+                                const PackageResolver& packages = PackageResolver());
+}  // namespace god_finger

@@ -1,0 +1,348 @@
+#include "god_finger/scene/urdf_scene.h"
+
+#include "god_finger/core/input_error.h"
+#include "god_finger/core/memory_budget.h"
+#include "god_finger/scene/scene_budget.h"
+
+#include <tinyxml2.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <Eigen/Eigenvalues>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace god_finger
+{
+namespace
+{
+Eigen::Isometry3d toIsometry(const urdf::Pose& pose)
+{
+  Eigen::Isometry3d result = Eigen::Isometry3d::Identity();
+  result.translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
+  result.linear() = Eigen::Quaterniond(pose.rotation.w, pose.rotation.x, pose.rotation.y, pose.rotation.z)
+                        .normalized()
+                        .toRotationMatrix();
+  return result;
+}
+
+std::string directoryOf(const std::string& path)
+{
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
+}
+
+bool fileExists(const std::string& path)
+{
+  std::ifstream stream(path);
+  return stream.good();
+}
+
+// Without a resolver (no ROS): the folders above `start` whose package.xml names `name`.
+std::string findPackageAbove(const std::string& name, const std::string& start)
+{
+  std::string folder = start;
+  for (int level = 0; level < 16 && !folder.empty(); ++level)
+  {
+    std::ifstream manifest(folder + "/package.xml");
+    std::stringstream content;
+    content << manifest.rdbuf();
+    if (content.str().find("<name>" + name + "</name>") != std::string::npos)
+    {
+      return folder;
+    }
+    const std::string parent = directoryOf(folder);
+    if (parent == folder || parent == ".")
+    {
+      break;
+    }
+    folder = parent;
+  }
+  return std::string();
+}
+
+class SceneParser
+{
+ public:
+  SceneParser(const std::string& source, const std::string& base_directory, const PackageResolver& packages)
+      : source_(source), base_directory_(base_directory), packages_(packages)
+  {
+  }
+
+  [[noreturn]] void fail(const std::string& link, const std::string& problem) const
+  {
+    throw InputError("URDF '" + source_ + "': " + (link.empty() ? "" : "link '" + link + "': ") + problem);
+  }
+
+  std::string resolveMesh(const std::string& link, const std::string& filename) const
+  {
+    std::string path;
+    const std::string package_prefix = "package://";
+    const std::string file_prefix = "file://";
+    if (filename.rfind(package_prefix, 0) == 0)
+    {
+      const std::string rest = filename.substr(package_prefix.size());
+      const std::size_t slash = rest.find('/');
+      const std::string package = rest.substr(0, slash);
+      const std::string root = packages_ ? packages_(package) : findPackageAbove(package, base_directory_);
+      if (root.empty())
+      {
+        fail(link, "mesh '" + filename + "': ROS package '" + package + "' not found");
+      }
+      path = root + (slash == std::string::npos ? "" : rest.substr(slash));
+    }
+    else if (filename.rfind(file_prefix, 0) == 0)
+    {
+      path = filename.substr(file_prefix.size());
+    }
+    else if (!filename.empty() && filename[0] == '/')
+    {
+      path = filename;
+    }
+    else
+    {
+      path = base_directory_ + "/" + filename;
+    }
+    if (!fileExists(path))
+    {
+      fail(link, "mesh '" + filename + "' not found (looked for '" + path + "')");
+    }
+    return path;
+  }
+
+  Geometry geometry(const std::string& link, const urdf::GeometrySharedPtr& geometry) const
+  {
+    Geometry result;
+    if (!geometry)
+    {
+      fail(link, "<collision> has no geometry");
+    }
+    switch (geometry->type)
+    {
+      case urdf::Geometry::BOX:
+      {
+        const auto& box = static_cast<const urdf::Box&>(*geometry);
+        result.kind = GeometryKind::kBox;
+        result.size = Eigen::Vector3d(box.dim.x, box.dim.y, box.dim.z);
+        if (!(result.size.minCoeff() > 0.0) || !result.size.allFinite())
+        {
+          fail(link, "box size must be positive and finite");
+        }
+        break;
+      }
+      case urdf::Geometry::SPHERE:
+      {
+        result.kind = GeometryKind::kSphere;
+        result.radius = static_cast<const urdf::Sphere&>(*geometry).radius;
+        if (!(result.radius > 0.0 && std::isfinite(result.radius)))
+        {
+          fail(link, "sphere radius must be positive and finite");
+        }
+        break;
+      }
+      case urdf::Geometry::CYLINDER:
+      {
+        const auto& cylinder = static_cast<const urdf::Cylinder&>(*geometry);
+        result.kind = GeometryKind::kCylinder;
+        result.radius = cylinder.radius;
+        result.length = cylinder.length;
+        if (!(result.radius > 0.0 && result.length > 0.0 && std::isfinite(result.radius) &&
+              std::isfinite(result.length)))
+        {
+          fail(link, "cylinder radius and length must be positive and finite");
+        }
+        break;
+      }
+      case urdf::Geometry::MESH:
+      {
+        const auto& mesh = static_cast<const urdf::Mesh&>(*geometry);
+        result.kind = GeometryKind::kMesh;
+        result.mesh_path = resolveMesh(link, mesh.filename);
+        result.scale = Eigen::Vector3d(mesh.scale.x, mesh.scale.y, mesh.scale.z);
+        if (!(result.scale.cwiseAbs().minCoeff() > 0.0) || !result.scale.allFinite())
+        {
+          fail(link, "mesh scale must be non-zero and finite");
+        }
+        break;
+      }
+    }
+    return result;
+  }
+
+  void inertial(const urdf::Link& link, BodyDescription* body) const
+  {
+    if (!link.inertial)
+    {
+      fail(link.name, "a floating body needs an <inertial> with mass and inertia");
+    }
+    const urdf::Inertial& inertial = *link.inertial;
+    body->mass = inertial.mass;
+    if (!(body->mass > 0.0 && std::isfinite(body->mass)))
+    {
+      std::ostringstream message;
+      message << "mass " << inertial.mass << " kg is not positive";
+      fail(link.name, message.str());
+    }
+    body->inertial_origin = toIsometry(inertial.origin);
+    Eigen::Matrix3d inertia;
+    inertia << inertial.ixx, inertial.ixy, inertial.ixz, inertial.ixy, inertial.iyy, inertial.iyz, inertial.ixz,
+        inertial.iyz, inertial.izz;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(inertia);
+    if (!inertia.allFinite() || !(solver.eigenvalues().minCoeff() > 0.0))
+    {
+      std::ostringstream message;
+      message << "inertia is not positive definite (eigenvalues " << solver.eigenvalues().transpose() << " kg m^2)";
+      fail(link.name, message.str());
+    }
+    body->inertia = inertia;
+  }
+
+  std::map<std::string, ContactMaterial> materials(const std::string& xml) const
+  {
+    std::map<std::string, ContactMaterial> result;
+    tinyxml2::XMLDocument document;
+    if (document.Parse(xml.c_str()) != tinyxml2::XML_SUCCESS)
+    {
+      return result;  // urdfdom reports the syntax error
+    }
+    const tinyxml2::XMLElement* robot = document.FirstChildElement("robot");
+    for (const tinyxml2::XMLElement* link = robot ? robot->FirstChildElement("link") : nullptr; link != nullptr;
+         link = link->NextSiblingElement("link"))
+    {
+      const char* name = link->Attribute("name");
+      const tinyxml2::XMLElement* contact = link->FirstChildElement("contact");
+      if (name == nullptr || contact == nullptr)
+      {
+        continue;
+      }
+      ContactMaterial material;
+      const struct
+      {
+        const char* tag;
+        double* value;
+        double lower;
+      } fields[] = {{"lateral_friction", &material.friction, 0.0},
+                    {"rolling_friction", &material.rolling_friction, 0.0},
+                    {"spinning_friction", &material.spinning_friction, 0.0},
+                    {"restitution", &material.restitution, 0.0}};
+      for (const auto& field : fields)
+      {
+        const tinyxml2::XMLElement* element = contact->FirstChildElement(field.tag);
+        if (element == nullptr)
+        {
+          continue;
+        }
+        double value = 0.0;
+        if (element->QueryDoubleAttribute("value", &value) != tinyxml2::XML_SUCCESS || !std::isfinite(value) ||
+            value < field.lower || (field.tag == std::string("restitution") && value > 1.0))
+        {
+          fail(name, std::string("<contact><") + field.tag + "> needs a value " +
+                         (field.tag == std::string("restitution") ? "in [0, 1]" : ">= 0"));
+        }
+        *field.value = value;
+      }
+      result[name] = material;
+    }
+    return result;
+  }
+
+  SceneDescription parse(const std::string& xml) const
+  {
+    const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
+    if (!model)
+    {
+      fail("", "not a valid URDF (urdfdom could not parse it; see the message above)");
+    }
+    const urdf::LinkConstSharedPtr root = model->getRoot();
+    if (!root)
+    {
+      fail("", "no root link");
+    }
+    const std::map<std::string, ContactMaterial> link_materials = materials(xml);
+    SceneDescription scene;
+    scene.name = model->getName();
+    std::vector<urdf::LinkSharedPtr> links;
+    model->getLinks(links);
+    for (const urdf::LinkSharedPtr& link : links)
+    {
+      if (link->name == root->name)
+      {
+        if (link->collision)
+        {
+          fail(link->name, "the root link stands for the world and must have no <collision>");
+        }
+        continue;
+      }
+      const urdf::JointConstSharedPtr joint = link->parent_joint;
+      if (!joint || joint->parent_link_name != root->name)
+      {
+        fail(link->name, "must be joined directly to the root link '" + root->name + "'");
+      }
+      if (joint->type != urdf::Joint::FIXED && joint->type != urdf::Joint::FLOATING)
+      {
+        fail(link->name, "joint '" + joint->name + "' must be 'fixed' (static body) or 'floating' (free body)");
+      }
+      if (!link->collision)
+      {
+        fail(link->name, "has no <collision>");
+      }
+      if (link->collision_array.size() > 1)
+      {
+        fail(link->name, "has more than one <collision>; split it into links");
+      }
+      BodyDescription body;
+      body.name = link->name;
+      body.pose = toIsometry(joint->parent_to_joint_origin_transform);
+      body.collision_origin = toIsometry(link->collision->origin);
+      body.geometry = geometry(link->name, link->collision->geometry);
+      body.is_static = joint->type == urdf::Joint::FIXED;
+      if (!body.is_static)
+      {
+        inertial(*link, &body);
+      }
+      const auto material = link_materials.find(link->name);
+      if (material != link_materials.end())
+      {
+        body.material = material->second;
+      }
+      scene.bodies.push_back(body);
+    }
+    if (scene.bodies.empty())
+    {
+      fail("", "no bodies (links with a <collision> joined to the root)");
+    }
+    if (scene.bodies.size() > static_cast<std::size_t>(kMaxBodies))
+    {
+      throw ResourceLimitError("URDF '" + source_ + "': " + std::to_string(scene.bodies.size()) +
+                               " bodies, more than the limit of " + std::to_string(kMaxBodies));
+    }
+    return scene;
+  }
+
+ private:
+  std::string source_;
+  std::string base_directory_;
+  PackageResolver packages_;
+};
+}  // namespace
+
+SceneDescription parseUrdfScene(const std::string& urdf_xml, const std::string& base_directory,
+                                const std::string& source_name, const PackageResolver& packages)
+{
+  return SceneParser(source_name, base_directory, packages).parse(urdf_xml);
+}
+
+SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolver& packages)
+{
+  std::ifstream stream(urdf_path);
+  if (!stream.good())
+  {
+    throw InputError("URDF '" + urdf_path + "': no such file or not readable");
+  }
+  std::stringstream content;
+  content << stream.rdbuf();
+  return parseUrdfScene(content.str(), directoryOf(urdf_path), urdf_path, packages);
+}
+}  // namespace god_finger

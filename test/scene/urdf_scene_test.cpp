@@ -1,0 +1,244 @@
+// Scenes from URDF: the shipped scenes load as documented, and every malformed input gives one
+// InputError naming the file, the link and the problem.
+#include "god_finger/scene/urdf_scene.h"
+#include "god_finger/core/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace god_finger
+{
+namespace
+{
+const std::string kScenes = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
+
+// A URDF with a table and one free body whose link body is `link_xml`.
+std::string sceneWith(const std::string& link_xml, const std::string& joint_type = "floating")
+{
+  return "<?xml version='1.0'?><robot name='t'><link name='world'/>"
+         "<link name='table'><collision><geometry><box size='1 1 0.04'/></geometry></collision></link>"
+         "<joint name='tj' type='fixed'><parent link='world'/><child link='table'/></joint>"
+         "<link name='thing'>" +
+         link_xml + "</link><joint name='j' type='" + joint_type +
+         "'><parent link='world'/><child link='thing'/>"
+         "<origin xyz='0 0 0.5'/></joint></robot>";
+}
+
+const std::string kGoodInertial =
+    "<inertial><mass value='0.1'/><inertia ixx='1e-4' ixy='0' ixz='0' iyy='1e-4' iyz='0' izz='1e-4'/></inertial>";
+
+std::string errorOf(const std::string& xml)
+{
+  try
+  {
+    parseUrdfScene(xml, kScenes, "test.urdf");
+  }
+  catch (const InputError& error)
+  {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(UrdfScene, ShippedSphereSceneHasAStaticTableAndAFreeBall)
+{
+  const SceneDescription scene = loadUrdfScene(kScenes + "/table_sphere.urdf");
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  const BodyDescription& table = scene.bodies[scene.find("table")];
+  const BodyDescription& ball = scene.bodies[scene.find("ball")];
+  EXPECT_TRUE(table.is_static);
+  EXPECT_FALSE(ball.is_static);
+  EXPECT_EQ(ball.geometry.kind, GeometryKind::kSphere);
+  EXPECT_DOUBLE_EQ(ball.geometry.radius, 0.04);
+  EXPECT_DOUBLE_EQ(ball.mass, 0.1);
+  EXPECT_DOUBLE_EQ(ball.inertia(0, 0), 6.4e-5);
+  EXPECT_DOUBLE_EQ(ball.pose.translation().z(), 0.04);
+  EXPECT_DOUBLE_EQ(ball.material.friction, 0.8);
+  EXPECT_DOUBLE_EQ(table.material.friction, 0.6);
+  EXPECT_DOUBLE_EQ(table.pose.translation().z(), -0.02);
+}
+
+TEST(UrdfScene, EveryShippedSceneLoads)
+{
+  for (const char* name : {"table_ball", "table_sphere", "table_cylinder", "table_box", "table_torus", "rails_plate"})
+  {
+    SCOPED_TRACE(name);
+    const SceneDescription scene = loadUrdfScene(kScenes + "/" + name + ".urdf");
+    int dynamic = 0;
+    for (const BodyDescription& body : scene.bodies)
+    {
+      dynamic += body.is_static ? 0 : 1;
+    }
+    EXPECT_EQ(dynamic, 1);
+  }
+}
+
+TEST(UrdfScene, ConcaveMeshSceneResolvesItsMeshWithScale)
+{
+  const SceneDescription scene = loadUrdfScene(kScenes + "/table_torus.urdf");
+  int mesh_bodies = 0;
+  for (const BodyDescription& body : scene.bodies)
+  {
+    if (body.geometry.kind == GeometryKind::kMesh)
+    {
+      ++mesh_bodies;
+      EXPECT_NE(body.geometry.mesh_path.find("urdf/meshes/torus.dae"), std::string::npos) << body.geometry.mesh_path;
+    }
+  }
+  EXPECT_EQ(mesh_bodies, 1);
+}
+
+TEST(UrdfScene, MaterialComesFromThePyBulletContactTag)
+{
+  const SceneDescription scene =
+      parseUrdfScene(sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial +
+                               "<contact><lateral_friction value='0.3'/><rolling_friction value='0.01'/>"
+                               "<spinning_friction value='0.02'/><restitution value='0.5'/></contact>"),
+                     kScenes);
+  const ContactMaterial& material = scene.bodies[scene.find("thing")].material;
+  EXPECT_DOUBLE_EQ(material.friction, 0.3);
+  EXPECT_DOUBLE_EQ(material.rolling_friction, 0.01);
+  EXPECT_DOUBLE_EQ(material.spinning_friction, 0.02);
+  EXPECT_DOUBLE_EQ(material.restitution, 0.5);
+}
+
+TEST(UrdfScene, MissingFileIsNamed)
+{
+  try
+  {
+    loadUrdfScene("/nonexistent/scene.urdf");
+    FAIL() << "no error";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_EQ(std::string(error.what()), "URDF '/nonexistent/scene.urdf': no such file or not readable");
+  }
+}
+
+TEST(UrdfScene, MalformedXmlIsRejected)
+{
+  const std::string error = errorOf("<robot name='x'><link name='a'>");
+  EXPECT_NE(error.find("URDF 'test.urdf'"), std::string::npos) << error;
+  EXPECT_NE(error.find("not a valid URDF"), std::string::npos) << error;
+}
+
+TEST(UrdfScene, MissingMeshNamesTheLinkAndThePath)
+{
+  const std::string error = errorOf(sceneWith(
+      "<collision><geometry><mesh filename='meshes/nothing_here.stl'/></geometry></collision>" + kGoodInertial));
+  EXPECT_NE(error.find("link 'thing'"), std::string::npos) << error;
+  EXPECT_NE(error.find("mesh 'meshes/nothing_here.stl' not found"), std::string::npos) << error;
+}
+
+TEST(UrdfScene, NonPositiveMassNamesTheLink)
+{
+  const std::string error = errorOf(sceneWith(
+      "<collision><geometry><sphere radius='0.1'/></geometry></collision>"
+      "<inertial><mass value='0'/><inertia ixx='1e-4' ixy='0' ixz='0' iyy='1e-4' iyz='0' izz='1e-4'/></inertial>"));
+  EXPECT_NE(error.find("link 'thing': mass 0 kg is not positive"), std::string::npos) << error;
+}
+
+TEST(UrdfScene, NonPositiveDefiniteInertiaNamesTheLink)
+{
+  const std::string error = errorOf(sceneWith(
+      "<collision><geometry><sphere radius='0.1'/></geometry></collision>"
+      "<inertial><mass value='1'/><inertia ixx='1e-4' ixy='0' ixz='0' iyy='-1e-4' iyz='0' izz='1e-4'/></inertial>"));
+  EXPECT_NE(error.find("link 'thing': inertia is not positive definite"), std::string::npos) << error;
+}
+
+TEST(UrdfScene, FreeBodyWithoutInertialIsRejected)
+{
+  const std::string error = errorOf(sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>"));
+  EXPECT_NE(error.find("link 'thing': a floating body needs an <inertial>"), std::string::npos) << error;
+}
+
+TEST(UrdfScene, RevoluteJointIsRejected)
+{
+  const std::string error = errorOf(
+      sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial, "continuous"));
+  EXPECT_NE(error.find("link 'thing': joint 'j' must be 'fixed'"), std::string::npos) << error;
+}
+
+TEST(UrdfScene, BadGeometryValuesAreRejected)
+{
+  EXPECT_NE(errorOf(sceneWith("<collision><geometry><sphere radius='-1'/></geometry></collision>" + kGoodInertial))
+                .find("link 'thing': sphere radius must be positive"),
+            std::string::npos);
+  EXPECT_NE(errorOf(sceneWith("<collision><geometry><box size='0 1 1'/></geometry></collision>" + kGoodInertial))
+                .find("link 'thing': box size must be positive"),
+            std::string::npos);
+}
+
+TEST(UrdfScene, LinkWithoutCollisionIsRejected)
+{
+  EXPECT_NE(errorOf(sceneWith(kGoodInertial)).find("link 'thing': has no <collision>"), std::string::npos);
+}
+}  // namespace
+}  // namespace god_finger
+
+namespace god_finger
+{
+namespace
+{
+TEST(UrdfScene, PackageMeshesGoThroughTheResolverGiven)
+{
+  const std::string xml = sceneWith(
+      "<collision><geometry><mesh filename='package://some_pkg/urdf/meshes/torus.dae'/></geometry></collision>" +
+          kGoodInertial,
+      "fixed");
+  std::vector<std::string> asked;
+  const SceneDescription scene = parseUrdfScene(xml, kScenes, "test.urdf",
+                                                [&asked](const std::string& name)
+                                                {
+                                                  asked.push_back(name);
+                                                  return std::string(GOD_FINGER_SOURCE_DIR);
+                                                });
+  ASSERT_EQ(asked, std::vector<std::string>{"some_pkg"});
+  const int thing = scene.find("thing");
+  ASSERT_GE(thing, 0);
+  EXPECT_EQ(scene.bodies[thing].geometry.mesh_path, std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/meshes/torus.dae");
+  try
+  {
+    parseUrdfScene(xml, kScenes, "test.urdf", [](const std::string&) { return std::string(); });
+    FAIL() << "an unknown package was accepted";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_STREQ(error.what(),
+                 "URDF 'test.urdf': link 'thing': mesh 'package://some_pkg/urdf/meshes/torus.dae': ROS package "
+                 "'some_pkg' not found");
+  }
+}
+
+TEST(UrdfScene, WithoutAResolverPackagesAreTheFoldersAboveTheUrdfThatNameThem)
+{
+  // No ROS: the shipped torus scene's package://god_finger/... is the repository above it.
+  const SceneDescription scene = loadUrdfScene(kScenes + "/table_torus.urdf");
+  const int torus = scene.find("torus");
+  ASSERT_GE(torus, 0);
+  EXPECT_NE(scene.bodies[torus].geometry.mesh_path.find("/urdf/meshes/torus.dae"), std::string::npos);
+}
+TEST(UrdfScene, FileUrlsAndRelativePathsFindMeshesOutsideThePackage)
+{
+  // file:// takes an absolute path; a bare path is relative to the URDF's folder.
+  const std::string meshes = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/meshes";
+  const SceneDescription by_url = parseUrdfScene(sceneWith("<collision><geometry><mesh filename='file://" + meshes +
+                                                           "/box.stl'/></geometry></collision>" + kGoodInertial),
+                                                 "/nonexistent", "test.urdf");
+  EXPECT_EQ(by_url.bodies[by_url.find("thing")].geometry.mesh_path, meshes + "/box.stl");
+  EXPECT_EQ(errorOf(sceneWith("<collision><geometry><mesh filename='file:///no/such/box.stl'/></geometry></collision>" +
+                              kGoodInertial)),
+            "URDF 'test.urdf': link 'thing': mesh 'file:///no/such/box.stl' not found (looked for "
+            "'/no/such/box.stl')");
+  // A user's scene outside urdf/scenes (own_scene.test launches it): package:// and relative.
+  const SceneDescription own =
+      loadUrdfScene(std::string(GOD_FINGER_SOURCE_DIR) + "/test/data/own_scene/own_scene.urdf");
+  ASSERT_EQ(own.bodies.size(), 3u);
+  EXPECT_NE(own.bodies[own.find("own_widget")].geometry.mesh_path.find("/urdf/meshes/box.stl"), std::string::npos);
+  EXPECT_EQ(own.bodies[own.find("own_pebble")].geometry.mesh_path,
+            std::string(GOD_FINGER_SOURCE_DIR) + "/test/data/own_scene/../../../urdf/meshes/sphere.obj");
+  EXPECT_DOUBLE_EQ(own.bodies[own.find("own_pebble")].material.rolling_friction, 0.002);
+}
+}  // namespace
+}  // namespace god_finger
