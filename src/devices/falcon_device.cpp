@@ -50,7 +50,7 @@ void FalconDevice::start()
   {
     throw DeviceError("falcon: " + std::to_string(count) + " Falcon(s) found, asked for number " +
                       std::to_string(params_.index) +
-                      ": check the USB cable and the power supply, and the udev rule (README, Devices)");
+                      ": check the USB cable and the power supply, and the udev rule (docs/devices.md)");
   }
   if (!io_->open(params_.index))
   {

@@ -1,5 +1,5 @@
 // god_finger_contact: the contact area on a user's mesh, sampled, checked and timed.
-// See README "The contact tool". Exit codes: 0 success, 2 bad options or input.
+// See docs/experiments.md, "The contact tool". Exit codes: 0 success, 2 bad options or input.
 #pragma once
 
 #include "god_finger/core/contact_params.h"

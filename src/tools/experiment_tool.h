@@ -1,5 +1,5 @@
 // god_finger_experiment: the paper's experiments, scripted and measured (no ROS master).
-// See README "Experiments". Exit codes: 0 success, 2 bad options or input.
+// See docs/experiments.md. Exit codes: 0 success, 2 bad options or input.
 #pragma once
 
 #include "god_finger/scenarios/experiment.h"

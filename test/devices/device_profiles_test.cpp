@@ -7,6 +7,8 @@
 #include "god_finger/devices/falcon_device.h"
 #include "god_finger/devices/omni_device.h"
 
+#include "docs_text.h"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -101,11 +103,9 @@ TEST(DeviceProfiles, TorqueAxesReadByNameAndRenderableTorqueMasksThenSaturates)
   EXPECT_THROW(readDeviceProfile(source), InputError);
 }
 
-TEST(DeviceProfiles, TheReadmeShowsTheBackendTablesAsGenerated)
+TEST(DeviceProfiles, TheDocsShowTheBackendTablesAsGenerated)
 {
-  std::ifstream in(std::string(GOD_FINGER_SOURCE_DIR) + "/README.md");
-  std::stringstream readme;
-  readme << in.rdbuf();
+  const std::string docs = test::docsText();
   const std::pair<const char*, std::string> tables[] = {
       {"fake device's", markdownTable(fakeDeviceParameterTable())},
       {"Falcon's", markdownTable(falconParameterTable())},
@@ -113,7 +113,7 @@ TEST(DeviceProfiles, TheReadmeShowsTheBackendTablesAsGenerated)
   };
   for (const auto& [what, table] : tables)
   {
-    EXPECT_NE(readme.str().find(table), std::string::npos) << "README.md lacks the " << what << " table:\n" << table;
+    EXPECT_NE(docs.find(table), std::string::npos) << "the docs lack the " << what << " table:\n" << table;
   }
 }
 }  // namespace

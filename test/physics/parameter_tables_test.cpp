@@ -8,6 +8,8 @@
 #include "god_finger/devices/pose_source.h"
 #include "god_finger/physics/world_params.h"
 
+#include "docs_text.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,9 +49,9 @@ ParameterTable<WorldParams> worldOwnRows()
   return own;
 }
 
-TEST(ParameterTables, TheReadmeShowsEachTableAsGenerated)
+TEST(ParameterTables, TheDocsShowEachTableAsGenerated)
 {
-  const std::string readme = readSource("README.md");
+  const std::string readme = test::docsText();
   const std::pair<const char*, std::string> tables[] = {
       {"method (contactParameterTable)", markdownTable(contactParameterTable())},
       {"world (worldParameterTable, its own rows)", markdownTable(worldOwnRows())},
@@ -59,7 +61,7 @@ TEST(ParameterTables, TheReadmeShowsEachTableAsGenerated)
   };
   for (const auto& [what, table] : tables)
   {
-    EXPECT_NE(readme.find(table), std::string::npos) << "README.md lacks the " << what << " table as generated:\n"
+    EXPECT_NE(readme.find(table), std::string::npos) << "the docs lack the " << what << " table as generated:\n"
                                                      << table;
   }
 }

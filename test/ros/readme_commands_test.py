@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""rostest: the README's ROS commands run, as a user runs them, against the demo: `rostopic echo
+"""rostest: the docs' ROS commands (docs/demo.md, docs/nodes.md) run, as a user runs them, against the demo: `rostopic echo
 -n 1 /tf` (which needs the Python module of tf2_msgs) and `rosservice call /reset_scene` (which
 needs std_srvs'): scripts/setup installs both. Each command exits 0 and prints what a user
 expects. Nothing sleeps to synchronise: each waits on its condition, with a deadline."""

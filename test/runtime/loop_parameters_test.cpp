@@ -1,7 +1,9 @@
-// The servo loop's parameter table (runtime/servo_loop.h): the README shows it as generated,
+// The servo loop's parameter table (runtime/servo_loop.h): the docs show it as generated,
 // its defaults are valid and each bound is enforced with the parameter named.
 #include "god_finger/core/input_error.h"
 #include "god_finger/runtime/servo_loop.h"
+
+#include "docs_text.h"
 
 #include <gtest/gtest.h>
 
@@ -12,13 +14,10 @@ namespace god_finger
 {
 namespace
 {
-TEST(LoopParameters, TheReadmeShowsTheTableAsGenerated)
+TEST(LoopParameters, TheDocsShowTheTableAsGenerated)
 {
-  std::ifstream in(std::string(GOD_FINGER_SOURCE_DIR) + "/README.md");
-  std::stringstream readme;
-  readme << in.rdbuf();
   const std::string table = markdownTable(servoLoopParameterTable());
-  EXPECT_NE(readme.str().find(table), std::string::npos) << "README.md lacks the servo loop's table:\n" << table;
+  EXPECT_NE(test::docsText().find(table), std::string::npos) << "the docs lack the servo loop's table:\n" << table;
 }
 
 TEST(LoopParameters, DefaultsAreValidAndBoundsNamed)

@@ -1,5 +1,5 @@
 // The paper's claims, held to account with identical scripted input for each contact model
-// (README "Experiments" has the numbers these runs print).
+// (docs/experiments.md has the numbers these runs print).
 #include "god_finger/scenarios/experiment.h"
 #include "god_finger/core/input_error.h"
 

@@ -1,12 +1,15 @@
-// The README's measured figures agree with their one source: scripts/readme_figures --check
+// The docs' measured figures agree with their one source: scripts/readme_figures --check
 // regenerates every generated block (from bench/REPORT.md and god_finger_experiment) and fails
-// when one differs; an edited figure in any block, or a block lost, is caught.
+// when one differs; an edited figure in any block, or a block lost, is caught (on a copy of the
+// docs' pages that hold the blocks).
 #include "tool_run.h"
 
 #include <gtest/gtest.h>
 
 #include <cctype>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,23 +18,33 @@ namespace god_finger
 namespace
 {
 const std::string kSourceDir = GOD_FINGER_SOURCE_DIR;
-// The README's generated blocks, as scripts/readme_figures names them.
-const std::vector<std::string> kBlocks = {"experiments", "push_height", "haptic_loop", "pad_fidelity"};
+// The docs' generated blocks, as scripts/readme_figures names them, and the page each lives in.
+const std::map<std::string, std::string> kBlocks = {{"experiments", "docs/experiments.md"},
+                                                    {"push_height", "docs/experiments.md"},
+                                                    {"haptic_loop", "docs/servo_loop.md"},
+                                                    {"pad_fidelity", "docs/performance.md"}};
 
-test::ToolRun checkReadme(const std::string& readme)
+test::ToolRun checkDocs(const std::string& root)
 {
   return test::runTool("/usr/bin/python3 " + kSourceDir + "/scripts/readme_figures",
-                       "--check --readme " + readme + " --tool " + GOD_FINGER_EXPERIMENT_TOOL);
+                       "--check --root " + root + " --tool " + GOD_FINGER_EXPERIMENT_TOOL);
 }
 
-std::string writeCopy(const std::string& text, const std::string& name)
+// A copy of the pages that hold the blocks under a fresh root named `name`, each page's text
+// passed through `edit` (page, text) first.
+template <typename Edit>
+std::string copyDocs(const std::string& name, Edit edit)
 {
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream(path) << text;
-  return path;
+  const std::string root = ::testing::TempDir() + name;
+  std::filesystem::create_directories(root + "/docs");
+  for (const auto& [block, page] : kBlocks)
+  {
+    std::ofstream(root + "/" + page) << edit(page, test::readFile(kSourceDir + "/" + page));
+  }
+  return root;
 }
 
-// The README with the first digit of the block's first table row changed.
+// The page's text with the first digit of the block's first table row changed.
 std::string withOneFigureChanged(std::string text, const std::string& block)
 {
   const std::size_t start = text.find("<!-- generated: " + block + " ");
@@ -48,9 +61,9 @@ std::string withOneFigureChanged(std::string text, const std::string& block)
   return text;
 }
 
-TEST(ReadmeFigures, TheReadmeAgreesWithTheReportAndTheExperiments)
+TEST(ReadmeFigures, TheDocsAgreeWithTheReportAndTheExperiments)
 {
-  const test::ToolRun run = checkReadme(kSourceDir + "/README.md");
+  const test::ToolRun run = checkDocs(kSourceDir);
   EXPECT_EQ(run.exit_code, 0) << run.out << run.err
                               << "scripts/readme_figures rewrites the blocks (scripts/bench --report runs it)";
   EXPECT_NE(run.out.find("all 4 blocks agree"), std::string::npos) << run.out;
@@ -58,14 +71,21 @@ TEST(ReadmeFigures, TheReadmeAgreesWithTheReportAndTheExperiments)
 
 TEST(ReadmeFigures, AFigureEditedInAnyBlockFailsTheCheck)
 {
-  std::string text = test::readFile(kSourceDir + "/README.md");
-  for (const std::string& block : kBlocks)
-  {
-    text = withOneFigureChanged(text, block);
-  }
-  const test::ToolRun run = checkReadme(writeCopy(text, "readme_figures_edited.md"));
+  const std::string root = copyDocs("readme_figures_edited",
+                                    [](const std::string& page, std::string text)
+                                    {
+                                      for (const auto& [block, its_page] : kBlocks)
+                                      {
+                                        if (its_page == page)
+                                        {
+                                          text = withOneFigureChanged(text, block);
+                                        }
+                                      }
+                                      return text;
+                                    });
+  const test::ToolRun run = checkDocs(root);
   EXPECT_EQ(run.exit_code, 1) << run.out << run.err;
-  for (const std::string& block : kBlocks)
+  for (const auto& [block, page] : kBlocks)
   {
     EXPECT_NE(run.err.find(block), std::string::npos) << block << " not named stale: " << run.err;
   }
@@ -73,14 +93,20 @@ TEST(ReadmeFigures, AFigureEditedInAnyBlockFailsTheCheck)
 
 TEST(ReadmeFigures, ALostBlockIsAnErrorNamingIt)
 {
-  std::string text = test::readFile(kSourceDir + "/README.md");
   const std::string end_marker = "<!-- end generated: haptic_loop -->";
-  const std::size_t end = text.find(end_marker);
-  ASSERT_NE(end, std::string::npos);
-  text.erase(end, end_marker.size());
-  const test::ToolRun run = checkReadme(writeCopy(text, "readme_figures_lost.md"));
+  const std::string root = copyDocs("readme_figures_lost",
+                                    [&end_marker](const std::string&, std::string text)
+                                    {
+                                      const std::size_t end = text.find(end_marker);
+                                      if (end != std::string::npos)
+                                      {
+                                        text.erase(end, end_marker.size());
+                                      }
+                                      return text;
+                                    });
+  const test::ToolRun run = checkDocs(root);
   EXPECT_EQ(run.exit_code, 2) << run.out << run.err;
-  EXPECT_NE(run.err.find("lacks the block(s) haptic_loop"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("docs/servo_loop.md lacks the block(s) haptic_loop"), std::string::npos) << run.err;
 }
 }  // namespace
 }  // namespace god_finger

@@ -1,4 +1,4 @@
-// The distance the solver is given for one sub-god-object (README, "Sub-god-object distances").
+// The distance the solver is given for one sub-god-object (docs/decisions.md, "Sub-god-object distances").
 //
 // The paper gives every sub-god-object the true contact's distance d. We add how far the object
 // has tilted away from (or into) the pad at that point since the contact began:

@@ -87,7 +87,7 @@ struct SleepParams
 // at most force_rate per second; a finger that holds the body against another is never pushed.
 // The default stiffness holds the pinch_thin scenario's fingers (1.6 N each on one face of a 2 mm
 // plate, hands sliding together until they meet) to less than a fifth of their overlap without it
-// (experiment_test; README, "Experiments"): at 1e5 N/m^2 a full overlap of two 1 cm pads
+// (experiment_test; docs/experiments.md): at 1e5 N/m^2 a full overlap of two 1 cm pads
 // (3.1e-4 m^2) would push with 31 N (capped at the coupling's max_force), and the push balances
 // the couplings' sideways pull and friction (about 3 N) at a few 1e-5 m^2, a tenth of a full
 // overlap. The rate keeps the hand's force steps small: on a 20 g proxy, a push change of F per

@@ -1,4 +1,4 @@
-// The overlap scenario's hand metrics (README, "Experiments"; pinch_thin), step by step from the
+// The overlap scenario's hand metrics (docs/experiments.md; pinch_thin), step by step from the
 // world's interfaces:
 //  - overlap_area_max_m2: the largest overlap area of any finger's contact areas with the other
 //    fingers' (InterfaceState::overlap_area, m^2; physics/overlap_push.h) over the run;

@@ -1,4 +1,4 @@
-// The pinch_card scenario's metrics (README, "Experiments"), step by step from the object and the
+// The pinch_card scenario's metrics (docs/experiments.md), step by step from the object and the
 // two pinching fingers' proxies (interfaces 0 and 1):
 //  - held: 1 when the object stayed above half the lift height from the lift's end to the end
 //    of the run, else 0;

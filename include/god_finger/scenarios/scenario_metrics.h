@@ -1,4 +1,4 @@
-// The paper's scenario metrics (README, "Experiments"), accumulated step by step from the
+// The paper's scenario metrics (docs/experiments.md), accumulated step by step from the
 // watched object's state: the one definition every system measured against them uses (the
 // experiments, the servo loop's runs, the MuJoCo baseline in bench/).
 //

@@ -164,7 +164,7 @@ std::unique_ptr<HapticDevice> makeFalcon(const DeviceContext& context)
   (void)params;
   throw DeviceError(
       "backend 'falcon' needs libnifalcon, which this build did not find: build and install libnifalcon "
-      "(https://github.com/libnifalcon/libnifalcon), then rebuild god_finger (README, Devices)");
+      "(https://github.com/libnifalcon/libnifalcon), then rebuild god_finger (docs/devices.md)");
 #endif
 }
 
@@ -177,7 +177,7 @@ std::unique_ptr<HapticDevice> makeOmni(const DeviceContext& context)
   (void)params;
   throw DeviceError(
       "backend 'omni' needs the OpenHaptics HD API, which this build did not find: install 3D Systems' "
-      "OpenHaptics (and the Touch / Phantom device driver), then rebuild god_finger (README, Devices)");
+      "OpenHaptics (and the Touch / Phantom device driver), then rebuild god_finger (docs/devices.md)");
 #endif
 }
 }  // namespace
