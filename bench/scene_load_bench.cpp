@@ -1,7 +1,7 @@
 // Time to load a scanned-size concave object as a dynamic body (issue 17, "Real objects load in
 // seconds"): a 100,000-triangle torus (R = 6 cm, r = 2 cm, written to a binary PLY) on a table,
 // through GodFingerWorld, as a user's scene does. First load: an empty hull cache folder and an
-// empty process cache, so the file is read, the walk surface built, the mesh simplified to
+// empty process cache, so the file is read, the walk mesh built, the mesh simplified to
 // 1500 triangles and decomposed by HACD, and the hulls written. Cached load: the hulls come
 // from the disk cache (the process cache is cleared before each iteration). Targets: first
 // <= 5 s, cached <= 0.5 s (scripts/bench_report). One iteration is one whole world

@@ -52,7 +52,7 @@ double enclosedVolume(const TriangleMesh& mesh)
   return volume;
 }
 
-std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, const TriangleMesh& walk_surface,
+std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, const TriangleMesh& walk_mesh,
                                                    bool is_static, double margin)
 {
   auto result = std::make_unique<CollisionShape>();
@@ -85,7 +85,7 @@ std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, con
     case GeometryKind::kMesh:
       break;
   }
-  const TriangleMesh& mesh = walk_surface;
+  const TriangleMesh& mesh = walk_mesh;
   if (is_static)
   {
     for (const Eigen::Vector3d& v : mesh.vertices())

@@ -2,7 +2,7 @@
 // mesh collides as: its own triangles (btBvhTriangleMeshShape) when the body is static; its
 // convex hull when it is convex (hull volume within 0.5 % of the mesh's); otherwise a convex
 // decomposition (convex_decomposition.h: simplified first when large, HACD, cached in the
-// process and on disk by content). The walk surface stays the original mesh in every case.
+// process and on disk by content). The walk mesh stays the original mesh in every case.
 //
 // Margins: Bullet rounds convex shapes by a collision margin (default 4 cm, far too large for
 // a finger on a 5 cm object): every shape gets `margin` (m), primitives keep their true size.
@@ -32,7 +32,7 @@ struct CollisionShape
   std::vector<btScalar> vertices;
 };
 
-std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, const TriangleMesh& walk_surface,
+std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, const TriangleMesh& walk_mesh,
                                                    bool is_static, double margin = 0.0005);
 
 // Volume enclosed by a closed mesh (m^3); meaningless for open meshes.

@@ -5,7 +5,7 @@
 // A new contact model is a new file implementing this and one row in that list.
 #pragma once
 
-#include "area_contact.h"
+#include "area_solver_input.h"
 #include "pad_constraints.h"
 #include "proxy.h"
 #include "sub_god_object_injection.h"
@@ -33,7 +33,7 @@ class ContactResponse
   virtual void configureProxy(const WorldParams& params, btRigidBody* proxy) const = 0;
   // One contact area, between collision detection and the solver of step `step`: adds
   // whatever the model adds to the solver into `to`. Real-time safe once their lists have grown.
-  virtual void respond(const WorldParams& params, const AreaContact& contact, Proxy* proxy, long step,
+  virtual void respond(const WorldParams& params, const AreaSolverInput& contact, Proxy* proxy, long step,
                        const SolverAdditions& to) const = 0;
 };
 

@@ -14,7 +14,7 @@ class GodFingerResponse : public ContactResponse
     proxy->setRollingFriction(0.0);
     proxy->setSpinningFriction(0.0);
   }
-  void respond(const WorldParams& params, const AreaContact& contact, Proxy* proxy, long step,
+  void respond(const WorldParams& params, const AreaSolverInput& contact, Proxy* proxy, long step,
                const SolverAdditions& to) const override
   {
     if (params.pad_solver == PadSolver::kConstraint)

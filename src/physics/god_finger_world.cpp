@@ -508,7 +508,7 @@ struct GodFingerWorld::Impl
       radial_index[area.sub_god_object_count] = i;
       area.positions[area.sub_god_object_count++] = to_world * sgo.position;
     }
-    AreaContact area_contact;
+    AreaSolverInput area_contact;
     area_contact.manifold = manifold;
     area_contact.contact = &contact;
     area_contact.proxy_is_a = proxy_is_a;
@@ -660,7 +660,7 @@ int GodFingerWorld::addInterface(const Eigen::Vector3d& position, const Coupling
             << impl_->scene.bodies[overlap.first].name << "': its proxy at (" << position.x() << ", " << position.y()
             << ", " << position.z() << ") m lies " << overlap.second - impl_->params.coupling.proxy_radius
             << " m below its surface; start the hand outside every body (move the device, or its workspace_offset)";
-    throw InputError(message.str());
+    throw ProxyInsideBodyError(message.str());
   }
   Proxy proxy;
   proxy.initial = position;
@@ -723,7 +723,7 @@ void GodFingerWorld::step()
 
 void GodFingerWorld::reset()
 {
-  // Rebuilding Bullet's objects (not the shapes or walk surfaces) is the only way to clear
+  // Rebuilding Bullet's objects (not the shapes or walk meshes) is the only way to clear
   // every cache (broadphase pairs, manifolds, warm starts), so that a reset run repeats the
   // first one bit for bit.
   impl_->teardownWorld();
@@ -865,7 +865,7 @@ const SceneDescription& GodFingerWorld::scene() const
   return impl_->scene;
 }
 
-const TriangleMesh& GodFingerWorld::walkSurface(int body) const
+const TriangleMesh& GodFingerWorld::walkMesh(int body) const
 {
   return *impl_->bodies.at(body).walk;
 }

@@ -13,7 +13,7 @@ class GodObjectResponse : public ContactResponse
     proxy->setRollingFriction(0.0);
     proxy->setSpinningFriction(0.0);
   }
-  void respond(const WorldParams&, const AreaContact&, Proxy*, long, const SolverAdditions&) const override {}
+  void respond(const WorldParams&, const AreaSolverInput&, Proxy*, long, const SolverAdditions&) const override {}
 };
 }  // namespace
 

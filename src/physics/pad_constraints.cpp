@@ -15,7 +15,7 @@ Eigen::Quaterniond orientationOf(const btCollisionObject& object)
 }
 }  // namespace
 
-void PadConstraints::add(const AreaContact& c, Proxy* proxy, long step)
+void PadConstraints::add(const AreaSolverInput& c, Proxy* proxy, long step)
 {
   btManifoldPoint& contact = *c.contact;
   const btCollisionObject* a = c.manifold->getBody0();

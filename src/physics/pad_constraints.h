@@ -24,7 +24,7 @@
 // once the list has grown.
 #pragma once
 
-#include "area_contact.h"
+#include "area_solver_input.h"
 #include "pad_state.h"
 #include "proxy.h"
 
@@ -52,7 +52,7 @@ class PadConstraints
  public:
   // Makes the true contact of `contact` the pad of step `step`, warm-started and anchored from
   // `proxy`'s pad state of step `step - 1`.
-  void add(const AreaContact& contact, Proxy* proxy, long step);
+  void add(const AreaSolverInput& contact, Proxy* proxy, long step);
   // This step's pad whose point is `point`, or null.
   StepPad* find(const void* point);
   bool empty() const

@@ -5,7 +5,7 @@
 // Units: SI, world frame. Real-time safe (no allocation).
 #pragma once
 
-#include "god_finger/physics/god_finger_world.h"
+#include "god_finger/physics/world_state.h"
 
 #include <Eigen/Core>
 

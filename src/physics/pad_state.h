@@ -6,7 +6,7 @@
 // - `object_at_contact` (both pad_solver layouts): the finger took its shape when the contact
 //   began; the pad moves with the proxy and never rotates, so the object's turn since then
 //   tilts the pad against the surface (core/sub_god_object_distance.h). Frame: the object's
-//   walk surface (geometry) frame in the world. Kept while the contact lasts from step to step.
+//   walk mesh (geometry) frame in the world. Kept while the contact lasts from step to step.
 // - `object_at_twist_anchor` (pad_solver: constraint): the object's orientation when the pad
 //   last began to stick; the pad's torsional rows pull the object back towards it
 //   (pad_torsion.h). Frame: the object's centre of mass frame in the world. Let go when a
@@ -46,7 +46,7 @@ struct PadState
   Eigen::Vector3d torque_impulse = Eigen::Vector3d::Zero();  // N m s on the manifold's body B, world
 };
 
-// The contact of `pad` exists at step `step`, with the object's walk surface at
+// The contact of `pad` exists at step `step`, with the object's walk mesh at
 // `object_to_world`: a new contact (none in the last step) takes the object's orientation now.
 // Returns the object's rotation relative to the pad since the contact began (world).
 inline Eigen::Matrix3d objectTurnSinceContact(const Eigen::Isometry3d& object_to_world, long step, PadState* pad)

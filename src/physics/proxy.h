@@ -8,7 +8,7 @@
 
 #include "god_finger/core/contact_params.h"
 #include "god_finger/core/virtual_coupling.h"
-#include "god_finger/physics/god_finger_world.h"
+#include "god_finger/physics/world_state.h"
 #include "god_finger/physics/oriented_finger.h"
 #include "pad_state.h"
 #include "warm_start.h"

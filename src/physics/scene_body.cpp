@@ -2,7 +2,7 @@
 
 #include "bullet_helpers.h"
 
-#include "god_finger/scene/walk_surface.h"
+#include "god_finger/scene/walk_mesh.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -29,7 +29,7 @@ std::optional<PrimitiveSurface> primitiveSurface(const Geometry& geometry)
 SceneBody makeSceneBody(const BodyDescription& description, double max_edge)
 {
   SceneBody body;
-  body.walk = std::make_unique<TriangleMesh>(makeWalkSurface(description.geometry, max_edge));
+  body.walk = std::make_unique<TriangleMesh>(makeWalkMesh(description.geometry, max_edge));
   body.locator = std::make_unique<SurfaceLocator>(*body.walk);
   body.primitive = primitiveSurface(description.geometry);
   body.collision = makeCollisionShape(description.geometry, *body.walk, description.is_static);

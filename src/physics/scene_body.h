@@ -1,9 +1,9 @@
-// A scene body as the world keeps it: its walk surface (with its locator, or the exact surface
+// A scene body as the world keeps it: its walk mesh (with its locator, or the exact surface
 // of a sphere or cylinder), its collision shape, its Bullet rigid body and the frames between
 // them. Internal to physics.
 //
 // Frames: the link frame (the scene's), the centre of mass frame on the principal axes of
-// inertia (Bullet's body frame) and the geometry frame (the walk surface's and the collision
+// inertia (Bullet's body frame) and the geometry frame (the walk mesh's and the collision
 // shape's). Units: SI. Not real-time safe to build; reading it is.
 #pragma once
 
@@ -27,7 +27,7 @@ struct SceneBody
   std::unique_ptr<TriangleMesh> walk;
   std::unique_ptr<SurfaceLocator> locator;
   // Spheres and cylinders: contact areas by exact walks (core/primitive_walk.h); the walk
-  // surface then only serves the collision shape and walkSurface().
+  // surface then only serves the collision shape and walkMesh().
   std::optional<PrimitiveSurface> primitive;
   std::unique_ptr<CollisionShape> collision;
   std::unique_ptr<btCompoundShape> placed;  // the collision shape placed in the centre-of-mass frame
@@ -41,7 +41,7 @@ struct SceneBody
   double left_world_at = -1.0;  // s, world time
 };
 
-// The walk surface (a primitive's tessellated with edges of at most `max_edge` m), locator,
+// The walk mesh (a primitive's tessellated with edges of at most `max_edge` m), locator,
 // exact surface, collision shape and frames of `description`; no rigid body yet.
 SceneBody makeSceneBody(const BodyDescription& description, double max_edge);
 

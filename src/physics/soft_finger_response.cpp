@@ -14,7 +14,7 @@ class SoftFingerResponse : public ContactResponse
     proxy->setRollingFriction(params.soft_finger.rolling_friction);
     proxy->setSpinningFriction(params.soft_finger.spinning_friction);
   }
-  void respond(const WorldParams&, const AreaContact&, Proxy*, long, const SolverAdditions&) const override {}
+  void respond(const WorldParams&, const AreaSolverInput&, Proxy*, long, const SolverAdditions&) const override {}
 };
 }  // namespace
 

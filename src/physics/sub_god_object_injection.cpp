@@ -5,7 +5,7 @@
 
 namespace god_finger
 {
-void SubGodObjectInjector::inject(const AreaContact& c, const Proxy& proxy, long step)
+void SubGodObjectInjector::inject(const AreaSolverInput& c, const Proxy& proxy, long step)
 {
   const btCollisionObject* a = c.manifold->getBody0();
   const btCollisionObject* b = c.manifold->getBody1();

@@ -11,7 +11,7 @@
 // are reused.
 #pragma once
 
-#include "area_contact.h"
+#include "area_solver_input.h"
 #include "proxy.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -31,7 +31,7 @@ class SubGodObjectInjector
   }
   // Adds the area's sub-god-objects as solver points, warm-started from `proxy`'s record of
   // step `step - 1` (pad_solver: points).
-  void inject(const AreaContact& contact, const Proxy& proxy, long step);
+  void inject(const AreaSolverInput& contact, const Proxy& proxy, long step);
   // After the solver of step `step`: each injected point's impulses into its proxy's record.
   void recordImpulses(std::vector<Proxy>* proxies, long step);
   // Gives the injected manifolds back to the dispatcher.

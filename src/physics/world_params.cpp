@@ -109,7 +109,7 @@ const ParameterTable<WorldParams>& worldParameterTable()
                    "god_finger: how fast the overlap push may change (bounds the hand's force step)",
                    [](P& p) -> double& { return p.overlap.force_rate; }),
         realRow<P>("walk_edge_per_max_radius", "dimensionless", openClosed(0.0, 10.0),
-                   "largest edge of a sphere's or cylinder's walk surface, as a fraction of r_max",
+                   "largest edge of a sphere's or cylinder's walk mesh, as a fraction of r_max",
                    [](P& p) -> double& { return p.walk_edge_per_max_radius; }),
         realRow<P>("world_margin", "m", openClosed(0.0, 1e6),
                    "a body whose centre of mass leaves the scene's box grown by this is put back at its start",

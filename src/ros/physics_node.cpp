@@ -6,11 +6,11 @@
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/text_numbers.h"
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/left_world_report.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/scene/urdf_scene.h"
 #include "interface_parameters.h"
 #include "parameters.h"
 #include "queues.h"
@@ -192,12 +192,8 @@ struct PhysicsNode::Impl
           {
             interface.index = world->addInterface(interface.target, interface.coupling);
           }
-          catch (const InputError& inside)
+          catch (const ProxyInsideBodyError& inside)
           {
-            if (std::string(inside.what()).find("would start inside body") == std::string::npos)
-            {
-              throw;
-            }
             // The hand is inside a body: this node started (or respawned) under a hand that
             // presses an object. Refusing would leave the hand without force until it withdraws;
             // the proxy starts at the hand, the solver pushes it out, and the device's guard ramps

@@ -1,7 +1,7 @@
 #include "god_finger/scene/scene_budget.h"
 
 #include "god_finger/core/memory_budget.h"
-#include "god_finger/scene/walk_surface.h"
+#include "god_finger/scene/walk_mesh.h"
 
 #include <string>
 
@@ -48,7 +48,7 @@ void checkSceneFits(const SceneDescription& scene, double max_walk_edge)
   const MemoryLimit limit = memoryLimit();
   if (needed > limit.bytes)
   {
-    throw ResourceLimitError(name + ": they and their walk surfaces need about " +
+    throw ResourceLimitError(name + ": they and their walk meshes need about " +
                              formatBytes(static_cast<double>(needed)) + ", more than the limit of " +
                              formatBytes(static_cast<double>(limit.bytes)) + " (" + limit.source + ")");
   }

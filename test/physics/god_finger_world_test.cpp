@@ -335,10 +335,25 @@ TEST(GodFingerWorld, SameInputsGiveTheSameTrajectoryBitForBit)
 }
 
 // Issue 18: a hand that starts inside the table (a workspace offset too low) is refused with the
-// body and the position named, not given a proxy inside it (nor one lifted out silently).
+// body and the position named, not given a proxy inside it (nor one lifted out silently); the
+// error has its own type (ProxyInsideBodyError, an InputError), which the physics node catches
+// to respawn under a pressing hand, and other bad input does not throw it.
 TEST(GodFingerWorld, AProxyNeverStartsInsideABody)
 {
   GodFingerWorld world(planeScene(0.0, 0.5), WorldParams());
+  EXPECT_THROW(world.addInterface(Eigen::Vector3d(0.1, -0.2, -0.03)), ProxyInsideBodyError);
+  try
+  {
+    world.addInterface(Eigen::Vector3d(NAN, 0.0, 0.1));
+    FAIL() << "a non-finite position";
+  }
+  catch (const ProxyInsideBodyError&)
+  {
+    FAIL() << "a non-finite position is no proxy inside a body";
+  }
+  catch (const InputError&)
+  {
+  }
   try
   {
     world.addInterface(Eigen::Vector3d(0.1, -0.2, -0.03));
@@ -419,7 +434,7 @@ TEST(GodFingerWorld, ConcaveMeshObjectRestsAndTakesContactAreas)
   EXPECT_GT(state.contacts[0].radius, 0.005);
   // The walk ran on the original mesh, not on the decomposition's hulls.
   const TriangleMesh original = loadTriangleMesh(std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/meshes/torus.dae");
-  EXPECT_EQ(world.walkSurface(torus).triangleCount(), original.triangleCount());
+  EXPECT_EQ(world.walkMesh(torus).triangleCount(), original.triangleCount());
   EXPECT_GT(original.triangleCount(), 500);
 }
 }  // namespace

@@ -63,10 +63,10 @@ TEST(Clutter, SceneHasAHundredBodiesOfEveryKindSomeStackedSomeConcave)
     }
     ++dynamic;
     kinds.insert(description.geometry.kind);
-    // The walk surface is in the geometry frame: the link's pose, then the collision origin.
+    // The walk mesh is in the geometry frame: the link's pose, then the collision origin.
     const Eigen::Isometry3d geometry = world.bodyState(body).pose * description.collision_origin;
     double lowest = INFINITY;
-    for (const Eigen::Vector3d& v : world.walkSurface(body).vertices())
+    for (const Eigen::Vector3d& v : world.walkMesh(body).vertices())
     {
       lowest = std::min(lowest, (geometry * v).z());
     }
@@ -75,7 +75,7 @@ TEST(Clutter, SceneHasAHundredBodiesOfEveryKindSomeStackedSomeConcave)
     if (description.geometry.kind == GeometryKind::kMesh)
     {
       mesh_files.insert(fileName(description.geometry.mesh_path));
-      concave += isConvex(world.walkSurface(body)) ? 0 : 1;
+      concave += isConvex(world.walkMesh(body)) ? 0 : 1;
     }
   }
   EXPECT_GE(dynamic, 100);

@@ -81,7 +81,7 @@ TEST(SceneBudget, PrimitivesThatDoNotFitInMemoryAreRefused)
   const std::string message = refusal(scene);
   unsetenv("GOD_FINGER_MEMORY_LIMIT");
   EXPECT_EQ(message,
-            "scene 'crowd' has 3 bodies: they and their walk surfaces need about 35.4 MiB, more than the limit of "
+            "scene 'crowd' has 3 bodies: they and their walk meshes need about 35.4 MiB, more than the limit of "
             "9.54 MiB (GOD_FINGER_MEMORY_LIMIT=1e7)");
   EXPECT_EQ(refusal(scene), "");
 }

@@ -30,7 +30,7 @@ class ResourceLimitError : public InputError
   using InputError::InputError;
 };
 
-// Peak bytes of loading a mesh of `vertices` and `triangles` as a walk surface with its
+// Peak bytes of loading a mesh of `vertices` and `triangles` as a walk mesh with its
 // collision shape (see the header comment).
 std::uint64_t estimatedMeshBytes(std::uint64_t vertices, std::uint64_t triangles);
 

@@ -1,5 +1,5 @@
 // Triangle soups of simple shapes, in metres, centred on the origin unless stated. Used as
-// walk surfaces for primitives, as shipped meshes and as test fixtures. All are wound
+// walk meshes for primitives, as shipped meshes and as test fixtures. All are wound
 // counter-clockwise seen from outside.
 #pragma once
 

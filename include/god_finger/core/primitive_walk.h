@@ -6,7 +6,7 @@
 //    the unrolled mantle); on a cap, straight lines; across a rim the direction is unfolded (the
 //    component along the rim is kept, the other turns through the 90 degree fold). With the
 //    default tau_a (60 degrees) a walk stops at a rim: the next surface is 90 degrees away.
-//  - Boxes need no analytic walk: their walk surface is their 12 triangles, on which the mesh
+//  - Boxes need no analytic walk: their walk mesh is their 12 triangles, on which the mesh
 //    walk (unfold) is already the exact geodesic.
 //
 // The stops are the mesh walk's (surface_walk.h), taken exactly where the surface normal

@@ -6,7 +6,7 @@
 //     (core/virtual_coupling.h, with its interface's profile);
 //  2. Bullet's collision detection finds the proxies' contacts;
 //  3. kGodFinger: for the deepest contact of each (proxy, object) pair, the contact area is
-//     computed on the object's walk surface and reaches the solver (WorldParams::pad_solver):
+//     computed on the object's walk mesh and reaches the solver (WorldParams::pad_solver):
 //     by default (constraint) as one pad at its centre of pressure with torsional and tilt rows
 //     bounded by the area (src/physics/pad_constraints.h); with `points` (the paper's way) every
 //     active sub-god-object is a contact point with the true contact's normal and its
@@ -26,14 +26,15 @@
 // how the pulp meets the surface. A finger never given an orientation runs the 3-DOF code bit for
 // bit.
 //
-// Invariants: proxies' Bullet bodies never rotate and ignore gravity; every scene body has a walk surface
+// Invariants: proxies' Bullet bodies never rotate and ignore gravity; every scene body has a walk mesh
 // (its mesh, or a tessellation of its primitive fine enough for r_max); the walk runs on the
 // original triangle mesh even where collision uses a convex decomposition.
 #pragma once
 
-#include "god_finger/core/contact_area.h"
-#include "god_finger/scene/scene_description.h"
+#include "god_finger/core/input_error.h"
 #include "god_finger/physics/world_params.h"
+#include "god_finger/physics/world_state.h"
+#include "god_finger/scene/scene_description.h"
 
 #include <Eigen/Geometry>
 #include <memory>
@@ -41,72 +42,14 @@
 
 namespace god_finger
 {
-// A contact area in world coordinates, for output (markers, messages, metrics).
-struct WorldContactArea
+// Thrown by addInterface when the proxy would start inside a body (the hand starts in the table:
+// a workspace offset too low): the message names the body and the position. A caller that
+// restarts under a hand pressing an object (the physics node respawning) catches it and adds the
+// interface with allow_inside.
+class ProxyInsideBodyError : public InputError
 {
-  int body = -1;                                      // scene body index
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // c_p (m, world)
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // c_n (world, out of the object)
-  double depth = 0.0;                                 // m, > 0 when penetrating
-  double radius = 0.0;                                // r (m)
-  FeatureKind feature = FeatureKind::kFace;
-  int sub_god_object_count = 0;                                             // active ones, in positions
-  std::array<Eigen::Vector3d, ContactParams::kMaxSubGodObjects> positions;  // world
-  // m^2: the overlap with other fingers' areas on this body, summed (core/area_overlap.h; god_finger
-  // model only, 0 otherwise)
-  double overlap_area = 0.0;
-};
-
-struct InterfaceState
-{
-  Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();  // p_I (m, world)
-  Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();      // p_GO (m, world)
-  Eigen::Vector3d proxy_velocity = Eigen::Vector3d::Zero();      // m/s
-  Eigen::Vector3d user_force = Eigen::Vector3d::Zero();          // N on the hand (world)
-  bool saturated = false;                                        // coupling force hit max_force
-  // An oriented (6-DOF) finger (oriented_finger.h: the finger frame has z out of the pulp, x
-  // towards the tip): false until the interface is given an orientation, and then the three
-  // below are the device's and the proxy's orientation and the rotational coupling's torque on
-  // the hand (N m, world). A 3-DOF finger keeps identities and zero.
-  bool oriented = false;
-  Eigen::Quaterniond interface_orientation = Eigen::Quaterniond::Identity();
-  Eigen::Quaterniond proxy_orientation = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();
-  int contact_count = 0;                  // entries used in contacts
-  static constexpr int kMaxContacts = 4;  // bodies touched at once
-  std::array<WorldContactArea, kMaxContacts> contacts;
-  // The overlap of this finger's areas with the other fingers' (m^2, the sum of its contacts'
-  // overlap_area), and the push it brings on the proxy in the next step (N, world; WorldParams::
-  // overlap, src/physics/overlap_push.h): both zero when no area overlaps.
-  double overlap_area = 0.0;
-  Eigen::Vector3d overlap_push = Eigen::Vector3d::Zero();
-};
-
-struct BodyState
-{
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // link frame in world
-  Eigen::Vector3d center_of_mass = Eigen::Vector3d::Zero();
-  Eigen::Vector3d linear_velocity = Eigen::Vector3d::Zero();   // of the centre of mass
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world
-  Eigen::Vector3d net_force =
-      Eigen::Vector3d::Zero();  // N on the centre of mass, m dv/dt over the last step (gravity included)
-  bool asleep = false;          // sleeping (WorldParams::sleep): not simulated until woken
-  // Times it left the world's bounds (WorldParams::world_margin) and was put back at its initial
-  // pose, at rest, since the world was made (a reset does not clear them); the world time (s)
-  // of the last, -1 if never.
-  int left_world = 0;
-  double left_world_at = -1.0;
-};
-
-// Everything an observer shows of a world at one step (markers, TF, contact-area messages),
-// copied out so that it can be read in another thread while the world steps on.
-struct WorldSnapshot
-{
-  double time = 0.0;  // s, world time of the step
-  long steps = 0;
-  ContactModel model = ContactModel::kGodFinger;
-  std::vector<BodyState> bodies;           // by scene body index
-  std::vector<InterfaceState> interfaces;  // by interface index
+ public:
+  explicit ProxyInsideBodyError(const std::string& message) : InputError(message) {}
 };
 
 class GodFingerWorld
@@ -121,8 +64,8 @@ class GodFingerWorld
   // Adds a finger: a proxy at `position` (m, world) pulled with the world's coupling profile
   // (params().coupling) or the device's own. Returns its index. Throws InputError on a
   // non-finite position, a bad profile, or one unstable at this time step and proxy mass, and
-  // on a position inside a body (the proxy's centre in it): the message names the body and the
-  // position. A proxy never starts inside a body, and is never lifted out silently, unless
+  // ProxyInsideBodyError on a position inside a body (the proxy's centre in it): the message names
+  // the body and the position. A proxy never starts inside a body, and is never lifted out silently, unless
   // `allow_inside` (the physics node respawning under a hand that presses an object: the solver
   // pushes the proxy out, and the device's guard ramps the force in after its watchdog tripped).
   int addInterface(const Eigen::Vector3d& position);
@@ -172,7 +115,7 @@ class GodFingerWorld
   // Fills `out` with the current state. Allocates only when out's vectors are smaller than
   // the body or interface count (so a snapshot buffer filled once never allocates again).
   void snapshot(WorldSnapshot* out) const;
-  const TriangleMesh& walkSurface(int body) const;
+  const TriangleMesh& walkMesh(int body) const;
   // Dynamic bodies awake now (simulated in the next step); static bodies never count.
   int awakeBodyCount() const;
   // Contact points between a proxy and an object the solver received in the last step (test

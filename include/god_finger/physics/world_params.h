@@ -126,7 +126,7 @@ struct WorldParams
   // An oriented (6-DOF) finger: its pulp and its rotational coupling (oriented_finger.h).
   OrientedFingerParams finger;
   OverlapParams overlap;
-  // Largest edge of the walk surface of a sphere or cylinder, as a fraction of r_max: the
+  // Largest edge of the walk mesh of a sphere or cylinder, as a fraction of r_max: the
   // tessellation is refined until its edges are no longer (capped at 81920 triangles).
   double walk_edge_per_max_radius = 0.5;
   // The world's bounds (m): the box around the scene as loaded (every body at its initial pose),

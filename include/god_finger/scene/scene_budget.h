@@ -3,7 +3,7 @@
 //
 //  - At most kMaxBodies bodies: Bullet's broadphase and the per-step snapshot grow with the
 //    body count, and each body costs about kBytesPerBody (measured: 10,000 boxes took 690 MiB).
-//  - The bodies and their primitives' walk surfaces (tessellations, sized by max_walk_edge, m)
+//  - The bodies and their primitives' walk meshes (tessellations, sized by max_walk_edge, m)
 //    must fit in the memory limit of core/memory_budget.h. Mesh files are not opened here:
 //    each is checked against the then-available memory when it is read (mesh_loader.h), so
 //    that what the bodies before it took counts too.
@@ -19,7 +19,7 @@ namespace god_finger
 constexpr int kMaxBodies = 10000;
 constexpr std::uint64_t kBytesPerBody = 80 * 1024;
 
-// Bytes the scene's bodies and primitive walk surfaces need (meshes' triangles not included).
+// Bytes the scene's bodies and primitive walk meshes need (meshes' triangles not included).
 std::uint64_t estimatedSceneBytes(const SceneDescription& scene, double max_walk_edge);
 
 // Throws ResourceLimitError when the scene has more than kMaxBodies bodies ("scene 'NAME' has

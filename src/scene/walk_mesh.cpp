@@ -1,4 +1,4 @@
-#include "god_finger/scene/walk_surface.h"
+#include "god_finger/scene/walk_mesh.h"
 
 #include "god_finger/core/mesh_primitives.h"
 #include "god_finger/mesh_io/mesh_loader.h"
@@ -33,7 +33,7 @@ int walkCylinderSegments(double radius, double max_edge)
   return static_cast<int>(std::clamp(segments, double(kMinCylinderSegments), double(kMaxCylinderSegments)));
 }
 
-TriangleMesh makeWalkSurface(const Geometry& geometry, double max_edge)
+TriangleMesh makeWalkMesh(const Geometry& geometry, double max_edge)
 {
   switch (geometry.kind)
   {

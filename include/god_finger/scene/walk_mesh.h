@@ -10,7 +10,7 @@
 
 namespace god_finger
 {
-TriangleMesh makeWalkSurface(const Geometry& geometry, double max_edge);
+TriangleMesh makeWalkMesh(const Geometry& geometry, double max_edge);
 
 // The tessellations' resolutions (20 * 4^s triangles for a sphere, 4 n for a cylinder), so
 // that a scene's size can be known before anything is built (scene_budget.h).

@@ -1,11 +1,13 @@
-// One contact area of one (proxy, body) pair, as a contact response (contact_response.h) sees
-// it between collision detection and the solver. Internal to physics.
+// The solver's input from one contact area of one (proxy, body) pair, as a contact response
+// (contact_response.h) sees it between collision detection and the solver (the area itself is
+// core/contact_area.h's ContactAreaResult; its output, world_state.h's WorldContactArea). Internal to
+// physics.
 //
 // Units: SI, world frame. Valid for one step: the pointers are into Bullet's manifolds and the
 // proxy's interface state of that step.
 #pragma once
 
-#include "god_finger/physics/god_finger_world.h"
+#include "god_finger/physics/world_state.h"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -13,7 +15,7 @@
 
 namespace god_finger
 {
-struct AreaContact
+struct AreaSolverInput
 {
   btPersistentManifold* manifold = nullptr;  // Bullet's manifold holding the true contact
   btManifoldPoint* contact = nullptr;        // the true contact (the deepest point)
