@@ -6,6 +6,7 @@
 #include "god_finger/DeviceState.h"
 #include "god_finger/SetContactModel.h"
 #include "god_finger/core/input_error.h"
+#include "god_finger/core/orientation_path.h"
 #include "god_finger/core/virtual_coupling.h"
 #include "god_finger/core/workspace_bound.h"
 #include "god_finger/core/workspace_mapping.h"
@@ -105,15 +106,16 @@ struct HapticNode::Impl
     // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
     const WorkspaceBound bound = boundToWorkspace(position, profile, mapping);
     const Eigen::Vector3d world = mapping.toWorld(bound.position);
-    // An oriented finger's orientation, mapped into the world; one unusable (non-finite, norm
-    // outside [0.5, 2]) is counted and the last usable one kept, as the servo loop does.
+    // An oriented finger's orientation, mapped into the world; one unusable (core/
+    // orientation_path.h usableOrientation) is counted and the last usable one kept, as the servo
+    // loop does.
     const Eigen::Quaterniond* world_orientation = nullptr;
     if (state->has_orientation)
     {
       const Eigen::Quaterniond q(state->orientation.w, state->orientation.x, state->orientation.y,
                                  state->orientation.z);
       std::lock_guard<std::mutex> lock(mutex);
-      if (q.coeffs().allFinite() && q.norm() >= 0.5 && q.norm() <= 2.0)
+      if (usableOrientation(q))
       {
         orientation = mapping.orientationToWorld(q.normalized());
         oriented = true;
