@@ -1,4 +1,5 @@
 #include "god_finger/runtime/servo_loop.h"
+#include "god_finger/runtime/multirate_render.h"
 
 #include "god_finger/core/input_error.h"
 #include "god_finger/core/orientation_path.h"
@@ -48,16 +49,6 @@ const ServoLoopParams& checked(const ServoLoopParams& params)
     throw InputError(error);
   }
   return params;
-}
-}  // namespace
-
-namespace
-{
-// `v` shortened to length `limit` if longer (direction kept).
-Eigen::Vector3d clampedLength(const Eigen::Vector3d& v, double limit)
-{
-  const double length = v.norm();
-  return length > limit ? Eigen::Vector3d(v * (limit / length)) : v;
 }
 }  // namespace
 
@@ -157,7 +148,7 @@ void ServoLoop::prepare()
     }
     couplings_.push_back(world_->coupling(static_cast<int>(i)));
     Render& render = render_[i];
-    render.target = render.previous_target = render.anchor = start;
+    render.target = render.previous_target = render.multirate.anchor = start;
     latest_.proxies[i].proxy_position = start;
     frame_.targets[i] = start;
   }
@@ -498,49 +489,20 @@ void ServoLoop::decide(long tick, double time, double period_us)
     Render& render = render_[i];
     const ProxyResult& proxy = latest_.proxies[i];
     const long lag = tick - latest_.tick;
-    Eigen::Vector3d force;  // N, world, on the hand
-    if (render.exact && lag == 0)
+    const MultirateDevice device{render.target, render.previous_target, render.velocity, render.previous_velocity};
+    const MultirateStep step{proxy.proxy_position, proxy.user_force, lag};
+    if (renderMultirate(couplings_[i], params_.recovery_periods, device, step, &render.multirate))
     {
-      force = proxy.user_force;
-      render.anchor = proxy.proxy_position;
       render.stale = false;
       render.ready_at = latest_.done_at;
     }
     else
     {
-      const CouplingProfile& coupling = couplings_[i];
-      const double delta = coupling.max_force / (coupling.stiffness * params_.recovery_periods);
-      const double bound = coupling.stiffness * ((render.target - render.previous_target).norm() + delta) +
-                           coupling.damping * (render.velocity - render.previous_velocity).norm();
-      const Eigen::Vector3d to_proxy = proxy.proxy_position - render.anchor;
-      if (to_proxy.norm() <= delta)
-      {
-        render.anchor = proxy.proxy_position;
-      }
-      else
-      {
-        render.anchor += clampedLength(to_proxy, delta);
-      }
-      if (lag == 0 && render.anchor == proxy.proxy_position && (proxy.user_force - render.force).norm() <= bound)
-      {
-        force = proxy.user_force;
-        render.exact = true;
-        render.stale = false;
-        render.ready_at = latest_.done_at;
-      }
-      else
-      {
-        // A spring to the anchor, damping on the device's own velocity only, saturated.
-        const CouplingForce spring =
-            couplingForce(coupling, render.target, render.velocity, render.anchor, Eigen::Vector3d::Zero());
-        force = render.force + clampedLength(-spring.on_proxy - render.force, bound);
-        render.exact = false;
-        render.stale = true;
-        render.ready_at = steadySeconds();
-        ++counters_.stale_ticks;
-      }
+      render.stale = true;
+      render.ready_at = steadySeconds();
+      ++counters_.stale_ticks;
     }
-    render.force = force;
+    const Eigen::Vector3d force = render.multirate.force;  // N, world, on the hand
     // The torque: the last completed step's, in the device frame, on the profile's axes only.
     render.torque = renderableTorque(interfaces_[i].profile, interfaces_[i].mapping.torqueToDevice(proxy.user_torque));
     if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force) + render.wall_force))

@@ -107,6 +107,7 @@
 #include "god_finger/core/workspace_mapping.h"
 #include "god_finger/devices/haptic_device.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/runtime/multirate_render.h"
 
 #include <semaphore.h>
 #include <atomic>
@@ -343,13 +344,11 @@ class ServoLoop
     Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();
     Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s: (target - previous_target) / dt
     Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
-    Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // m
-    Eigen::Vector3d force = Eigen::Vector3d::Zero();   // N on the hand, the last decided
+    MultirateState multirate;  // the anchor, the last decided force, exact or not (multirate_render.h)
     Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m, device frame: renderable, the last decided
     Eigen::Quaterniond device_orientation = Eigen::Quaterniond::Identity();  // the last usable, device frame
     Eigen::Vector3d wall_force =
         Eigen::Vector3d::Zero();  // N, device frame: the workspace wall (core/workspace_bound.h)
-    bool exact = true;            // the force is the step's reaction
     bool stale = false;           // the last decision's
     bool tracked = true;          // the last reading's (DeviceReading::tracked)
     // A finger tracked again: its target ramps from regrip_from (m, world: where it let go) to
