@@ -36,6 +36,9 @@ TEST(MultirateRender, ALateStepIsRenderedAgainstAMovingAnchorWithoutAForceStep)
   // The physics is late three ticks while the proxy it will report moved 1 cm sideways.
   step.lag = 1;
   step.proxy_position = Eigen::Vector3d(0.01, 0.0, 0.0);
+  step.user_force =
+      -couplingForce(coupling, device.target, Eigen::Vector3d::Zero(), step.proxy_position, Eigen::Vector3d::Zero())
+           .on_proxy;
   Eigen::Vector3d last_force = state.force;
   Eigen::Vector3d last_anchor = state.anchor;
   for (int tick = 0; tick < 3; ++tick)
@@ -48,7 +51,8 @@ TEST(MultirateRender, ALateStepIsRenderedAgainstAMovingAnchorWithoutAForceStep)
     last_force = state.force;
     last_anchor = state.anchor;
   }
-  // Caught up (lag 0), the anchor still short of the proxy: still rendered, not rejoined yet.
+  // Caught up (lag 0) with a reaction consistent with the new proxy: rendered until the anchor
+  // reaches the proxy, then the step's reaction again.
   step.lag = 0;
   int ticks = 0;
   while (!renderMultirate(coupling, recovery, device, step, &state) && ticks < 1000)
