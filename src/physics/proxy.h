@@ -10,6 +10,7 @@
 #include "god_finger/core/virtual_coupling.h"
 #include "god_finger/physics/world_state.h"
 #include "god_finger/physics/oriented_finger.h"
+#include "god_finger/physics/world_params.h"
 #include "pad_state.h"
 #include "warm_start.h"
 
