@@ -9,11 +9,11 @@
 // iteration handles one of 256 precomputed contacts, pressed 3 D0' deep (r = 9.5 mm) with a
 // tangential pull of 0 to 1.5 D0'. Counters: triangles, bytes_per_triangle (mesh + neighbour
 // table + tree), sgo_active (sub-god-objects per contact).
-#include "god_finger/core/contact_area.h"
-#include "god_finger/core/mesh_primitives.h"
-#include "god_finger/core/primitive_walk.h"
-#include "god_finger/core/radial_frame.h"
-#include "god_finger/core/surface_locator.h"
+#include "god_finger/contact/contact_area.h"
+#include "god_finger/geometry/mesh_primitives.h"
+#include "god_finger/contact/primitive_walk.h"
+#include "god_finger/contact/radial_frame.h"
+#include "god_finger/geometry/surface_locator.h"
 
 #include <benchmark/benchmark.h>
 
@@ -173,7 +173,7 @@ void BM_ContactAreaOnly(benchmark::State& state)
   state.counters["crossings"] = static_cast<double>(crossings) / kContacts;
 }
 
-// The exact walks (core/primitive_walk.h), shape 0: the 4 cm ball's 256 contacts on the sphere
+// The exact walks (contact/primitive_walk.h), shape 0: the 4 cm ball's 256 contacts on the sphere
 // itself; shape 1: a cylinder of radius 2 cm and length 10 cm, 256 contacts on its mantle and
 // caps. Same pressing and pulls as the meshes'; no location needed (the contact point is the
 // query).

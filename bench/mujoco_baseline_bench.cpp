@@ -12,8 +12,8 @@
 // Units SI (m, kg, s, N, rad), world frame z up (REP-103), as the scene descriptions.
 //
 // The MuJoCo scene: bench/mujoco_scene.h (mujocoXml).
-#include "god_finger/core/contact_params.h"
-#include "god_finger/core/virtual_coupling.h"
+#include "god_finger/contact/contact_params.h"
+#include "god_finger/haptics/virtual_coupling.h"
 #include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scenarios/scenario_metrics.h"

@@ -9,7 +9,7 @@
 //  - proxies: a body per finger with three world-aligned slide joints (x, y, z), a sphere geom
 //    of WorldParams().coupling.proxy_radius and proxy_mass (Bullet's proxy: rotation locked). No
 //    gravity on them: qfrc_applied carries -m g (MuJoCo 2.2 has no gravcomp).
-//  - coupling: core/virtual_coupling.h's couplingForce with WorldParams().coupling, applied on
+//  - coupling: haptics/virtual_coupling.h's couplingForce with WorldParams().coupling, applied on
 //    the three slider dofs through qfrc_applied, explicit in time as GodFingerWorld::step():
 //    the proxy's state at the start of the step, target velocity = (target - previous target)/dt,
 //    target = the script at the end of the step (runExperiment's ideal hand).
@@ -38,8 +38,8 @@
 //    defaults (0.02 s, damping ratio 1; 0.9 0.95 0.001), warm start on.
 #pragma once
 
-#include "god_finger/core/contact_params.h"
-#include "god_finger/core/virtual_coupling.h"
+#include "god_finger/contact/contact_params.h"
+#include "god_finger/haptics/virtual_coupling.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/scene_description.h"
 #include "god_finger/physics/world_params.h"

@@ -17,7 +17,7 @@
 //
 // usage: operator_bench [--seeds N] [--squeezes MM[,MM...]] [--presses MM[,MM...]]
 //                       [--turn-squeezes MM[,MM...]] [--mug-squeezes MM[,MM...]]
-#include "god_finger/core/text_numbers.h"
+#include "god_finger/support/text_numbers.h"
 #include "god_finger/scenarios/cylinder_turn_task.h"
 #include "god_finger/scenarios/grip_task.h"
 #include "god_finger/scenarios/mug_grasp_task.h"

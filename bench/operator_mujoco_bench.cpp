@@ -9,7 +9,7 @@
 // Deterministic on one machine and MuJoCo build.
 //
 // usage: operator_mujoco_bench [--seeds N]
-#include "god_finger/core/text_numbers.h"
+#include "god_finger/support/text_numbers.h"
 #include "god_finger/scenarios/grip_task.h"
 #include "mujoco_scene.h"
 #include "operator_pick_place.h"

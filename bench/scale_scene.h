@@ -7,7 +7,7 @@
 // Units SI, world z up (REP-103); the table top is z = 0.
 #pragma once
 
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/scene/scene_description.h"
 
 #include <algorithm>

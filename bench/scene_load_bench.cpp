@@ -6,7 +6,7 @@
 // from the disk cache (the process cache is cleared before each iteration). Targets: first
 // <= 5 s, cached <= 0.5 s (scripts/bench_report). One iteration is one whole world
 // construction; counters: triangles of the file, hull files in the cache folder afterwards.
-#include "god_finger/core/mesh_primitives.h"
+#include "god_finger/geometry/mesh_primitives.h"
 #include "god_finger/mesh_io/mesh_writer.h"
 #include "god_finger/scene/convex_decomposition.h"
 #include "god_finger/physics/god_finger_world.h"

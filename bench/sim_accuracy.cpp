@@ -7,8 +7,8 @@
 //
 // usage: sim_accuracy --scenario slide|pinch_cylinder --duration S --dt S[,S...] --iterations N[,N...]
 //        [--reference 1]   (marks the lines as the reference run)
-#include "god_finger/core/parameter_json.h"
-#include "god_finger/core/text_numbers.h"
+#include "god_finger/support/parameter_json.h"
+#include "god_finger/support/text_numbers.h"
 #include "god_finger/scenarios/experiment.h"
 
 #include <LinearMath/btScalar.h>

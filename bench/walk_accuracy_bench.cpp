@@ -2,7 +2,7 @@
 // cylinders of increasing resolution, per walk variant, against the exact geodesic on the
 // smooth surface; time per contact (location + contact area) is the benchmark's time.
 //
-// The exact walks (core/primitive_walk.h) run on the same contacts (BM_WalkSphereExact,
+// The exact walks (contact/primitive_walk.h) run on the same contacts (BM_WalkSphereExact,
 // BM_WalkCylinderExact), checked against the same closed forms written independently here.
 //
 // Counter error_um: mean distance (micrometres) between each sub-god-object and the point the
@@ -12,10 +12,10 @@
 // per case, a 1 cm pad (r_max 1 cm, 3 D0' of press: r = 9.5 mm) on a 4 cm ball or on the side
 // of a 3 cm cylinder (the demo objects); no friction cone or angle limit, so walks run their
 // full length.
-#include "god_finger/core/contact_area.h"
-#include "god_finger/core/mesh_primitives.h"
-#include "god_finger/core/primitive_walk.h"
-#include "god_finger/core/surface_locator.h"
+#include "god_finger/contact/contact_area.h"
+#include "god_finger/geometry/mesh_primitives.h"
+#include "god_finger/contact/primitive_walk.h"
+#include "god_finger/geometry/surface_locator.h"
 
 #include <benchmark/benchmark.h>
 

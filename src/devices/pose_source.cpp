@@ -1,7 +1,7 @@
 #include "god_finger/devices/pose_source.h"
 
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/parameter_table.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/parameter_table.h"
 
 #include <algorithm>
 #include <cmath>

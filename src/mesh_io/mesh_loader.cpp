@@ -1,8 +1,8 @@
 #include "god_finger/mesh_io/mesh_loader.h"
 #include "god_finger/mesh_io/assimp_scene.h"
 
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/memory_budget.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/memory_budget.h"
 #include "god_finger/mesh_io/off_reader.h"
 #include "god_finger/mesh_io/ply_reader.h"
 #include "god_finger/mesh_io/polygon_soup.h"
@@ -153,7 +153,7 @@ std::string readWholeFile(const std::string& path)
 // before assimp reads it (assimp allocates as it parses, with no limit of its own).
 constexpr std::uint64_t kTextBytesPerTriangle = 24;
 
-// Refuses, before assimp allocates anything, a file too large to load (core/memory_budget.h):
+// Refuses, before assimp allocates anything, a file too large to load (support/memory_budget.h):
 // a binary STL by the triangle count in its header (84 + 50 n bytes), any other file by its
 // size. assimp's own copy of the mesh (about its file's size again) counts too.
 void checkAssimpFileFits(const std::string& path, const std::string& extension)

@@ -1,6 +1,6 @@
 #include "god_finger/mesh_io/mesh_writer.h"
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <assimp/scene.h>
 #include <Eigen/Geometry>

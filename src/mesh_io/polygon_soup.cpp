@@ -1,7 +1,7 @@
 #include "god_finger/mesh_io/polygon_soup.h"
 
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/polygon_triangulation.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/geometry/polygon_triangulation.h"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 // The solver's input from one contact area of one (proxy, body) pair, as a contact response
 // (contact_response.h) sees it between collision detection and the solver (the area itself is
-// core/contact_area.h's ContactAreaResult; its output, world_state.h's WorldContactArea). Internal to
+// contact/contact_area.h's ContactAreaResult; its output, world_state.h's WorldContactArea). Internal to
 // physics.
 //
 // Units: SI, world frame. Valid for one step: the pointers are into Bullet's manifolds and the

@@ -8,7 +8,7 @@
 // a finger on a 5 cm object): every shape gets `margin` (m), primitives keep their true size.
 #pragma once
 
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/geometry/triangle_mesh.h"
 #include "god_finger/scene/convex_decomposition.h"
 #include "god_finger/scene/scene_description.h"
 

@@ -1,6 +1,6 @@
 #include "overlap_push.h"
 
-#include "god_finger/core/area_overlap.h"
+#include "god_finger/contact/area_overlap.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // The overlap push (paper, Discussion): when two fingers' contact areas on one body overlap
-// (core/area_overlap.h: they share surface on one side of the body; pads on opposite faces never
+// (contact/area_overlap.h: they share surface on one side of the body; pads on opposite faces never
 // overlap), both proxies are pushed apart, equal and opposite, in the common plane from one
 // area's centre towards the other's, with a force of WorldParams::overlap.stiffness times the
 // overlap area (N/m^2 x m^2), capped at the coupling's max_force.

@@ -1,7 +1,7 @@
 #include "pad_constraints.h"
 
 #include "bullet_helpers.h"
-#include "god_finger/core/sub_god_object_distance.h"
+#include "god_finger/contact/sub_god_object_distance.h"
 #include "pad_geometry.h"
 
 namespace god_finger

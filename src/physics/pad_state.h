@@ -5,7 +5,7 @@
 // Two orientations of the object, for two different events (they are not one stored twice):
 // - `object_at_contact` (both pad_solver layouts): the finger took its shape when the contact
 //   began; the pad moves with the proxy and never rotates, so the object's turn since then
-//   tilts the pad against the surface (core/sub_god_object_distance.h). Frame: the object's
+//   tilts the pad against the surface (contact/sub_god_object_distance.h). Frame: the object's
 //   walk mesh (geometry) frame in the world. Kept while the contact lasts from step to step.
 // - `object_at_twist_anchor` (pad_solver: constraint): the object's orientation when the pad
 //   last began to stick; the pad's torsional rows pull the object back towards it

@@ -6,8 +6,8 @@
 // members is.
 #pragma once
 
-#include "god_finger/core/contact_params.h"
-#include "god_finger/core/virtual_coupling.h"
+#include "god_finger/contact/contact_params.h"
+#include "god_finger/haptics/virtual_coupling.h"
 #include "god_finger/physics/world_state.h"
 #include "god_finger/physics/oriented_finger.h"
 #include "god_finger/physics/world_params.h"

@@ -9,9 +9,9 @@
 
 #include "collision_shape.h"
 
-#include "god_finger/core/primitive_walk.h"
-#include "god_finger/core/surface_locator.h"
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/contact/primitive_walk.h"
+#include "god_finger/geometry/surface_locator.h"
+#include "god_finger/geometry/triangle_mesh.h"
 #include "god_finger/scene/scene_description.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -26,7 +26,7 @@ struct SceneBody
 {
   std::unique_ptr<TriangleMesh> walk;
   std::unique_ptr<SurfaceLocator> locator;
-  // Spheres and cylinders: contact areas by exact walks (core/primitive_walk.h); the walk
+  // Spheres and cylinders: contact areas by exact walks (contact/primitive_walk.h); the walk
   // surface then only serves the collision shape and walkMesh().
   std::optional<PrimitiveSurface> primitive;
   std::unique_ptr<CollisionShape> collision;

@@ -1,7 +1,7 @@
 #include "sub_god_object_injection.h"
 
 #include "bullet_helpers.h"
-#include "god_finger/core/sub_god_object_distance.h"
+#include "god_finger/contact/sub_god_object_distance.h"
 
 namespace god_finger
 {

@@ -1,7 +1,7 @@
 // Sub-god-objects into Bullet's solver (the god_finger response): each kept sub-god-object of
 // a contact area becomes a manifold point beside the true contact, with the true contact's
 // normal, friction and pad compliance, its tilt-corrected distance
-// (core/sub_god_object_distance.h), and the impulses it had in the previous step as warm start
+// (contact/sub_god_object_distance.h), and the impulses it had in the previous step as warm start
 // (warm_start.h). pad_solver: points only; the pad constraint's one point is pad_constraints.h's.
 // Internal to physics.
 //

@@ -1,6 +1,6 @@
 #include "god_finger/physics/world_params.h"
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <sstream>
 

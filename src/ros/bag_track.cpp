@@ -1,7 +1,7 @@
 #include "bag_track.h"
 
 #include "god_finger/DeviceState.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <rosbag/bag.h>
 #include <rosbag/view.h>

@@ -5,7 +5,7 @@
 // if nothing usable remains).
 #pragma once
 
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/haptics/waypoint_path.h"
 
 #include <string>
 

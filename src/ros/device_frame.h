@@ -5,7 +5,7 @@
 // other than 1 the handle shows unscaled.
 #pragma once
 
-#include "god_finger/core/workspace_mapping.h"
+#include "god_finger/haptics/workspace_mapping.h"
 
 #include <geometry_msgs/TransformStamped.h>
 #include <ros/time.h>

@@ -1,6 +1,6 @@
 #include "diagnostics.h"
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "parameters.h"
 
 namespace god_finger

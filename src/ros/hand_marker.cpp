@@ -1,7 +1,7 @@
 #include "hand_marker.h"
 #include "node_parameters.h"
 
-#include "god_finger/core/text_numbers.h"
+#include "god_finger/support/text_numbers.h"
 #include "parameters.h"
 
 #include <ros/ros.h>

@@ -5,11 +5,11 @@
 #include "diagnostics.h"
 #include "god_finger/DeviceState.h"
 #include "god_finger/SetContactModel.h"
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/orientation_path.h"
-#include "god_finger/core/virtual_coupling.h"
-#include "god_finger/core/workspace_bound.h"
-#include "god_finger/core/workspace_mapping.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/haptics/orientation_path.h"
+#include "god_finger/haptics/virtual_coupling.h"
+#include "god_finger/haptics/workspace_bound.h"
+#include "god_finger/haptics/workspace_mapping.h"
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/ros/conversions.h"
 #include "interface_parameters.h"
@@ -79,7 +79,7 @@ struct HapticNode::Impl
   long states = 0;
   long timer_ticks = 0;
 
-  // `wall`: the workspace wall (device frame, core/workspace_bound.h), added to the command.
+  // `wall`: the workspace wall (device frame, haptics/workspace_bound.h), added to the command.
   void publishForce(const ros::Time& stamp, const Eigen::Vector3d& world_force, const Eigen::Vector3d& wall)
   {
     geometry_msgs::Vector3StampedPtr force(new geometry_msgs::Vector3Stamped);

@@ -1,6 +1,6 @@
 #include "interface_parameters.h"
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "node_parameters.h"
 #include "parameters.h"
 

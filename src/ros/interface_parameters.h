@@ -9,8 +9,8 @@
 // there, so the spring the hand feels is the one that pulls its proxy.
 #pragma once
 
-#include "god_finger/core/device_profile.h"
-#include "god_finger/core/workspace_mapping.h"
+#include "god_finger/haptics/device_profile.h"
+#include "god_finger/haptics/workspace_mapping.h"
 #include "god_finger/physics/world_params.h"
 
 #include <ros/node_handle.h>

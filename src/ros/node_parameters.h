@@ -3,7 +3,7 @@
 // them reads it from here, with one default and one range. Not real-time (read at start).
 #pragma once
 
-#include "god_finger/core/parameter_table.h"
+#include "god_finger/support/parameter_table.h"
 #include "god_finger/runtime/servo_loop.h"
 
 #include <ros/node_handle.h>

@@ -1,10 +1,10 @@
-// Node parameters through the ROS-free readers of core/parameter_source.h: a ParameterSource
+// Node parameters through the ROS-free readers of support/parameter_source.h: a ParameterSource
 // over a node handle, and the same typed readers taking the node handle directly. A bad value
 // is an InputError whose one line names the parameter, its value and the allowed range (the
 // node then stops with that line).
 #pragma once
 
-#include "god_finger/core/parameter_source.h"
+#include "god_finger/support/parameter_source.h"
 
 #include <ros/node_handle.h>
 

@@ -3,8 +3,8 @@
 
 #include "diagnostics.h"
 #include "god_finger/ContactAreaArray.h"
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/text_numbers.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"

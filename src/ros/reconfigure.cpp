@@ -1,6 +1,6 @@
 #include "god_finger/ros/reconfigure.h"
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <dynamic_reconfigure/Config.h>
 #include <ros/console.h>

@@ -1,6 +1,6 @@
 #include "scene_parameter.h"
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/scene/urdf_scene.h"
 #include "parameters.h"
 

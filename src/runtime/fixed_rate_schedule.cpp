@@ -1,6 +1,6 @@
 #include "god_finger/runtime/fixed_rate_schedule.h"
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <cmath>
 #include <string>

@@ -1,6 +1,6 @@
 #include "god_finger/runtime/loop_statistics.h"
 
-#include "god_finger/core/text_numbers.h"
+#include "god_finger/support/text_numbers.h"
 #include "god_finger/runtime/servo_clock.h"
 
 #include <algorithm>

@@ -1,9 +1,9 @@
 #include "god_finger/runtime/servo_loop.h"
 #include "god_finger/runtime/multirate_render.h"
 
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/orientation_path.h"
-#include "god_finger/core/workspace_bound.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/haptics/orientation_path.h"
+#include "god_finger/haptics/workspace_bound.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
 
@@ -125,7 +125,7 @@ void ServoLoop::prepare()
     ServoInterface& interface = interfaces_[i];
     interface.device->start();
     readings_[i] = interface.device->update(0.0, Eigen::Vector3d::Zero());
-    // Within the workspace (core/workspace_bound.h), as every later reading.
+    // Within the workspace (haptics/workspace_bound.h), as every later reading.
     const Eigen::Vector3d start = interface.mapping.toWorld(
         boundToWorkspace(readings_[i].position, interface.profile, interface.mapping).position);
     if (!start.allFinite())

@@ -1,7 +1,7 @@
 #include "god_finger/scenarios/sheet_push_task.h"
 
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <Eigen/Geometry>

@@ -1,6 +1,6 @@
 #include "god_finger/scene/scene_budget.h"
 
-#include "god_finger/core/memory_budget.h"
+#include "god_finger/support/memory_budget.h"
 #include "god_finger/scene/walk_mesh.h"
 
 #include <string>

@@ -1,7 +1,7 @@
 #include "god_finger/scene/urdf_scene.h"
 
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/memory_budget.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/memory_budget.h"
 #include "god_finger/scene/scene_budget.h"
 
 #include <tinyxml2.h>

@@ -1,6 +1,6 @@
 #include "god_finger/scene/walk_mesh.h"
 
-#include "god_finger/core/mesh_primitives.h"
+#include "god_finger/geometry/mesh_primitives.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 
 #include <algorithm>

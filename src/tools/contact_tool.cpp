@@ -1,11 +1,11 @@
 #include "contact_tool.h"
 
-#include "god_finger/core/contact_area.h"
-#include "god_finger/core/contact_sampling.h"
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/parameter_json.h"
-#include "god_finger/core/surface_locator.h"
-#include "god_finger/core/text_numbers.h"
+#include "god_finger/contact/contact_area.h"
+#include "god_finger/contact/contact_sampling.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/parameter_json.h"
+#include "god_finger/geometry/surface_locator.h"
+#include "god_finger/support/text_numbers.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 
 #include <Eigen/Geometry>

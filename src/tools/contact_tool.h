@@ -2,7 +2,7 @@
 // See docs/experiments.md, "The contact tool". Exit codes: 0 success, 2 bad options or input.
 #pragma once
 
-#include "god_finger/core/contact_params.h"
+#include "god_finger/contact/contact_params.h"
 
 #include <cstdint>
 #include <ostream>

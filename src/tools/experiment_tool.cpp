@@ -1,7 +1,7 @@
 #include "experiment_tool.h"
 
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/text_numbers.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
 #include "god_finger/scenarios/servo_experiment.h"
 
 #include <cmath>

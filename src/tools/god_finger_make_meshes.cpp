@@ -1,7 +1,7 @@
 // god_finger_make_meshes OUTDIR: writes the meshes shipped in urdf/meshes (regenerate them
 // with this tool, so that they stay exactly what the generators make).
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/mesh_primitives.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/geometry/mesh_primitives.h"
 #include "god_finger/mesh_io/mesh_writer.h"
 
 #include <iostream>

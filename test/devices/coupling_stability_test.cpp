@@ -6,7 +6,7 @@
 // settles (peak-to-peak over the last 0.3 s under 10 um). The test finds the first unstable k
 // for each delay and checks that the profile's k stays a factor of 4 below it.
 #include "device_profile_file.h"
-#include "god_finger/core/device_profile.h"
+#include "god_finger/haptics/device_profile.h"
 #include "god_finger/devices/fake_device.h"
 
 #include <gtest/gtest.h>
@@ -22,7 +22,7 @@ namespace god_finger
 {
 namespace
 {
-// The wall is a proxy held at z = 0 by the one coupling function (core/virtual_coupling.h),
+// The wall is a proxy held at z = 0 by the one coupling function (haptics/virtual_coupling.h),
 // unsaturated so that only the loop's dynamics limit the stiffness.
 bool settles(const FakeDeviceParams& params, double stiffness, double damping, int delay)
 {

@@ -1,8 +1,8 @@
 // The shipped device profiles (config/devices/*.yaml) set only rows of the one profile table
-// (core/device_profile.h; the fake device's own rows for fake.yaml), each in its range, and the
+// (haptics/device_profile.h; the fake device's own rows for fake.yaml), each in its range, and the
 // README shows the fake device's table as generated.
-#include "god_finger/core/device_profile.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/haptics/device_profile.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/devices/falcon_device.h"
 #include "god_finger/devices/omni_device.h"

@@ -1,7 +1,7 @@
 // The one list of device backends: names, simulated or not, each backend reading its own
 // parameters, unknown names refused with the list, missing vendor libraries named.
 #include "god_finger/devices/device_registry.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The fake device against analytic answers: it follows its scripted hand, a constant force
 // deflects it by F / grip stiffness, and bad parameters are named.
 #include "god_finger/devices/fake_device.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Hands in the device registry: fake_hand and pose_source are input only (their rows say they
 // render no force), carry one device per finger, read their parameters with clear errors;
 // a pose source without a pose subscriber (no ROS) is refused.
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/pose_source.h"

@@ -6,8 +6,8 @@
 // give InputError, never a crash, a hang, an allocation past the file's size or a sanitizer
 // report; a file that loads must give a mesh on which contact areas are sound
 // (contactAreaDefect). Run by scripts/fuzz (scripts/test: all four formats, fixed seed).
-#include "god_finger/core/contact_sampling.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/contact/contact_sampling.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 
 #include <unistd.h>

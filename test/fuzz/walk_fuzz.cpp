@@ -4,8 +4,8 @@
 // that TriangleMesh::build refuses must be refused with InputError; on every mesh it accepts,
 // 16 random contact areas must be sound (contactAreaDefect) and every walk must stop within
 // the crossing cap. Run by scripts/fuzz.
-#include "god_finger/core/contact_sampling.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/contact/contact_sampling.h"
+#include "god_finger/support/input_error.h"
 
 #include <cmath>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // node's mesh list, the scene's meshes, a mesh's vertices or faces, a node's children) gives
 // one clear line, not a crash; a whole scene gives its triangles.
 #include "god_finger/mesh_io/assimp_scene.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <assimp/scene.h>
 #include <gtest/gtest.h>

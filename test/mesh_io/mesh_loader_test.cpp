@@ -1,8 +1,8 @@
 // Mesh files: every format round-trips through our writers and assimp, scale is applied, and
 // every bad file gives one clear error naming the file.
 #include "god_finger/mesh_io/mesh_loader.h"
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/mesh_primitives.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/geometry/mesh_primitives.h"
 #include "god_finger/mesh_io/mesh_writer.h"
 
 #include <gtest/gtest.h>

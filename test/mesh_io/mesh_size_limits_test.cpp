@@ -1,6 +1,6 @@
 // Mesh files too large for the memory left are refused before anything is allocated for them,
-// with one line naming the file, the count, the estimate and the limit (core/memory_budget.h).
-#include "god_finger/core/memory_budget.h"
+// with one line naming the file, the count, the estimate and the limit (support/memory_budget.h).
+#include "god_finger/support/memory_budget.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 
 #include <gtest/gtest.h>

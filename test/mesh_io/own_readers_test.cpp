@@ -1,7 +1,7 @@
 // Our PLY and OFF readers (mesh_io/ply_reader.h, off_reader.h): every encoding and the
 // variants real exporters write give the same mesh, and every corrupt file gives one clear
 // line, without allocating more than the file can hold.
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 #include "god_finger/mesh_io/off_reader.h"
 #include "god_finger/mesh_io/ply_reader.h"

@@ -1,8 +1,8 @@
 // Concave polygon faces as files carry them, in OBJ, OFF, PLY and DAE: an L, a U, a star, a comb
 // and a polygon with collinear runs load as triangles that cover them exactly (area, orientation,
 // every triangle inside), and a self-intersecting face is refused with one line naming it.
-#include "god_finger/core/contact_sampling.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/contact/contact_sampling.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 #include "god_finger/mesh_io/polygon_soup.h"
 

@@ -2,7 +2,7 @@
 // flat and inclined planes, no tunnelling at 1 m/s, every sub-god-object inside Bullet's
 // solver, model switching, determinism, and bad input.
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 #include "god_finger/scenarios/pad_fidelity.h"
 #include "god_finger/scene/urdf_scene.h"

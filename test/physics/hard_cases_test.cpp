@@ -2,7 +2,7 @@
 // energy or motion, no penetration beyond a stated tolerance, and that it ends (each runs a
 // fixed number of steps). The bounds are physical, stated where they are checked.
 #include "device_profile_file.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // offset one on the side, a point on the nail), the area moving as the finger rolls, the
 // rotational coupling and its torque, the roll_finger scenario, and bad input.
 #include "god_finger/physics/oriented_finger.h"
-#include "god_finger/core/input_error.h"
-#include "god_finger/core/orientation_path.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/haptics/orientation_path.h"
 #include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
 

@@ -4,8 +4,8 @@
 // a reset clears it; bad parameters are refused by name. The push never opens a grasp: two
 // fingers side by side on one face of a free bar, pinched against a third on the opposite face,
 // are not pushed even at the largest stiffness, and the bar stays held.
-#include "god_finger/core/area_overlap.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/contact/area_overlap.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
-// The one parameter table per set (core/parameter_table.h) is what every other place follows:
+// The one parameter table per set (support/parameter_table.h) is what every other place follows:
 // the README's tables, dynamic_reconfigure's cfg, the defaults and the error messages (the
 // shipped device profiles: test/devices/device_profiles_test). A parameter added to a table and not to the README or
 // the cfg (or the other way round) fails here, with the text to paste.
-#include "god_finger/core/device_profile.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/haptics/device_profile.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/pose_source.h"
 #include "god_finger/physics/world_params.h"

@@ -1,7 +1,7 @@
 // Sleeping (WorldParams::sleep): what rests out of the fingers' reach is not simulated, and wakes
 // without a jump when a proxy or a woken body comes near. Each test states its scene; the table
 // top is z = 0, boxes are 4 cm cubes of 50 g.
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The world's bounds (WorldParams::world_margin): a body pushed off the table is caught once
 // it has fallen world_margin below the scene, put back at its start at rest, counted with its
 // time; the bodies that stay are untouched. Simulated time, deterministic.
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/urdf_scene.h"
 

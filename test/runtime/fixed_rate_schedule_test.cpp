@@ -2,7 +2,7 @@
 // without drifting, more than 10 periods behind it restarts, bad periods are refused, and a
 // tick allocates nothing.
 #include "god_finger/runtime/fixed_rate_schedule.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include "allocation_counter.h"
 

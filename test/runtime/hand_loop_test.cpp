@@ -2,7 +2,7 @@
 // one interface each in one tick; a finger whose pose stream is lost (non-finite poses, fewer
 // poses, stale stamps) lets go after pose_timeout, its samples say so, and the others go on
 // pressing; the fake hand grasps and lifts the mug.
-#include "god_finger/core/force_guard.h"
+#include "god_finger/haptics/force_guard.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/hand_device.h"
 #include "god_finger/devices/pose_source.h"

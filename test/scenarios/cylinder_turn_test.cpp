@@ -2,7 +2,7 @@
 // fingers, a point (a ball that keeps its orientation) rolls on the mantle and swings it about
 // the pinch line, a light squeeze drops it, and a 3-DOF pad resists the mantle's roll until the
 // hand's pull, which a harder squeeze shortens, no longer overcomes it.
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/scenarios/cylinder_turn_task.h"
 #include "god_finger/scenarios/pad_fidelity.h"
 

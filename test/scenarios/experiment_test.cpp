@@ -1,7 +1,7 @@
 // The paper's claims, held to account with identical scripted input for each contact model
 // (docs/experiments.md has the numbers these runs print).
 #include "god_finger/scenarios/experiment.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // A three-finger hand lifts a mug mesh (scenarios/mug_grasp_task.h): friction against the weight
 // decides whether it holds, and a shaking hand tilts it between points but not between pads.
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/scenarios/mug_grasp_task.h"
 #include "god_finger/scenarios/pad_fidelity.h"
 

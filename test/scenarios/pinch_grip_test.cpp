@@ -1,7 +1,7 @@
 // A two-finger pinch of a bar across its parallel faces, gripped off its centre and lifted
 // (scenarios/grip_task.h, a perfect hand with the second finger misaligned by d along x and d / 2
 // along z): how far it turns, and whether it stays in the grip, as the squeeze grows.
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/scenarios/grip_task.h"
 
 #include <gtest/gtest.h>

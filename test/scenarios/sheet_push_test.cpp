@@ -1,7 +1,7 @@
 // The paper's pencil-versus-finger example (scenarios/sheet_push_task.h): dragged by its corner
 // under a light press, a sheet turns under a point (the god-object, "the pencil tip") and
 // translates under a pad ("a fingertip"): god_finger and soft_finger.
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/scenarios/sheet_push_task.h"
 
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 // the bar's largest rotation from its start, any axis.
 // Every model (god_object, soft_finger, god_finger with both pad solvers) must hold every bar with
 // at most 2 mm slip and 0.01 rad turn, with the default overlap push on.
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scenarios/pad_fidelity.h"
 

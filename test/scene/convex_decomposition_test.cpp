@@ -4,8 +4,8 @@
 // unwritable folders.
 #include "god_finger/scene/convex_decomposition.h"
 
-#include "god_finger/core/mesh_primitives.h"
-#include "god_finger/core/surface_locator.h"
+#include "god_finger/geometry/mesh_primitives.h"
+#include "god_finger/geometry/surface_locator.h"
 #include "god_finger/mesh_io/mesh_writer.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/mesh_simplification.h"

@@ -1,7 +1,7 @@
 // Scenes from URDF: the shipped scenes load as documented, and every malformed input gives one
 // InputError naming the file, the link and the problem.
 #include "god_finger/scene/urdf_scene.h"
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // god_finger_contact as a user runs it: JSON and CSV on the shipped meshes, results that
 // anyone can check, reproducible seeds, and one clear line with exit code 2 on bad input.
-#include "god_finger/core/surface_locator.h"
+#include "god_finger/geometry/surface_locator.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 
 #include "tool_run.h"

@@ -7,8 +7,8 @@
 // to install.
 #pragma once
 
-#include "god_finger/core/parameter_source.h"
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/support/parameter_source.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/devices/haptic_device.h"
 #include "god_finger/devices/pose_source.h"
 
@@ -22,7 +22,7 @@ namespace god_finger
 {
 struct DeviceContext
 {
-  // device_max_force (N): the device profile's one limit, coupling.max_force (core/device_profile.h).
+  // device_max_force (N): the device profile's one limit, coupling.max_force (haptics/device_profile.h).
   DeviceContext(const ParameterSource& source, double device_max_force) : params(source), max_force(device_max_force) {}
   const ParameterSource& params;  // the device's own parameters (the driver's private namespace)
   double max_force;               // N: the device profile's limit (hardware clamps to it as well)

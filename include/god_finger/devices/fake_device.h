@@ -11,10 +11,10 @@
 // update() calls, split into sub-steps of at most 1 ms. Deterministic for identical calls.
 #pragma once
 
-#include "god_finger/core/orientation_path.h"
-#include "god_finger/core/parameter_source.h"
-#include "god_finger/core/parameter_table.h"
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/haptics/orientation_path.h"
+#include "god_finger/support/parameter_source.h"
+#include "god_finger/support/parameter_table.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/devices/haptic_device.h"
 
 #include <mutex>
@@ -38,7 +38,7 @@ FakeDeviceParams readFakeDeviceParams(const ParameterSource& source);
 // the handle at `fallback` (m). InputError on a malformed script.
 WaypointPath readScript(const ParameterSource& source, const Eigen::Vector3d& fallback);
 // `orientation_script`: a list of [t, w, x, y, z] waypoints (s, a quaternion: the finger frame
-// of physics/oriented_finger.h in the device frame; slerped between, core/orientation_path.h);
+// of physics/oriented_finger.h in the device frame; slerped between, haptics/orientation_path.h);
 // unset: none (a 3-DOF finger). InputError on a malformed one.
 std::optional<OrientationPath> readOrientationScript(const ParameterSource& source);
 

@@ -12,9 +12,9 @@
 // `cycle` seconds. Deterministic: a pure function of the script time.
 #pragma once
 
-#include "god_finger/core/parameter_source.h"
-#include "god_finger/core/parameter_table.h"
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/support/parameter_source.h"
+#include "god_finger/support/parameter_table.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/devices/hand_device.h"
 
 #include <Eigen/Core>

@@ -12,8 +12,8 @@
 // as zero.
 #pragma once
 
-#include "god_finger/core/parameter_source.h"
-#include "god_finger/core/parameter_table.h"
+#include "god_finger/support/parameter_source.h"
+#include "god_finger/support/parameter_table.h"
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
 

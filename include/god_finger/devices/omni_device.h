@@ -19,8 +19,8 @@
 // maximum); non-finite forces are sent as zero.
 #pragma once
 
-#include "god_finger/core/parameter_source.h"
-#include "god_finger/core/parameter_table.h"
+#include "god_finger/support/parameter_source.h"
+#include "god_finger/support/parameter_table.h"
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
 

@@ -17,13 +17,13 @@
 // finger, so a finger the tracker lost lets go pose_timeout later; the others go on.
 //
 // Threads: PoseFeed::write() from one thread at a time (the subscriber's callback), read() from
-// the loop's thread; a lock-free latest-value mailbox between them (core/latest_value.h).
+// the loop's thread; a lock-free latest-value mailbox between them (support/latest_value.h).
 // read() is real-time safe (no allocation, no lock).
 #pragma once
 
-#include "god_finger/core/latest_value.h"
-#include "god_finger/core/parameter_source.h"
-#include "god_finger/core/parameter_table.h"
+#include "god_finger/support/latest_value.h"
+#include "god_finger/support/parameter_source.h"
+#include "god_finger/support/parameter_table.h"
 #include "god_finger/devices/hand_device.h"
 
 #include <Eigen/Core>

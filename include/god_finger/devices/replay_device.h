@@ -6,7 +6,7 @@
 // Units: s, m. The track's time 0 is its first sample; setScriptStart() says when that is played.
 #pragma once
 
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/devices/haptic_device.h"
 
 namespace god_finger

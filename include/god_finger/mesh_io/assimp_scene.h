@@ -3,7 +3,7 @@
 // be tested without a file that makes them. Not real-time: allocates.
 #pragma once
 
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/geometry/triangle_mesh.h"
 
 #include <Eigen/Core>
 

@@ -6,12 +6,12 @@
 //
 // Errors: a missing file, an unreadable or corrupt file, or a file with no triangles throw
 // InputError with one line naming the file and the reason. A file too large for the memory
-// left (core/memory_budget.h: the counts a PLY, OFF or binary STL header declares, or the size
+// left (support/memory_budget.h: the counts a PLY, OFF or binary STL header declares, or the size
 // of any other file) is refused before it is read, with a ResourceLimitError naming the file,
 // the count, the estimate and the limit.
 #pragma once
 
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/geometry/triangle_mesh.h"
 
 #include <string>
 

@@ -3,7 +3,7 @@
 // extension. Throws InputError when the file cannot be written or the extension is unknown.
 #pragma once
 
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/geometry/triangle_mesh.h"
 
 #include <string>
 

@@ -5,7 +5,7 @@
 // Units: the file's (taken as metres). Not real-time: everything here allocates.
 #pragma once
 
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/geometry/triangle_mesh.h"
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -35,7 +35,7 @@ struct PolygonSoup
 
 // Called by the readers with a file's declared vertex and face counts as soon as they are known,
 // before anything is allocated for them: the place to refuse a file too large for the machine
-// (core/memory_budget.h) by throwing.
+// (support/memory_budget.h) by throwing.
 using DeclaredSizeCheck = std::function<void(std::uint64_t vertices, std::uint64_t faces)>;
 
 // The most corners one face may have: ear clipping is quadratic or worse in them, and no
@@ -43,7 +43,7 @@ using DeclaredSizeCheck = std::function<void(std::uint64_t vertices, std::uint64
 constexpr int kMaxFaceCorners = 4096;
 
 // Appends `polygons` to `soup` (vertices after those already there), each face ear-clipped on
-// its best-fit plane (core/polygon_triangulation.h); faces of fewer than 3 corners (points,
+// its best-fit plane (geometry/polygon_triangulation.h); faces of fewer than 3 corners (points,
 // lines) are skipped. Throws InputError ("face F refers to vertex V of N", "face F has K
 // corners, more than 4096", or the triangulation's reason for face F) and leaves `soup` as it was.
 // The soup's triangles index its vertices with int: more than `max_vertices` (INT_MAX; smaller

@@ -3,7 +3,7 @@
 // One step (fixed time step, deterministic: the same calls give the same trajectory bit for
 // bit):
 //  1. each proxy gets the coupling force k (p_I - p_GO) + b (v_I - v_GO), saturated
-//     (core/virtual_coupling.h, with its interface's profile);
+//     (haptics/virtual_coupling.h, with its interface's profile);
 //  2. Bullet's collision detection finds the proxies' contacts;
 //  3. kGodFinger: for the deepest contact of each (proxy, object) pair, the contact area is
 //     computed on the object's walk mesh and reaches the solver (WorldParams::pad_solver):
@@ -31,7 +31,7 @@
 // original triangle mesh even where collision uses a convex decomposition.
 #pragma once
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/physics/world_params.h"
 #include "god_finger/physics/world_state.h"
 #include "god_finger/scene/scene_description.h"

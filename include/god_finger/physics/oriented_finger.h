@@ -14,7 +14,7 @@
 //     The proxy's orientation is not yet limited by its contacts: nothing a flat pad touches
 //     resists the finger's roll, so the torque is the spring's lag only. The torque is
 //     InterfaceState::user_torque; the servo loop sends it to a device on its profile's
-//     torque_axes, saturated at max_torque (core/device_profile.h; the Omni/Touch and the
+//     torque_axes, saturated at max_torque (haptics/device_profile.h; the Omni/Touch and the
 //     Falcon render force only: none).
 //  2. The pad sits on the pulp: with phi the angle between the pulp normal (finger z) and the
 //     inward surface normal (-c_n), the contact radius is the Eq. 1 radius times

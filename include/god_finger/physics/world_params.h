@@ -1,10 +1,10 @@
 // Parameters of the physics world and of the god-object proxies: the structs with their
 // defaults, and worldParameterTable(), the one table of their names, units, ranges and
-// meanings (core/parameter_table.h); validate() names the first bad one.
+// meanings (support/parameter_table.h); validate() names the first bad one.
 #pragma once
 
-#include "god_finger/core/contact_params.h"
-#include "god_finger/core/virtual_coupling.h"
+#include "god_finger/contact/contact_params.h"
+#include "god_finger/haptics/virtual_coupling.h"
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/physics/oriented_finger.h"
 
@@ -13,7 +13,7 @@
 
 namespace god_finger
 {
-// The virtual coupling's default profile (core/virtual_coupling.h: stiffness, damping,
+// The virtual coupling's default profile (haptics/virtual_coupling.h: stiffness, damping,
 // max_force; an interface may bring its device's own) and the god-object it pulls: a small
 // sphere with locked rotation.
 struct CouplingParams : CouplingProfile
@@ -82,7 +82,7 @@ struct SleepParams
 };
 
 // The overlap push (paper, Discussion; src/physics/overlap_push.h): where two fingers' contact
-// areas on one body overlap (core/area_overlap.h: on one side of it; pads on opposite faces never
+// areas on one body overlap (contact/area_overlap.h: on one side of it; pads on opposite faces never
 // do), both proxies are pushed apart with stiffness times the overlap area, the push changing by
 // at most force_rate per second; a finger that holds the body against another is never pushed.
 // The default stiffness holds the pinch_thin scenario's fingers (1.6 N each on one face of a 2 mm

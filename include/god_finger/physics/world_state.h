@@ -3,8 +3,8 @@
 // state. Plain data, no Bullet; the world (god_finger_world.h) fills them. Units SI, frame world.
 #pragma once
 
-#include "god_finger/core/contact_area.h"
-#include "god_finger/core/contact_params.h"
+#include "god_finger/contact/contact_area.h"
+#include "god_finger/contact/contact_params.h"
 #include "god_finger/physics/contact_model.h"
 
 #include <Eigen/Geometry>
@@ -24,7 +24,7 @@ struct WorldContactArea
   FeatureKind feature = FeatureKind::kFace;
   int sub_god_object_count = 0;                                             // active ones, in positions
   std::array<Eigen::Vector3d, ContactParams::kMaxSubGodObjects> positions;  // world
-  // m^2: the overlap with other fingers' areas on this body, summed (core/area_overlap.h; god_finger
+  // m^2: the overlap with other fingers' areas on this body, summed (contact/area_overlap.h; god_finger
   // model only, 0 otherwise)
   double overlap_area = 0.0;
 };

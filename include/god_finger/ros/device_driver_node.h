@@ -8,7 +8,7 @@
 // (geometry_msgs/Vector3Stamped, device frame, N). Every force goes through a ForceGuard:
 // saturated to the profile's max_force, rejected (and counted) when not finite, ramped to zero
 // within ramp_time when no command came for command_timeout, ramped in over soft_start at
-// start and resume, rate- and budget-limited (core/force_guard.h). Service stop_force
+// start and resume, rate- and budget-limited (haptics/force_guard.h). Service stop_force
 // (std_srvs/SetBool, the interface's namespace): true zeroes this device's force at once, false
 // resumes it with the soft start. /diagnostics at 1 Hz: rate, overruns, rejected and saturated
 // commands, watchdog state, stop, budget-limited outputs.

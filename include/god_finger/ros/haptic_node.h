@@ -17,7 +17,7 @@
 // otherwise it forwards the physics' feedback. Workspace
 // mapping: the interface's workspace_scale, force_scale, workspace_offset, workspace_rotation.
 // A device position beyond the profile's workspace_radius is clamped before it is mapped and the
-// hand feels the workspace wall (core/workspace_bound.h), added to every device/force.
+// hand feels the workspace wall (haptics/workspace_bound.h), added to every device/force.
 // ~model: the physics' initial contact model (where button 0 cycles from).
 // Buttons: button 0 cycles the contact model (god_object -> god_finger -> soft_finger), button
 // 1 resets the scene (services set_contact_model, reset_scene, resolved in ~physics_namespace).

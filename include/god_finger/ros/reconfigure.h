@@ -20,7 +20,7 @@ namespace god_finger
 // The cfg's entries are rows of worldParameterTable(), matched by name.
 god_finger::GodFingerConfig configOf(const WorldParams& params);
 // Clamps every entry of `config` that lies in its row's range but outside the row's live range
-// (core/parameter_table.h) to that live range; one line per clamped entry, naming it, its value,
+// (support/parameter_table.h) to that live range; one line per clamped entry, naming it, its value,
 // the live range and the clamped value (empty: nothing clamped). The cfg's ends are the rows'
 // ranges, so dynamic_reconfigure's server itself never clamps a value the table accepts.
 std::vector<std::string> clampToLiveRanges(god_finger::GodFingerConfig* config);

@@ -14,7 +14,7 @@
 // Units: SI, world frame. Real-time safe (no allocation).
 #pragma once
 
-#include "god_finger/core/virtual_coupling.h"
+#include "god_finger/haptics/virtual_coupling.h"
 
 #include <Eigen/Core>
 

@@ -6,7 +6,7 @@
 // The haptic side, every period:
 //   1. commands each device a force (below), through its guard (saturation, NaN rejection,
 //      watchdog), and applies it at this period's update, which reads the device;
-//   2. bounds each reading to the profile's workspace_radius (core/workspace_bound.h: a reading
+//   2. bounds each reading to the profile's workspace_radius (haptics/workspace_bound.h: a reading
 //      beyond it is clamped and its wall force added to the next command), maps it into the
 //      world (the interface target) and hands the targets and the
 //      buttons' presses (0: next contact model, 1: reset) to the physics (button 2, where
@@ -21,17 +21,17 @@
 //      step takes its velocity as zero, so the released proxy comes to rest), counted
 //      in untracked_readings, its sample says tracked = false; the other interfaces go on;
 //      tracked again, its target ramps from that proxy position to the tracked pose over the
-//      force guard's soft start (softStartScale, core/force_guard.h): no step of coupling force;
+//      force guard's soft start (softStartScale, haptics/force_guard.h): no step of coupling force;
 //   3. leaves a sample per interface in a lock-free queue for the publishers.
 // Oriented fingers (a reading with has_orientation, physics/oriented_finger.h): the reading's
 // orientation, mapped into the world (WorkspaceMapping::orientationToWorld), goes to the
 // physics with the position (GodFingerWorld::setInterfaceTarget's quaternion overload), and the
 // rotational coupling's torque on the hand (InterfaceState::user_torque, world) comes back,
 // mapped into the device frame (torqueToDevice) and cut to the profile's torque axes and
-// max_torque (renderableTorque, core/device_profile.h): it is sent at the next tick's update
+// max_torque (renderableTorque, haptics/device_profile.h): it is sent at the next tick's update
 // (HapticDevice::updateWrench) with the force, zero while the guard is stopped. It is the last
 // completed step's torque, also while the physics is late (no haptic-side rendering of torque).
-// An orientation that is not usable (non-finite, norm outside [0.5, 2]: core/orientation_path.h
+// An orientation that is not usable (non-finite, norm outside [0.5, 2]: haptics/orientation_path.h
 // usableOrientation) is ignored and counted (rejected_orientations): the finger keeps its last
 // good orientation (a 3-DOF finger until it had one); the position is still taken. A finger
 // whose device never reports an orientation runs exactly the 3-DOF calls, bit for bit.
@@ -77,7 +77,7 @@
 //    (SCHED_FIFO `realtime_priority`) does the device I/O and never waits for the physics; the
 //    physics thread (SCHED_FIFO realtime_priority - 1, normal scheduling when that is 0) steps
 //    when new targets are posted (a POSIX semaphore, whose post is lock-free). Mailboxes:
-//    targets and results are latest-value triple buffers (core/latest_value.h), commands SPSC
+//    targets and results are latest-value triple buffers (support/latest_value.h), commands SPSC
 //    queues (world commands to the physics thread, hand targets to the haptic thread). The
 //    force for tick k's reading is decided at the start of tick k + 1, just before the update
 //    that applies it, from whatever step completed by then.
@@ -99,12 +99,12 @@
 // Units: s, m, N; device frame for device quantities, world for the rest.
 #pragma once
 
-#include "god_finger/core/device_profile.h"
-#include "god_finger/core/force_guard.h"
-#include "god_finger/core/latest_value.h"
-#include "god_finger/core/parameter_table.h"
-#include "god_finger/core/spsc_queue.h"
-#include "god_finger/core/workspace_mapping.h"
+#include "god_finger/haptics/device_profile.h"
+#include "god_finger/haptics/force_guard.h"
+#include "god_finger/support/latest_value.h"
+#include "god_finger/support/parameter_table.h"
+#include "god_finger/support/spsc_queue.h"
+#include "god_finger/haptics/workspace_mapping.h"
 #include "god_finger/devices/haptic_device.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/runtime/multirate_render.h"
@@ -348,7 +348,7 @@ class ServoLoop
     Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m, device frame: renderable, the last decided
     Eigen::Quaterniond device_orientation = Eigen::Quaterniond::Identity();  // the last usable, device frame
     Eigen::Vector3d wall_force =
-        Eigen::Vector3d::Zero();  // N, device frame: the workspace wall (core/workspace_bound.h)
+        Eigen::Vector3d::Zero();  // N, device frame: the workspace wall (haptics/workspace_bound.h)
     bool stale = false;           // the last decision's
     bool tracked = true;          // the last reading's (DeviceReading::tracked)
     // A finger tracked again: its target ramps from regrip_from (m, world: where it let go) to

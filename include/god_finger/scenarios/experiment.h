@@ -56,8 +56,8 @@
 // Contact parameters: the core's defaults (ContactParams; D0' = 1 mm).
 #pragma once
 
-#include "god_finger/core/orientation_path.h"
-#include "god_finger/core/waypoint_path.h"
+#include "god_finger/haptics/orientation_path.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/scene_description.h"
 #include "god_finger/physics/world_params.h"

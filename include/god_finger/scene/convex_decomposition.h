@@ -21,7 +21,7 @@
 // and HACD's hull vertices: every hull has at least 4 points. Not real-time.
 #pragma once
 
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/geometry/triangle_mesh.h"
 
 #include <Eigen/Core>
 #include <cstdint>

@@ -9,7 +9,7 @@
 // in metres); the collapse stops before `error` would exceed `max_error`. Not real-time.
 #pragma once
 
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/geometry/triangle_mesh.h"
 
 namespace god_finger
 {

@@ -4,7 +4,7 @@
 //  - At most kMaxBodies bodies: Bullet's broadphase and the per-step snapshot grow with the
 //    body count, and each body costs about kBytesPerBody (measured: 10,000 boxes took 690 MiB).
 //  - The bodies and their primitives' walk meshes (tessellations, sized by max_walk_edge, m)
-//    must fit in the memory limit of core/memory_budget.h. Mesh files are not opened here:
+//    must fit in the memory limit of support/memory_budget.h. Mesh files are not opened here:
 //    each is checked against the then-available memory when it is read (mesh_loader.h), so
 //    that what the bodies before it took counts too.
 // Errors: ResourceLimitError (an InputError). Not real-time.

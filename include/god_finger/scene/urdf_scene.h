@@ -16,7 +16,7 @@
 //    without one, the folders above the URDF file whose package.xml names NAME).
 //
 // Errors: InputError with one line naming the file, the link and the problem; a
-// ResourceLimitError (core/memory_budget.h) for more than kMaxBodies bodies (scene_budget.h).
+// ResourceLimitError (support/memory_budget.h) for more than kMaxBodies bodies (scene_budget.h).
 #pragma once
 
 #include "god_finger/scene/scene_description.h"

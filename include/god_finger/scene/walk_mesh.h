@@ -5,7 +5,7 @@
 // segments (at least 16). Tessellations are capped at 81920 triangles.
 #pragma once
 
-#include "god_finger/core/triangle_mesh.h"
+#include "god_finger/geometry/triangle_mesh.h"
 #include "god_finger/scene/scene_description.h"
 
 namespace god_finger

@@ -1,6 +1,6 @@
 #include "god_finger/devices/device_registry.h"
 
-#include "god_finger/core/input_error.h"
+#include "god_finger/support/input_error.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/falcon_device.h"
