@@ -6,9 +6,9 @@
 #pragma once
 
 #include "area_solver_input.h"
-#include "pad_constraints.h"
+#include "solver/pad_constraints.h"
 #include "proxy.h"
-#include "sub_god_object_injection.h"
+#include "solver/sub_god_object_injection.h"
 
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/physics/world_params.h"

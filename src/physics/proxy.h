@@ -11,8 +11,8 @@
 #include "god_finger/physics/world_state.h"
 #include "god_finger/physics/oriented_finger.h"
 #include "god_finger/physics/world_params.h"
-#include "pad_state.h"
-#include "warm_start.h"
+#include "solver/pad_state.h"
+#include "solver/warm_start.h"
 
 #include <btBulletDynamicsCommon.h>
 

@@ -1,7 +1,7 @@
-// The sleeping bodies out of Bullet's world (src/physics/dormant_bodies.h), a private piece of the
+// The sleeping bodies out of Bullet's world (src/physics/sleep/dormant_bodies.h), a private piece of the
 // physics tested on its own: a group sleeps and wakes together, a box query wakes exactly the
 // groups it overlaps, each woken body is reported once, and a reset forgets everything.
-#include "dormant_bodies.h"
+#include "sleep/dormant_bodies.h"
 
 #include <gtest/gtest.h>
 

@@ -188,7 +188,7 @@ TEST_P(HardCases, ObjectsAThousandTimesHeavierAndLighterThanTheProxy)
   //
   // Bullet's sequential impulses transfer about one object-mass of momentum per iteration
   // through a proxy -> light object -> table stack: without the support passes
-  // (WorldParams::support_passes = 0, src/physics/support_pass.h) an object much lighter
+  // (WorldParams::support_passes = 0, src/physics/solver/support_pass.h) an object much lighter
   // than the proxy sank into the table while pressed: 0.14 mm at 1/10, 1.8 mm at 1/100, 7.2 mm
   // at 1/1000. With them it rests within 0.2 mm down to 1/1000, and is still dragged along.
   const double proxy_mass = fingerParams().coupling.proxy_mass;

@@ -1,8 +1,8 @@
-// The pad's shape under uniform pressure (src/physics/pad_geometry.h), a private piece of the
+// The pad's shape under uniform pressure (src/physics/solver/pad_geometry.h), a private piece of the
 // physics tested on its own: sub-god-objects on a circle of radius a give the disk's levers,
 // (2/3) a and a, a pad pushed to one side moves its centre of pressure
 // that way, and fewer than three points are a point.
-#include "pad_geometry.h"
+#include "solver/pad_geometry.h"
 
 #include <gtest/gtest.h>
 

@@ -8,10 +8,10 @@
 //  3. kGodFinger: for the deepest contact of each (proxy, object) pair, the contact area is
 //     computed on the object's walk mesh and reaches the solver (WorldParams::pad_solver):
 //     by default (constraint) as one pad at its centre of pressure with torsional and tilt rows
-//     bounded by the area (src/physics/pad_constraints.h); with `points` (the paper's way) every
+//     bounded by the area (src/physics/solver/pad_constraints.h); with `points` (the paper's way) every
 //     active sub-god-object is a contact point with the true contact's normal and its
 //     tilt-corrected depth, in manifolds of our own (Bullet's keep at most 4 points and merge
-//     close ones; src/physics/sub_god_object_injection.h);
+//     close ones; src/physics/solver/sub_god_object_injection.h);
 //  4. the solver runs; the force on the user is the opposite of the coupling force;
 //  5. kGodFinger: where two fingers' contact areas on one body overlap (share surface on one side
 //     of it: pads on opposite faces are a pinch, never an overlap), both proxies are pushed apart

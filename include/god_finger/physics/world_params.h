@@ -52,7 +52,7 @@ struct FingerPadParams
   double damping = 20.0;   // N s/m per contact point
 };
 
-// How a god_finger contact area reaches the solver (src/physics/pad_constraints.h):
+// How a god_finger contact area reaches the solver (src/physics/solver/pad_constraints.h):
 // kPoints, the paper's way, a contact point per sub-god-object (about 3 (1 + n_SGO) rows per
 // finger); kConstraint, one pad per area at its centre of pressure with torsional and tilt rows
 // bounded by the area (6 rows per finger).
@@ -112,7 +112,7 @@ struct WorldParams
   // no scenario's outcome (bench/REPORT.md, "Physics step"); 0 runs every iteration.
   double solver_tolerance = 1e-5;
   // Passes after them that hold an object resting on something static while a proxy presses it
-  // (src/physics/support_pass.h): without them an object 1000 times lighter than the
+  // (src/physics/solver/support_pass.h): without them an object 1000 times lighter than the
   // proxy sank 7 mm into its support. 0: Bullet's solver alone.
   int support_passes = 2;
   Eigen::Vector3d gravity = Eigen::Vector3d(0, 0, -9.81);  // m/s^2, finite

@@ -1,4 +1,4 @@
-#include "finger_contact_friction.h"
+#include "solver/finger_contact_friction.h"
 
 #include "bullet_helpers.h"
 

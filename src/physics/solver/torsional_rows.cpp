@@ -1,4 +1,4 @@
-#include "torsional_rows.h"
+#include "solver/torsional_rows.h"
 
 #include <cmath>
 

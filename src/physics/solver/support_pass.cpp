@@ -1,4 +1,4 @@
-#include "support_pass.h"
+#include "solver/support_pass.h"
 
 #include "bullet_helpers.h"
 

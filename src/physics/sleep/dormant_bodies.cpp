@@ -1,4 +1,4 @@
-#include "dormant_bodies.h"
+#include "sleep/dormant_bodies.h"
 
 namespace god_finger
 {

@@ -1,8 +1,8 @@
-#include "pad_constraints.h"
+#include "solver/pad_constraints.h"
 
 #include "bullet_helpers.h"
 #include "god_finger/contact/sub_god_object_distance.h"
-#include "pad_geometry.h"
+#include "solver/pad_geometry.h"
 
 namespace god_finger
 {

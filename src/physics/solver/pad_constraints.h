@@ -25,7 +25,7 @@
 #pragma once
 
 #include "area_solver_input.h"
-#include "pad_state.h"
+#include "solver/pad_state.h"
 #include "proxy.h"
 
 #include <btBulletDynamicsCommon.h>

@@ -1,9 +1,9 @@
-#include "contact_solver.h"
+#include "solver/contact_solver.h"
 
 #include "bullet_helpers.h"
-#include "pad_torsion.h"
-#include "support_pass.h"
-#include "torsional_rows.h"
+#include "solver/pad_torsion.h"
+#include "solver/support_pass.h"
+#include "solver/torsional_rows.h"
 
 namespace god_finger
 {

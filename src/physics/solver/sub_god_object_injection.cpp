@@ -1,4 +1,4 @@
-#include "sub_god_object_injection.h"
+#include "solver/sub_god_object_injection.h"
 
 #include "bullet_helpers.h"
 #include "god_finger/contact/sub_god_object_distance.h"

@@ -1,4 +1,4 @@
-#include "pad_torsion.h"
+#include "solver/pad_torsion.h"
 
 #include "bullet_helpers.h"
 

@@ -16,7 +16,7 @@
 // have grown.
 #pragma once
 
-#include "pad_constraints.h"
+#include "solver/pad_constraints.h"
 
 #include <btBulletDynamicsCommon.h>
 

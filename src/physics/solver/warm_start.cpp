@@ -1,4 +1,4 @@
-#include "warm_start.h"
+#include "solver/warm_start.h"
 
 #include "bullet_helpers.h"
 

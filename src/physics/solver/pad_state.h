@@ -24,7 +24,7 @@
 // Units: SI, world frame unless said. Real-time safe (no allocation).
 #pragma once
 
-#include "warm_start.h"
+#include "solver/warm_start.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

@@ -1,4 +1,4 @@
-#include "pad_geometry.h"
+#include "solver/pad_geometry.h"
 
 #include <algorithm>
 

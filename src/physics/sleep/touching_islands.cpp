@@ -1,4 +1,4 @@
-#include "touching_islands.h"
+#include "sleep/touching_islands.h"
 
 #include <BulletCollision/BroadphaseCollision/btDispatcher.h>
 #include <BulletCollision/CollisionDispatch/btCollisionWorld.h>

@@ -1,4 +1,4 @@
-#include "slept_contacts.h"
+#include "sleep/slept_contacts.h"
 
 #include "bullet_helpers.h"
 

@@ -11,7 +11,7 @@
 // Units: Bullet's (SI, world frame); a row's impulse is at its lever (N s). Real-time safe.
 #pragma once
 
-#include "pad_constraints.h"
+#include "solver/pad_constraints.h"
 
 #include <btBulletDynamicsCommon.h>
 

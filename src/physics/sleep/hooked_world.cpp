@@ -1,6 +1,6 @@
-#include "hooked_world.h"
+#include "sleep/hooked_world.h"
 
-#include "touching_islands.h"
+#include "sleep/touching_islands.h"
 
 #include <new>
 
