@@ -1,8 +1,9 @@
 #include "god_finger/scenarios/cylinder_turn_task.h"
+#include "task_world.h"
 
-#include "god_finger/support/input_error.h"
 #include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/support/input_error.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -49,14 +50,10 @@ SceneDescription cylinderTurnScene()
 
 CylinderTurnResult runCylinderTurn(const CylinderTurnOptions& options)
 {
-  if (!(options.squeeze > 0.0 && options.squeeze <= 0.05))
-  {
-    throw InputError("cylinder turn: squeeze " + std::to_string(options.squeeze) + " m is outside (0, 0.05]");
-  }
-  const SceneDescription scene = cylinderTurnScene();
-  GodFingerWorld world(scene, options.params);
-  world.setContactModel(options.model);
-  const int cylinder = scene.find("cylinder");
+  TaskWorld task("cylinder turn", "squeeze", options.squeeze, 0.05, cylinderTurnScene, options.params, options.model,
+                 "cylinder");
+  GodFingerWorld& world = task.world;
+  const int cylinder = task.object;
   const OperatorTraits& traits = options.hand;
   const double face = kTurnCylinderRadius + options.params.coupling.proxy_radius;  // proxy centre on the mantle
   const double start_z = world.bodyState(cylinder).center_of_mass.z();

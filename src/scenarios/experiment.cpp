@@ -4,12 +4,12 @@
 #include "god_finger/scenarios/scenario_metrics.h"
 #include "roll_metrics.h"
 
-#include "god_finger/support/input_error.h"
-#include "god_finger/support/parameter_json.h"
-#include "god_finger/support/text_numbers.h"
 #include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/parameter_json.h"
+#include "god_finger/support/text_numbers.h"
 
 #include <chrono>
 #include <cmath>

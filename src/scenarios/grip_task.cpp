@@ -1,8 +1,9 @@
 #include "god_finger/scenarios/grip_task.h"
+#include "task_world.h"
 
-#include "god_finger/support/input_error.h"
 #include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/support/input_error.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -156,14 +157,9 @@ GripTaskResult GripTaskMeter::finish(const Eigen::Isometry3d& bar_pose, const Ei
 
 GripTaskResult runGripTask(const GripTaskOptions& options)
 {
-  if (!(options.squeeze > 0.0 && options.squeeze <= 0.1))
-  {
-    throw InputError("grip task: squeeze " + std::to_string(options.squeeze) + " m is outside (0, 0.1]");
-  }
-  const SceneDescription scene = gripBarScene();
-  GodFingerWorld world(scene, options.params);
-  world.setContactModel(options.model);
-  const int bar = scene.find("bar");
+  TaskWorld task("grip task", "squeeze", options.squeeze, 0.1, gripBarScene, options.params, options.model, "bar");
+  GodFingerWorld& world = task.world;
+  const int bar = task.object;
   Eigen::Vector3d near, far;
   gripTargets(options, 0.0, 1.0, &near, &far);
   const int near_finger = world.addInterface(near);

@@ -1,9 +1,10 @@
 #include "god_finger/scenarios/mug_grasp_task.h"
+#include "task_world.h"
 
-#include "god_finger/support/input_error.h"
 #include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/input_error.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -36,14 +37,12 @@ Eigen::Vector3d outwards(int finger)
 
 MugGraspResult runMugGrasp(const MugGraspOptions& options)
 {
-  if (!(options.squeeze > 0.0 && options.squeeze <= 0.03))
-  {
-    throw InputError("mug grasp: squeeze " + std::to_string(options.squeeze) + " m is outside (0, 0.03]");
-  }
-  const SceneDescription scene = loadUrdfScene(options.scenes_dir + "/table_mug.urdf");
-  GodFingerWorld world(scene, options.params);
-  world.setContactModel(options.model);
-  const int mug = scene.find("mug");
+  TaskWorld task(
+      "mug grasp", "squeeze", options.squeeze, 0.03,
+      [&options]() { return loadUrdfScene(options.scenes_dir + "/table_mug.urdf"); }, options.params, options.model,
+      "mug");
+  GodFingerWorld& world = task.world;
+  const int mug = task.object;
   const OperatorTraits& traits = options.hand;
   const double face = kWallRadius + options.params.coupling.proxy_radius;  // proxy centre on the wall
   auto target = [&](double t, double squeeze_factor, int finger) -> Eigen::Vector3d

@@ -1,8 +1,9 @@
 #include "god_finger/scenarios/sheet_push_task.h"
+#include "task_world.h"
 
-#include "god_finger/support/input_error.h"
 #include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/support/input_error.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -37,14 +38,9 @@ SceneDescription sheetScene()
 
 SheetPushResult runSheetPush(const SheetPushOptions& options)
 {
-  if (!(options.press > 0.0 && options.press <= 0.05))
-  {
-    throw InputError("sheet push: press " + std::to_string(options.press) + " m is outside (0, 0.05]");
-  }
-  const SceneDescription scene = sheetScene();
-  GodFingerWorld world(scene, options.params);
-  world.setContactModel(options.model);
-  const int sheet = scene.find("sheet");
+  TaskWorld task("sheet push", "press", options.press, 0.05, sheetScene, options.params, options.model, "sheet");
+  GodFingerWorld& world = task.world;
+  const int sheet = task.object;
   const OperatorTraits& traits = options.hand;
   const double radius = options.params.coupling.proxy_radius;
   // Where the finger lands: inside the corner, moved in the plane by the misalignment.
