@@ -13,7 +13,7 @@
 
 #include <Eigen/Core>
 
-namespace god_finger
+namespace god_finger::internal
 {
 struct AreaSolverInput
 {
@@ -28,4 +28,4 @@ struct AreaSolverInput
   const WorldContactArea* area = nullptr;                       // the kept sub-god-objects (world)
   const int* radial_index = nullptr;                            // per kept sub-god-object, its radial vector's index
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -7,7 +7,7 @@
 
 #include <Eigen/Geometry>
 
-namespace god_finger
+namespace god_finger::internal
 {
 // Collision groups: proxies touch scene bodies, never each other.
 constexpr int kBodyGroup = btBroadphaseProxy::DefaultFilter | btBroadphaseProxy::StaticFilter;
@@ -47,4 +47,4 @@ inline Eigen::Isometry3d toEigen(const btTransform& t)
   result.translation() = toEigen(t.getOrigin());
   return result;
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -3,7 +3,7 @@
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
 #include <LinearMath/btConvexHullComputer.h>
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -140,4 +140,4 @@ std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, con
   result->owned.push_back(std::move(compound));
   return result;
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

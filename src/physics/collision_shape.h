@@ -17,7 +17,7 @@
 #include <memory>
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 struct CollisionShape
 {
@@ -37,4 +37,4 @@ std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, con
 
 // Volume enclosed by a closed mesh (m^3); meaningless for open meshes.
 double enclosedVolume(const TriangleMesh& mesh);
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -4,6 +4,7 @@
 
 namespace god_finger
 {
+using namespace internal;  // the physics' private pieces (src/physics)
 namespace
 {
 // The one list of contact models: name (messages, the cfg's enum, the tools, the device's model
@@ -59,7 +60,7 @@ bool isContactModel(ContactModel model)
   return entryOf(model) != nullptr;
 }
 
-std::unique_ptr<ContactResponse> makeContactResponse(ContactModel model)
+std::unique_ptr<ContactResponse> internal::makeContactResponse(ContactModel model)
 {
   const ContactModelEntry* entry = entryOf(model);
   return entry != nullptr ? entry->make_response() : nullptr;

@@ -15,7 +15,7 @@
 
 #include <memory>
 
-namespace god_finger
+namespace god_finger::internal
 {
 // Where a response puts what it adds to this step's solve.
 struct SolverAdditions
@@ -43,4 +43,4 @@ std::unique_ptr<ContactResponse> makeContactResponse(ContactModel model);
 std::unique_ptr<ContactResponse> makeGodObjectResponse();
 std::unique_ptr<ContactResponse> makeGodFingerResponse();
 std::unique_ptr<ContactResponse> makeSoftFingerResponse();
-}  // namespace god_finger
+}  // namespace god_finger::internal

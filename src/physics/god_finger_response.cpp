@@ -2,7 +2,7 @@
 // area, as points (sub_god_object_injection.h) or as one pad constraint (pad_constraints.h).
 #include "contact_response.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -33,4 +33,4 @@ std::unique_ptr<ContactResponse> makeGodFingerResponse()
 {
   return std::make_unique<GodFingerResponse>();
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -28,6 +28,7 @@
 
 namespace god_finger
 {
+using namespace internal;  // the physics' private pieces (src/physics)
 namespace
 {
 // Sub-god-objects closer than this to the contact point (m) duplicate it and are not added.

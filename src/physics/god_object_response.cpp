@@ -1,7 +1,7 @@
 // god_object: the paper's baseline, the proxy's single contact point as Bullet finds it.
 #include "contact_response.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -21,4 +21,4 @@ std::unique_ptr<ContactResponse> makeGodObjectResponse()
 {
   return std::make_unique<GodObjectResponse>();
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -126,4 +126,4 @@ void OverlapPush::update(const WorldParams& params, std::vector<Proxy>* proxies)
     (*proxies)[i].state.overlap_push = pushes_[i];
   }
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -29,7 +29,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 class OverlapPush
 {
@@ -48,4 +48,4 @@ class OverlapPush
   std::vector<Eigen::Vector3d> targets_;
   std::vector<Eigen::Vector3d> pushes_;
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -2,7 +2,7 @@
 
 #include "bullet_helpers.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, int index, int body_count, Proxy* proxy)
 {
@@ -40,4 +40,4 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->warm_starts.assign(body_count, {});
   proxy->pads.assign(body_count, PadState());
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

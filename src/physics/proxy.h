@@ -21,7 +21,7 @@
 #include <memory>
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 struct Proxy
 {
@@ -47,4 +47,4 @@ struct Proxy
 // `body_count` bodies) and resets its per-step state; the caller adds it to the world.
 void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, int index, int body_count,
                     Proxy* proxy);
-}  // namespace god_finger
+}  // namespace god_finger::internal

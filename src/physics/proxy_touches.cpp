@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace god_finger
+namespace god_finger::internal
 {
 bool ProxyTouches::coveredByDeeperTouch(std::size_t index, double max_radius) const
 {
@@ -30,4 +30,4 @@ bool ProxyTouches::coveredByDeeperTouch(std::size_t index, double max_radius) co
   }
   return false;
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

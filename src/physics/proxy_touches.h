@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 struct ProxyTouch
 {
@@ -65,4 +65,4 @@ class ProxyTouches
  private:
   std::vector<ProxyTouch> touches_;
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

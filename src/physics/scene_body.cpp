@@ -6,7 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -67,4 +67,4 @@ void buildRigidBody(const BodyDescription& description, int index, SceneBody* bo
   body->rigid->setUserIndex(kKindBody);
   body->rigid->setUserIndex2(index);
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

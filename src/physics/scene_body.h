@@ -20,7 +20,7 @@
 #include <memory>
 #include <optional>
 
-namespace god_finger
+namespace god_finger::internal
 {
 struct SceneBody
 {
@@ -48,4 +48,4 @@ SceneBody makeSceneBody(const BodyDescription& description, double max_edge);
 // (Re)builds `body`'s placed shape and rigid body (scene index `index`, tagged kKindBody) at
 // its description's pose, with its mass, inertia and material; the caller adds it to the world.
 void buildRigidBody(const BodyDescription& description, int index, SceneBody* body);
-}  // namespace god_finger
+}  // namespace god_finger::internal

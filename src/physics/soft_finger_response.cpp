@@ -2,7 +2,7 @@
 // Bullet's sequential impulse solver adds spinning friction only when rolling friction is set).
 #include "contact_response.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -22,4 +22,4 @@ std::unique_ptr<ContactResponse> makeSoftFingerResponse()
 {
   return std::make_unique<SoftFingerResponse>();
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -2,7 +2,7 @@
 
 #include "bullet_helpers.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 Eigen::AlignedBox3d worldBounds(const Eigen::AlignedBox3d& scene_box, double margin)
 {
@@ -29,4 +29,4 @@ bool catchIfOutside(const Eigen::AlignedBox3d& bounds, const btTransform& start,
                                                                          world->getDispatcher());
   return true;
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -15,7 +15,7 @@
 
 #include <Eigen/Geometry>
 
-namespace god_finger
+namespace god_finger::internal
 {
 // `scene_box` grown by `margin` (m, > 0) on every side.
 Eigen::AlignedBox3d worldBounds(const Eigen::AlignedBox3d& scene_box, double margin);
@@ -25,4 +25,4 @@ Eigen::AlignedBox3d worldBounds(const Eigen::AlignedBox3d& scene_box, double mar
 // bounding box in `world` and drops its contact pairs; returns true. Else false, untouched.
 bool catchIfOutside(const Eigen::AlignedBox3d& bounds, const btTransform& start, btRigidBody* rigid,
                     btDiscreteDynamicsWorld* world);
-}  // namespace god_finger
+}  // namespace god_finger::internal

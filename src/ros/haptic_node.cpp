@@ -5,13 +5,12 @@
 #include "diagnostics.h"
 #include "god_finger/DeviceState.h"
 #include "god_finger/SetContactModel.h"
-#include "god_finger/support/input_error.h"
-#include "god_finger/haptics/orientation_path.h"
+#include "god_finger/haptics/interface_input.h"
 #include "god_finger/haptics/virtual_coupling.h"
-#include "god_finger/haptics/workspace_bound.h"
 #include "god_finger/haptics/workspace_mapping.h"
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/ros/conversions.h"
+#include "god_finger/support/input_error.h"
 #include "interface_parameters.h"
 #include "parameters.h"
 #include "queues.h"
@@ -67,14 +66,12 @@ struct HapticNode::Impl
   // machine delaying the proxy topic (tens of ms) does not cut the spring.
   double proxy_timeout = NodeParams().proxy_timeout;
   bool have_proxy = false;
-  std::uint32_t buttons = 0;
   int pending_model_switch = 0;
   bool pending_reset = false;
   ContactModel model = ContactModel::kGodFinger;  // the physics' initial one (~model)
   long rejected_states = 0;
   long rejected_orientations = 0;  // unusable orientations of device states (the position taken)
-  bool oriented = false;           // a state carried a usable orientation (an oriented finger)
-  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // world: the last usable one
+  InterfaceInput interface_input;  // under mutex: bound, map, presses, the last usable orientation
   long rejected_feedback = 0;
   long states = 0;
   long timer_ticks = 0;
@@ -94,42 +91,35 @@ struct HapticNode::Impl
 
   void onState(const god_finger::DeviceState::ConstPtr& state)
   {
-    const Eigen::Vector3d position = fromVector(state->position);
-    const Eigen::Vector3d velocity = fromVector(state->velocity);
-    if (!position.allFinite() || !velocity.allFinite())
+    InterfaceReading reading;
+    reading.position = fromVector(state->position);
+    reading.velocity = fromVector(state->velocity);
+    reading.buttons = state->buttons;
+    reading.has_orientation = state->has_orientation;
+    reading.orientation =
+        Eigen::Quaterniond(state->orientation.w, state->orientation.x, state->orientation.y, state->orientation.z);
+    // The pipeline both topologies share (haptics/interface_input.h): a non-finite state is
+    // rejected whole, the reading bounded to the workspace and mapped, presses detected, an
+    // unusable orientation counted and the last usable one kept.
+    InterfaceInputResult input;
+    Eigen::Quaterniond world_orientation = Eigen::Quaterniond::Identity();
+    bool oriented = false;
     {
       std::lock_guard<std::mutex> lock(mutex);
-      ++rejected_states;
-      ROS_WARN_THROTTLE(1.0, "haptic: rejected a non-finite device state (%ld so far)", rejected_states);
-      return;
+      input = interface_input.read(reading);
+      if (!input.accepted)
+      {
+        ++rejected_states;
+        ROS_WARN_THROTTLE(1.0, "haptic: rejected a non-finite device state (%ld so far)", rejected_states);
+        return;
+      }
+      rejected_orientations += input.orientation == OrientationInput::kRejected ? 1 : 0;
+      oriented = state->has_orientation && interface_input.oriented();
+      world_orientation = interface_input.worldOrientation();
     }
-    // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
-    const WorkspaceBound bound = boundToWorkspace(position, profile, mapping);
-    const Eigen::Vector3d world = mapping.toWorld(bound.position);
-    // An oriented finger's orientation, mapped into the world; one unusable (core/
-    // orientation_path.h usableOrientation) is counted and the last usable one kept, as the servo
-    // loop does.
-    const Eigen::Quaterniond* world_orientation = nullptr;
-    if (state->has_orientation)
-    {
-      const Eigen::Quaterniond q(state->orientation.w, state->orientation.x, state->orientation.y,
-                                 state->orientation.z);
-      std::lock_guard<std::mutex> lock(mutex);
-      if (usableOrientation(q))
-      {
-        orientation = mapping.orientationToWorld(q.normalized());
-        oriented = true;
-      }
-      else
-      {
-        ++rejected_orientations;
-      }
-      if (oriented)
-      {
-        world_orientation = &orientation;  // written by this callback only
-      }
-    }
-    const geometry_msgs::PoseStampedPtr pose = poseMessage(state->header.stamp, world, world_orientation);
+    const Eigen::Vector3d& world = input.target;
+    const geometry_msgs::PoseStampedPtr pose =
+        poseMessage(state->header.stamp, world, oriented ? &world_orientation : nullptr);
     pose_publisher.publish(pose);
     broadcaster.sendTransform(interfaceTransform(*pose, frame));
     if (!state->header.frame_id.empty() && state->header.frame_id != device_frame)
@@ -139,14 +129,12 @@ struct HapticNode::Impl
 
     std::lock_guard<std::mutex> lock(mutex);
     ++states;
-    wall_force = bound.wall_force;
-    const std::uint32_t pressed = state->buttons & ~buttons;
-    buttons = state->buttons;
-    if (pressed & 1u)
+    wall_force = input.wall_force;
+    if (input.pressed & kButtonCycleModel)
     {
       ++pending_model_switch;
     }
-    if (pressed & 2u)
+    if (input.pressed & kButtonReset)
     {
       pending_reset = true;
     }
@@ -156,8 +144,8 @@ struct HapticNode::Impl
     {
       // The hand feels the reaction of the force that pulls the proxy.
       const CouplingForce coupled =
-          couplingForce(coupling, world, mapping.velocityToWorld(velocity), proxy, proxy_velocity);
-      publishForce(state->header.stamp, -coupled.on_proxy, bound.wall_force);
+          couplingForce(coupling, world, mapping.velocityToWorld(reading.velocity), proxy, proxy_velocity);
+      publishForce(state->header.stamp, -coupled.on_proxy, input.wall_force);
     }
   }
 
@@ -291,6 +279,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   impl.mapping = WorkspaceMapping(config.mapping);
   impl.coupling = config.profile.coupling;
   impl.profile = config.profile;
+  impl.interface_input = InterfaceInput(impl.profile, impl.mapping);
   // Across processes or machines the hand's spring is rendered here, from the freshest device
   // position, so that no topic latency sits between the hand and its spring.
   impl.local_coupling = readBool(pnh, "local_coupling", true);

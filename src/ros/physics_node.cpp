@@ -3,14 +3,15 @@
 
 #include "diagnostics.h"
 #include "god_finger/ContactAreaArray.h"
-#include "god_finger/support/input_error.h"
-#include "god_finger/support/text_numbers.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/left_world_report.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/runtime/servo_command.h"
 #include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
 #include "interface_parameters.h"
 #include "parameters.h"
 #include "queues.h"
@@ -145,31 +146,19 @@ struct PhysicsNode::Impl
   bool apply(const ServoCommand& command, std::string* error)
   {
     std::lock_guard<std::mutex> lock(mutex);
-    switch (command.kind)
+    if (!isWorldCommand(command.kind))
     {
-      case ServoCommand::Kind::kReset:
-        world->resetAtInterfaces();
-        return true;
-      case ServoCommand::Kind::kSetContactModel:
-        world->setContactModel(command.model);
-        return true;
-      case ServoCommand::Kind::kSetPadSolver:
-        world->setPadSolver(command.pad_solver);
-        return true;
-      case ServoCommand::Kind::kSetContactParams:
-        try
-        {
-          world->setContactParams(command.contact);
-        }
-        catch (const InputError& bad)
-        {
-          *error = bad.what();
-          return false;
-        }
-        return true;
-      default:
-        *error = "the physics node has no device: it takes no force or hand commands";
-        return false;
+      *error = "the physics node has no device: it takes no force or hand commands";
+      return false;
+    }
+    try
+    {
+      return applyWorldCommand(command, world.get());
+    }
+    catch (const InputError& bad)
+    {
+      *error = bad.what();
+      return false;
     }
   }
 

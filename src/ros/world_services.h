@@ -15,7 +15,7 @@
 #include "god_finger/SetContactModel.h"
 #include "god_finger/physics/world_params.h"
 #include "god_finger/ros/reconfigure.h"
-#include "god_finger/runtime/servo_loop.h"
+#include "god_finger/runtime/servo_command.h"
 
 #include <ros/node_handle.h>
 #include <ros/service_server.h>

@@ -1,11 +1,11 @@
 #include "god_finger/runtime/servo_loop.h"
 #include "god_finger/runtime/multirate_render.h"
 
-#include "god_finger/support/input_error.h"
-#include "god_finger/haptics/orientation_path.h"
+#include "god_finger/haptics/interface_input.h"
 #include "god_finger/haptics/workspace_bound.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/support/input_error.h"
 
 #include <cmath>
 #include <sstream>
@@ -50,6 +50,17 @@ const ServoLoopParams& checked(const ServoLoopParams& params)
   }
   return params;
 }
+
+InterfaceReading interfaceReading(const DeviceReading& reading)
+{
+  InterfaceReading input;
+  input.position = reading.position;
+  input.velocity = reading.velocity;
+  input.buttons = reading.buttons;
+  input.has_orientation = reading.has_orientation;
+  input.orientation = reading.orientation;
+  return input;
+}
 }  // namespace
 
 ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInterface> interfaces,
@@ -58,7 +69,6 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
       interfaces_(std::move(interfaces)),
       params_(checked(params)),
       log_(std::move(log)),
-      buttons_(interfaces_.size(), 0u),
       readings_(interfaces_.size()),
       applied_(interfaces_.size(), Eigen::Vector3d::Zero()),
       applied_torque_(interfaces_.size(), Eigen::Vector3d::Zero()),
@@ -95,6 +105,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
       throw InputError("interface '" + interface.name + "' has no device");
     }
     guards_.emplace_back(interface.profile.coupling.max_force, interface.profile.guard);
+    inputs_.emplace_back(interface.profile, interface.mapping);
   }
   counters_.model = static_cast<int>(world_->contactModel());
   counters_.pad_solver = static_cast<int>(world_->params().pad_solver);
@@ -249,25 +260,7 @@ void ServoLoop::applyWorldCommands()
   while (commands_.tryPop(&command))
   {
     ++counters_.commands;
-    switch (command.kind)
-    {
-      case ServoCommand::Kind::kSetContactModel:
-        world_->setContactModel(command.model);
-        break;
-      case ServoCommand::Kind::kSetContactParams:
-        world_->setContactParams(command.contact);  // validated by post()
-        break;
-      case ServoCommand::Kind::kReset:
-        world_->resetAtInterfaces();
-        break;
-      case ServoCommand::Kind::kSetPadSolver:
-        world_->setPadSolver(command.pad_solver);  // validated by post()
-        break;
-      case ServoCommand::Kind::kHandTarget:  // never queued here (post() sends them to the haptic side)
-      case ServoCommand::Kind::kStopForce:
-      case ServoCommand::Kind::kResumeForce:
-        break;
-    }
+    applyWorldCommand(command, world_.get());  // validated by post(); others are never queued here
   }
   counters_.model = static_cast<int>(world_->contactModel());
   counters_.pad_solver = static_cast<int>(world_->params().pad_solver);
@@ -302,9 +295,6 @@ void ServoLoop::readDevices(double time)
     applied_torque_[i] = guards_[i].scale(time) * render.torque;
     const DeviceReading reading = interface.device->updateWrench(time, applied_[i], applied_torque_[i]);
     read_at_[i] = steadySeconds();
-    // The workspace bound: the proxy never leaves the workspace, the hand feels its wall.
-    const WorkspaceBound bound = boundToWorkspace(reading.position, interface.profile, interface.mapping);
-    const Eigen::Vector3d target = interface.mapping.toWorld(bound.position);
     render.previous_target = render.target;
     // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
     // non-finite device state): its buttons are not pressed, the world gets the last good
@@ -320,7 +310,7 @@ void ServoLoop::readDevices(double time)
       render.previous_target = render.target;
       render.wall_force.setZero();
     }
-    else if (target.allFinite() && reading.velocity.allFinite())
+    else if (const InterfaceInputResult input = inputs_[i].read(interfaceReading(reading)); input.accepted)
     {
       readings_[i] = reading;
       if (!was_tracked)
@@ -331,25 +321,22 @@ void ServoLoop::readDevices(double time)
         render.regrip_at = time;
       }
       const double s = softStartScale(time - render.regrip_at, guards_[i].params().soft_start);
-      render.target = render.regrip_from + s * (target - render.regrip_from);
-      render.wall_force = bound.wall_force;
-      const std::uint32_t pressed = reading.buttons & ~buttons_[i];
-      buttons_[i] = reading.buttons;
-      cycle_model = cycle_model || (pressed & 1u);
-      reset = reset || (pressed & 2u);
-      toggle_stop = toggle_stop || (pressed & 4u);
-      if (reading.has_orientation && usableOrientation(reading.orientation))
+      render.target = render.regrip_from + s * (input.target - render.regrip_from);
+      render.wall_force = input.wall_force;
+      cycle_model = cycle_model || (input.pressed & kButtonCycleModel);
+      reset = reset || (input.pressed & kButtonReset);
+      toggle_stop = toggle_stop || (input.pressed & kButtonStopForce);
+      if (input.orientation == OrientationInput::kUsable)
       {
-        render.device_orientation = reading.orientation.normalized();
-        frame_.orientations[i] = interface.mapping.orientationToWorld(render.device_orientation);
+        frame_.orientations[i] = inputs_[i].worldOrientation();
         frame_.oriented[i] = 1;
       }
-      else if (reading.has_orientation)
+      else if (input.orientation == OrientationInput::kRejected)
       {
         // Ignored, counted: the last good orientation stays, and the samples carry it.
         ++counters_.rejected_orientations;
-        readings_[i].has_orientation = frame_.oriented[i] != 0;
-        readings_[i].orientation = render.device_orientation;
+        readings_[i].has_orientation = inputs_[i].oriented();
+        readings_[i].orientation = inputs_[i].deviceOrientation();
       }
     }
     else

@@ -7,6 +7,7 @@
 
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
 
 #include <functional>
 #include <string>
@@ -40,21 +41,10 @@ struct TaskWorld
   {
     if (!(value > 0.0 && value <= largest))
     {
-      throw InputError(task + ": " + what + " " + std::to_string(value) + " m is outside (0, " + shortNumber(largest) +
+      throw InputError(task + ": " + what + " " + std::to_string(value) + " m is outside (0, " + jsonNumber(largest) +
                        "]");
     }
     return make_scene();
-  }
-  // 0.05 -> "0.05", 0.1 -> "0.1" (the ranges the tasks have always named).
-  static std::string shortNumber(double value)
-  {
-    std::string text = std::to_string(value);
-    text.erase(text.find_last_not_of('0') + 1);
-    if (!text.empty() && text.back() == '.')
-    {
-      text.pop_back();
-    }
-    return text;
   }
 };
 }  // namespace god_finger

@@ -10,6 +10,7 @@
 
 namespace god_finger
 {
+using namespace internal;  // the private pieces under test
 namespace
 {
 btVector3 v(double x, double y, double z)

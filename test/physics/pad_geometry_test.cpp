@@ -10,6 +10,7 @@
 
 namespace god_finger
 {
+using namespace internal;  // the private pieces under test
 namespace
 {
 WorldContactArea ring(const Eigen::Vector3d& centre, double radius, int count, double stretch_x = 1.0)

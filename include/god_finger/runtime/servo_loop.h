@@ -99,15 +99,17 @@
 // Units: s, m, N; device frame for device quantities, world for the rest.
 #pragma once
 
+#include "god_finger/devices/haptic_device.h"
 #include "god_finger/haptics/device_profile.h"
 #include "god_finger/haptics/force_guard.h"
+#include "god_finger/haptics/interface_input.h"
+#include "god_finger/haptics/workspace_mapping.h"
+#include "god_finger/physics/god_finger_world.h"
+#include "god_finger/runtime/multirate_render.h"
+#include "god_finger/runtime/servo_command.h"
 #include "god_finger/support/latest_value.h"
 #include "god_finger/support/parameter_table.h"
 #include "god_finger/support/spsc_queue.h"
-#include "god_finger/haptics/workspace_mapping.h"
-#include "god_finger/devices/haptic_device.h"
-#include "god_finger/physics/god_finger_world.h"
-#include "god_finger/runtime/multirate_render.h"
 
 #include <semaphore.h>
 #include <atomic>
@@ -190,30 +192,6 @@ struct ServoSample
   long physics_lag = 0;  // ticks from the targets of the last completed step to this reading (0: on time)
   // False: the device's source lost this finger (DeviceReading::tracked): the loop let it go.
   bool tracked = true;
-};
-
-struct ServoCommand
-{
-  enum class Kind
-  {
-    kSetContactModel,
-    kSetContactParams,
-    kReset,
-    kHandTarget,
-    kStopForce,    // every guard's output to zero at once (ForceGuard::stop), haptic side
-    kResumeForce,  // force back with the soft start (ForceGuard::resume)
-    kSetPadSolver,
-  };
-  Kind kind = Kind::kReset;
-  ContactModel model = ContactModel::kGodFinger;
-  ContactParams contact;                            // validated by post()
-  PadSolver pad_solver = WorldParams().pad_solver;  // kSetPadSolver, validated by post()
-  int interface = 0;
-  Eigen::Vector3d hand_target = Eigen::Vector3d::Zero();  // m, device frame
-  // kHandTarget: with an orientation too (HapticDevice::setHandPose; the finger frame in the
-  // device frame, unit), else the position alone (setHandTarget).
-  bool hand_oriented = false;
-  Eigen::Quaterniond hand_orientation = Eigen::Quaterniond::Identity();
 };
 
 // Counters since the loop began; readable from any thread.
@@ -346,7 +324,6 @@ class ServoLoop
     Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
     MultirateState multirate;  // the anchor, the last decided force, exact or not (multirate_render.h)
     Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // N m, device frame: renderable, the last decided
-    Eigen::Quaterniond device_orientation = Eigen::Quaterniond::Identity();  // the last usable, device frame
     Eigen::Vector3d wall_force =
         Eigen::Vector3d::Zero();  // N, device frame: the workspace wall (haptics/workspace_bound.h)
     bool stale = false;           // the last decision's
@@ -379,8 +356,8 @@ class ServoLoop
   Log log_;
   std::vector<ForceGuard> guards_;
   std::vector<CouplingProfile> couplings_;  // the world's, copied for the haptic side
-  std::vector<std::uint32_t> buttons_;
-  std::vector<DeviceReading> readings_;  // the last finite reading of each device
+  std::vector<InterfaceInput> inputs_;      // one per interface: bound, map, presses, orientation
+  std::vector<DeviceReading> readings_;     // the last finite reading of each device
   std::vector<Eigen::Vector3d> applied_;
   std::vector<Eigen::Vector3d> applied_torque_;  // N m, device frame, given at this tick
   std::vector<double> read_at_;                  // wall-clock seconds of each reading

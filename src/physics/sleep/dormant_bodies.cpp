@@ -1,6 +1,6 @@
 #include "sleep/dormant_bodies.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 DormantBodies::~DormantBodies()
 {
@@ -30,4 +30,4 @@ void DormantBodies::add(int body, const btVector3& min, const btVector3& max, in
     next_[body] = body;
   }
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

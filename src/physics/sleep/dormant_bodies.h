@@ -19,7 +19,7 @@
 
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 class DormantBodies
 {
@@ -102,4 +102,4 @@ class DormantBodies
   std::vector<int> next_;            // the next body of the group (a ring); -1 when awake
   std::vector<int> hits_;
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -4,7 +4,7 @@
 
 #include <new>
 
-namespace god_finger
+namespace god_finger::internal
 {
 HookedWorld::HookedWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
                          btCollisionConfiguration* configuration)
@@ -67,4 +67,4 @@ void HookedWorld::updateActivationState(btScalar time_step)
     }
   }
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -10,7 +10,7 @@
 
 #include <functional>
 
-namespace god_finger
+namespace god_finger::internal
 {
 class HookedWorld : public btDiscreteDynamicsWorld
 {
@@ -32,4 +32,4 @@ class HookedWorld : public btDiscreteDynamicsWorld
   // velocity.
   void updateActivationState(btScalar time_step) override;
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

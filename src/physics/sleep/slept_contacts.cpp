@@ -2,7 +2,7 @@
 
 #include "bullet_helpers.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -94,4 +94,4 @@ void SleptContacts::restore(btCollisionDispatcher* dispatcher)
   }
   woken_.clear();
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -12,7 +12,7 @@
 
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 class SleptContacts
 {
@@ -40,4 +40,4 @@ class SleptContacts
   std::vector<std::vector<SavedContact>> saved_;  // by body
   std::vector<int> woken_;                        // this step, until their contacts are back
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -4,7 +4,7 @@
 #include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
-namespace god_finger
+namespace god_finger::internal
 {
 void TouchingIslands::updateActivationState(btCollisionWorld* world, btDispatcher* dispatcher)
 {
@@ -33,4 +33,4 @@ void TouchingIslands::updateActivationState(btCollisionWorld* world, btDispatche
     }
   }
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -15,11 +15,11 @@
 
 #include <BulletCollision/CollisionDispatch/btSimulationIslandManager.h>
 
-namespace god_finger
+namespace god_finger::internal
 {
 class TouchingIslands : public btSimulationIslandManager
 {
  public:
   void updateActivationState(btCollisionWorld* world, btDispatcher* dispatcher) override;
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -5,7 +5,7 @@
 #include "solver/support_pass.h"
 #include "solver/torsional_rows.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 btScalar ContactSolver::solveGroup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds,
                                    int num_manifolds, btTypedConstraint** constraints, int num_constraints,
@@ -95,4 +95,4 @@ btScalar ContactSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bo
   }
   return residual;
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -22,7 +22,7 @@
 
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 class ContactSolver : public btSequentialImpulseConstraintSolver
 {
@@ -74,4 +74,4 @@ class ContactSolver : public btSequentialImpulseConstraintSolver
   int proxy_points_ = 0;
   int rows_ = 0;
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

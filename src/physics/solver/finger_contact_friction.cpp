@@ -4,7 +4,7 @@
 
 #include <BulletCollision/CollisionDispatch/btManifoldResult.h>
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -26,4 +26,4 @@ void useFingerRollingFriction()
 {
   gCalculateCombinedRollingFrictionCallback = &fingerRollingFriction;
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

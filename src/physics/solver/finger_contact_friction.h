@@ -14,7 +14,7 @@
 // to call concurrently with a step; GodFingerWorld's constructor installs it.
 #pragma once
 
-namespace god_finger
+namespace god_finger::internal
 {
 void useFingerRollingFriction();
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -4,7 +4,7 @@
 #include "god_finger/contact/sub_god_object_distance.h"
 #include "solver/pad_geometry.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -117,4 +117,4 @@ void PadConstraints::recordImpulses(long step)
   }
   pads_.clear();
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

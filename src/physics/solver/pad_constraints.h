@@ -33,7 +33,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 // One pad in this step's solve: what the solver reads and writes for its torsional rows.
 struct StepPad
@@ -71,4 +71,4 @@ class PadConstraints
  private:
   std::vector<StepPad> pads_;
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace god_finger
+namespace god_finger::internal
 {
 PadGeometry padGeometry(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const WorldContactArea& area)
 {
@@ -60,4 +60,4 @@ PadGeometry padGeometry(const Eigen::Vector3d& centre, const Eigen::Vector3d& no
   pad.support_radius = rim_sum / count;
   return pad;
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

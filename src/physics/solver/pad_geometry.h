@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-namespace god_finger
+namespace god_finger::internal
 {
 struct PadGeometry
 {
@@ -22,4 +22,4 @@ struct PadGeometry
 // walk order (a star-shaped polygon around `centre`). Fewer than 3 sub-god-objects: a point
 // (levers zero, centre of pressure at `centre`).
 PadGeometry padGeometry(const Eigen::Vector3d& centre, const Eigen::Vector3d& normal, const WorldContactArea& area);
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -29,7 +29,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace god_finger
+namespace god_finger::internal
 {
 struct PadState
 {
@@ -58,4 +58,4 @@ inline Eigen::Matrix3d objectTurnSinceContact(const Eigen::Isometry3d& object_to
   pad->contact_step = step;
   return pad->object_at_contact * object_to_world.linear().transpose();
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -62,4 +62,4 @@ void finishPadTorsionalRow(const btSolverConstraint& contact, btSolverBody* a, b
     pad->state->twist_slipped = true;
   }
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -15,7 +15,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
-namespace god_finger
+namespace god_finger::internal
 {
 // Before the iterations: one row of `pad` between solver bodies `a` and `b`, whose contact row
 // (the normal row) is `contact`.
@@ -26,4 +26,4 @@ void preparePadTorsionalRow(const StepPad& pad, const btSolverConstraint& contac
 // impulse into the pad's state, and slip detection.
 void finishPadTorsionalRow(const btSolverConstraint& contact, btSolverBody* a, btSolverBody* b, btSolverConstraint* row,
                            StepPad* pad);
-}  // namespace god_finger
+}  // namespace god_finger::internal

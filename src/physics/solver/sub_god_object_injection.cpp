@@ -3,7 +3,7 @@
 #include "bullet_helpers.h"
 #include "god_finger/contact/sub_god_object_distance.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 void SubGodObjectInjector::inject(const AreaSolverInput& c, const Proxy& proxy, long step)
 {
@@ -105,4 +105,4 @@ void SubGodObjectInjector::release()
   }
   manifolds_.clear();
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

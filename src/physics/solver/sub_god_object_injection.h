@@ -19,7 +19,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 class SubGodObjectInjector
 {
@@ -52,4 +52,4 @@ class SubGodObjectInjector
   std::vector<btPersistentManifold*> manifolds_;
   std::vector<InjectedPoint> points_;
 };
-}  // namespace god_finger
+}  // namespace god_finger::internal

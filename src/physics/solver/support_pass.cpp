@@ -2,7 +2,7 @@
 
 #include "bullet_helpers.h"
 
-namespace god_finger
+namespace god_finger::internal
 {
 namespace
 {
@@ -124,4 +124,4 @@ void supportPass(btAlignedObjectArray<btSolverBody>* solver_bodies, btAlignedObj
                                proxy_is_a ? row.m_angularComponentA : row.m_angularComponentB, delta);
   }
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

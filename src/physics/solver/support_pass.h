@@ -22,11 +22,11 @@
 
 #include <vector>
 
-namespace god_finger
+namespace god_finger::internal
 {
 // One pass over the solve's `bodies` and normal rows `contacts` (Bullet's pools), solving a row
 // against its lower limit with `solve_row_lower_limit` (Bullet's row solver); `supported` is
 // scratch (per solver body).
 void supportPass(btAlignedObjectArray<btSolverBody>* bodies, btAlignedObjectArray<btSolverConstraint>* contacts,
                  btSingleConstraintRowSolver solve_row_lower_limit, std::vector<char>* supported);
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace god_finger
+namespace god_finger::internal
 {
 void dropRowsThatCannotTurn(btAlignedObjectArray<btSolverConstraint>* rows)
 {
@@ -42,4 +42,4 @@ void addExternalTorques(const btSolverBody& a, const btSolverBody& b, btSolverCo
                             (b.m_originalBody ? row->m_relpos2CrossNormal.dot(b.m_externalTorqueImpulse) : 0.0);
   row->m_rhs -= external * row->m_jacDiagABInv;
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -18,7 +18,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
-namespace god_finger
+namespace god_finger::internal
 {
 // Drops the rows of `rows` without an effective mass (neither body can turn: a proxy on a static
 // object). Kept with a zero effective mass, Bullet's row solve would return 0 / 0 as its
@@ -32,4 +32,4 @@ void scaleToLever(btSolverConstraint* row);
 // Adds this step's external torques on the row's bodies `a` and `b` (which Bullet leaves out of
 // these rows' velocity) to the row's target.
 void addExternalTorques(const btSolverBody& a, const btSolverBody& b, btSolverConstraint* row);
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace god_finger
+namespace god_finger::internal
 {
 void anchorIfSticking(const WarmStart& warm, const btCollisionObject& proxy_object, const btCollisionObject& object,
                       double area_radius, btVector3* on_object, btVector3* on_proxy)
@@ -20,4 +20,4 @@ void anchorIfSticking(const WarmStart& warm, const btCollisionObject& proxy_obje
     *on_proxy = anchored_proxy;
   }
 }
-}  // namespace god_finger
+}  // namespace god_finger::internal

@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-namespace god_finger
+namespace god_finger::internal
 {
 // The impulses the solver gave the point (to warm-start the next step) and its friction anchor,
 // the material points of the pad and of the object it held when it began to stick (the friction
@@ -31,4 +31,4 @@ struct WarmStart
 // area, of radius `area_radius` m, moved on).
 void anchorIfSticking(const WarmStart& warm, const btCollisionObject& proxy_object, const btCollisionObject& object,
                       double area_radius, btVector3* on_object, btVector3* on_proxy);
-}  // namespace god_finger
+}  // namespace god_finger::internal
