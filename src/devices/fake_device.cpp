@@ -1,5 +1,6 @@
 #include "god_finger/devices/fake_device.h"
 
+#include "god_finger/support/denormals.h"
 #include "god_finger/support/input_error.h"
 
 #include <algorithm>
@@ -167,6 +168,10 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
     position_ += dt * velocity_;
     remaining -= dt;
   }
+  // An idle handle settles on its hand exponentially: a component settling on 0 would walk into
+  // the subnormal range (support/denormals.h) after about a minute.
+  flushTiny(&position_);
+  flushTiny(&velocity_);
   last_time_ = time;
   DeviceReading reading;
   reading.position = position_;

@@ -38,6 +38,7 @@ class PoseSource : public HandSource
       DeviceReading& reading = (*readings)[i];
       const FingerPose& pose = poses[i];
       reading.tracked = pose.stamp >= 0.0 && now - pose.stamp <= params_.pose_timeout;
+      reading.missing = !reading.tracked && pose.missing;
       if (reading.tracked)
       {
         last_[i] = pose.position;
@@ -116,11 +117,16 @@ void setPoseOrientation(double x, double y, double z, double w, FingerPose* pose
 
 void PoseFeed::write(const std::vector<FingerPose>& poses)
 {
-  for (std::size_t i = 0; i < latest_.size() && i < poses.size(); ++i)
+  for (std::size_t i = 0; i < latest_.size(); ++i)
   {
-    if (poses[i].position.allFinite() && std::isfinite(poses[i].stamp))
+    if (i >= poses.size())
+    {
+      latest_[i].missing = true;
+    }
+    else if (poses[i].position.allFinite() && std::isfinite(poses[i].stamp))
     {
       latest_[i] = poses[i];
+      latest_[i].missing = false;
     }
   }
   box_.back() = latest_;  // same length: no allocation

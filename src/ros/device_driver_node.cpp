@@ -4,14 +4,15 @@
 #include "bag_track.h"
 #include "diagnostics.h"
 #include "god_finger/DeviceState.h"
-#include "god_finger/haptics/force_guard.h"
-#include "god_finger/support/input_error.h"
-#include "god_finger/support/spsc_queue.h"
-#include "god_finger/support/text_numbers.h"
 #include "god_finger/devices/device_registry.h"
+#include "god_finger/haptics/force_guard.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/support/denormals.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/spsc_queue.h"
+#include "god_finger/support/text_numbers.h"
 #include "hand_marker.h"
 #include "interface_parameters.h"
 #include "parameters.h"
@@ -58,6 +59,8 @@ constexpr std::size_t kSampleQueueTicks = 1000;
 // publishes the diagnostics; ROS callbacks (force commands, stop_force) command the guard.
 struct DeviceDriverNode::Impl
 {
+  // The node's own name (a nodelet's, not its manager's): the diagnostics' statuses start with it.
+  std::string node_name;
   std::unique_ptr<HapticDevice> device;
   std::unique_ptr<ForceGuard> guard;
   double period = 1e-3;
@@ -160,7 +163,7 @@ struct DeviceDriverNode::Impl
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus status;
-    status.name = ros::this_node::getName() + ": " + device->name() + " device";
+    status.name = node_name + ": " + device->name() + " device";
     status.hardware_id = device->name();
     status.level =
         rate < 0.95 / period ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
@@ -203,7 +206,8 @@ struct DeviceDriverNode::Impl
 
   void loop()
   {
-    requestRealTimePriority(realtime_priority, ros::this_node::getName() + " (device loop)");
+    flushDenormalsInThisThread();  // support/denormals.h
+    requestRealTimePriority(realtime_priority, node_name + " (device loop)");
     FixedRateSchedule schedule(period, steadySeconds());
     while (running && ros::ok())
     {
@@ -316,6 +320,7 @@ struct DeviceDriverNode::Impl
 DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
 {
   Impl& impl = *impl_;
+  impl.node_name = pnh.getNamespace();  // "/servo", "/physics", "/finger/haptic"
   // The loop's timing rows (servoLoopParameterTable()): SCHED_FIFO priority 0 is normal
   // scheduling; the loop sleeps every tick, so it never holds a core.
   const ServoLoopParams timing = readLoopParams(pnh);

@@ -37,6 +37,8 @@ namespace
 
 struct HapticNode::Impl
 {
+  // The node's own name (a nodelet's, not its manager's): the diagnostics' statuses start with it.
+  std::string node_name;
   ros::NodeHandle nh;
   WorkspaceMapping mapping;
   bool local_coupling = false;
@@ -216,7 +218,7 @@ struct HapticNode::Impl
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus status;
-    status.name = ros::this_node::getName() + ": haptic";
+    status.name = node_name + ": haptic";
     status.hardware_id = frame;
     status.level = diagnostic_msgs::DiagnosticStatus::OK;
     status.message = local_coupling ? "local coupling" : "forwarding feedback";
@@ -270,6 +272,7 @@ struct HapticNode::Impl
 HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
 {
   Impl& impl = *impl_;
+  impl.node_name = pnh.getNamespace();  // "/servo", "/physics", "/finger/haptic"
   impl.nh = nh;
   // The interface's namespace holds its profile and mapping (interface_parameters.h).
   const RosParameterSource private_params(pnh);

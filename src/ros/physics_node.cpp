@@ -10,6 +10,7 @@
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_command.h"
 #include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/denormals.h"
 #include "god_finger/support/input_error.h"
 #include "god_finger/support/text_numbers.h"
 #include "interface_parameters.h"
@@ -39,6 +40,8 @@ namespace god_finger
 
 struct PhysicsNode::Impl
 {
+  // The node's own name (a nodelet's, not its manager's): the diagnostics' statuses start with it.
+  std::string node_name;
   struct Interface
   {
     std::string name;
@@ -295,7 +298,7 @@ struct PhysicsNode::Impl
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus status;
-    status.name = ros::this_node::getName() + ": physics loop";
+    status.name = node_name + ": physics loop";
     status.hardware_id = "god_finger";
     const double rate = steps / seconds;
     status.level =
@@ -321,6 +324,7 @@ struct PhysicsNode::Impl
   // deadline (runtime/fixed_rate_schedule.h), is an overrun.
   void loop()
   {
+    flushDenormalsInThisThread();             // support/denormals.h
     using Clock = std::chrono::steady_clock;  // CLOCK_MONOTONIC, as steadySeconds()
     const double period_s = world->params().time_step;
     const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(period_s));
@@ -371,6 +375,7 @@ struct PhysicsNode::Impl
 PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
 {
   Impl& impl = *impl_;
+  impl.node_name = pnh.getNamespace();  // "/servo", "/physics", "/finger/haptic"
   impl.nh = nh;
   impl.pnh = pnh;
   const WorldParams params = readWorldParams(pnh);

@@ -5,15 +5,15 @@
 #include "device_frame.h"
 #include "diagnostics.h"
 #include "god_finger/DeviceState.h"
-#include "god_finger/support/input_error.h"
-#include "god_finger/support/text_numbers.h"
 #include "god_finger/devices/device_registry.h"
-#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/left_world_report.h"
 #include "god_finger/runtime/loop_statistics.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_loop.h"
+#include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
 #include "hand_marker.h"
 #include "interface_parameters.h"
 #include "parameters.h"
@@ -42,6 +42,8 @@ namespace god_finger
 {
 struct ServoNode::Impl
 {
+  // The node's own name (a nodelet's, not its manager's): the diagnostics' statuses start with it.
+  std::string node_name;
   struct Interface
   {
     std::string name;
@@ -55,6 +57,7 @@ struct ServoNode::Impl
     std::unique_ptr<interactive_markers::InteractiveMarkerServer> hand_marker;
     std::uint32_t published = 0;
     bool tracked = true;    // the last sample's: false, its source lost the finger (let go)
+    bool missing = false;   // the last sample's: untracked because the source's message lacked it
     long lost_samples = 0;  // samples untracked since the last diagnostics
   };
 
@@ -123,6 +126,7 @@ struct ServoNode::Impl
     Interface& interface = interfaces[sample.interface];
     const ros::Time stamp = stampOf(sample);
     interface.tracked = sample.tracked;
+    interface.missing = sample.missing;
     interface.lost_samples += sample.tracked ? 0 : 1;
     if (timing && sample.interface == 0)
     {
@@ -147,7 +151,10 @@ struct ServoNode::Impl
     geometry_msgs::Vector3StampedPtr force(new geometry_msgs::Vector3Stamped);
     force->header.stamp = stamp;
     force->header.frame_id = interface.device_frame;
-    force->vector = toVector(sample.commanded_force);
+    // The force the device is given (after the force guard: 0 while /stop_force holds it,
+    // ramped by the soft start and the watchdog), as device/state's applied_force: what one
+    // echoes is what the hand feels. The coupling's ask is on `feedback` (world frame).
+    force->vector = toVector(sample.applied_force);
     interface.force.publish(force);
 
     const geometry_msgs::PoseStampedPtr pose = poseMessage(
@@ -176,7 +183,7 @@ struct ServoNode::Impl
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus status;
-    status.name = ros::this_node::getName() + ": servo loop";
+    status.name = node_name + ": servo loop";
     status.hardware_id = "god_finger";
     const bool slow = !sim_time && summary.rate_hz < 0.95 * loop->params().rate;
     status.level = counters.failed ? diagnostic_msgs::DiagnosticStatus::ERROR
@@ -219,12 +226,13 @@ struct ServoNode::Impl
       if (!interface.tracked || interface.lost_samples > 0)
       {
         diagnostic_msgs::DiagnosticStatus lost;
-        lost.name = ros::this_node::getName() + ": finger " + interface.name;
+        lost.name = node_name + ": finger " + interface.name;
         lost.hardware_id = "god_finger";
         lost.level =
             interface.tracked ? diagnostic_msgs::DiagnosticStatus::OK : diagnostic_msgs::DiagnosticStatus::WARN;
-        lost.message = interface.tracked ? "tracked again"
-                                         : "pose stream lost or late (no pose newer than its pose_timeout): let go";
+        lost.message = interface.tracked   ? "tracked again"
+                       : interface.missing ? "missing from the pose array (it has fewer poses than fingers): let go"
+                                           : "pose stream lost or late (no pose newer than its pose_timeout): let go";
         addValue(&lost, "tracked", interface.tracked ? "true" : "false");
         addValue(&lost, "untracked_samples", std::to_string(interface.lost_samples));
         array.status.push_back(lost);
@@ -310,6 +318,7 @@ struct ServoNode::Impl
 ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
 {
   Impl& impl = *impl_;
+  impl.node_name = pnh.getNamespace();  // "/servo", "/physics", "/finger/haptic"
   ServoSetup setup = makeServoSetup(nh, pnh, [](const std::string& message) { ROS_WARN("%s", message.c_str()); });
   impl.loop = std::move(setup.loop);
   impl.names = setup.names;

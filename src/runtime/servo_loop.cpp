@@ -5,6 +5,7 @@
 #include "god_finger/haptics/workspace_bound.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/support/denormals.h"
 #include "god_finger/support/input_error.h"
 
 #include <cmath>
@@ -301,6 +302,7 @@ void ServoLoop::readDevices(double time)
     // target, and the samples (device/state) carry the last good reading.
     const bool was_tracked = render.tracked;
     render.tracked = reading.tracked;
+    render.missing = reading.missing;
     if (!reading.tracked)
     {
       // A finger its source lost (devices/hand_device.h) lets go: its target follows its proxy
@@ -524,6 +526,7 @@ void ServoLoop::decide(long tick, double time, double period_us)
     sample->stale = render.stale;
     sample->physics_lag = lag;
     sample->tracked = render.tracked;
+    sample->missing = render.missing;
     samples_.commit();
   }
 }
@@ -571,6 +574,7 @@ void ServoLoop::tick(double time)
 
 void ServoLoop::runPhysics()
 {
+  flushDenormalsInThisThread();  // support/denormals.h
   const int priority = params_.realtime_priority > 1 ? params_.realtime_priority - 1 : 0;
   setRealTimePriority(priority);
   StepResult* out = nullptr;
@@ -611,6 +615,7 @@ void ServoLoop::runPhysics()
 
 void ServoLoop::run()
 {
+  flushDenormalsInThisThread();  // support/denormals.h: this thread and, on simulated time, its physics
   if (!params_.simulated_time)
   {
     physics_running_ = true;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace god_finger
 {
 namespace
@@ -32,6 +34,34 @@ TEST(FakeDevice, FollowsItsScriptedHand)
   }
   EXPECT_NEAR(reading.position.x(), 0.1, 1e-5);
   EXPECT_NEAR(reading.velocity.norm(), 0.0, 1e-4);
+}
+
+// An idle handle settling on a hand at x = 0 (here: after a 1 cm step) decays toward 0
+// exponentially; the device ends the decay at exactly 0 instead of walking into the subnormal
+// range (support/denormals.h), where x86 arithmetic is many times slower. This thread does not
+// flush subnormals, so the device alone must keep them out.
+TEST(FakeDevice, AnIdleHandleSettlesOnZeroWithoutSubnormals)
+{
+  FakeDevice device(FakeDeviceParams{},
+                    WaypointPath({{0.0, Eigen::Vector3d(0.01, 0, 0.1)}, {0.05, Eigen::Vector3d(0, 0, 0.1)}}));
+  long subnormal = 0;
+  double settled_at = -1.0;
+  for (int i = 0; i <= 600000 && settled_at < 0.0; ++i)  // up to 10 min at 1 kHz
+  {
+    const DeviceReading reading = device.update(i * 1e-3, Eigen::Vector3d::Zero());
+    for (int k = 0; k < 3; ++k)
+    {
+      subnormal += std::fpclassify(reading.position[k]) == FP_SUBNORMAL ? 1 : 0;
+      subnormal += std::fpclassify(reading.velocity[k]) == FP_SUBNORMAL ? 1 : 0;
+    }
+    if (i > 100 && reading.position.x() == 0.0 && reading.velocity.x() == 0.0)
+    {
+      settled_at = i * 1e-3;
+    }
+  }
+  EXPECT_EQ(subnormal, 0);
+  ASSERT_GT(settled_at, 0.0) << "the handle never settled on exactly 0";
+  std::printf("idle handle: settled on exactly 0 after %.1f s, no subnormal\n", settled_at);
 }
 
 TEST(FakeDevice, ConstantForceDeflectsTheHandleByForceOverGripStiffness)

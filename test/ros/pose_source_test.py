@@ -57,6 +57,9 @@ class PoseSourceLetsGo(RosTestSupport, unittest.TestCase):
         self.wait_for(lambda: "middle" in self.lost and self.lost["middle"].level == DiagnosticStatus.WARN, 10,
                       "a diagnostic naming the lost finger")
         self.assertIn("let go", self.lost["middle"].message)
+        # Named for why: the array now has two poses for three fingers.
+        self.assertIn("missing from the pose array", self.lost["middle"].message)
+        self.assertTrue(self.lost["middle"].name.startswith("/servo: finger hand/"), self.lost["middle"].name)
         print("lost finger: %s: %s; thumb %.2f N, index %.2f N, middle %.4f N" %
               (self.lost["middle"].name, self.lost["middle"].message, self.force["thumb"], self.force["index"],
                self.force["middle"]))

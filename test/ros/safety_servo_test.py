@@ -15,7 +15,7 @@ from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import PointStamped, PoseStamped, WrenchStamped
 from god_finger.msg import DeviceState
 
-STATUS = ": servo loop"  # after the node's name (the nodelet manager's)
+STATUS = "/servo: servo loop"  # the servo nodelet's own name, then what it reports on
 
 
 def finite(*vectors):

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """rostest: /stop_force (std_srvs/SetBool), called as a user calls it (`rosservice call
 /stop_force true`), while the hand presses the ball: the force applied to the device
-(device/state applied_force) goes to zero and stays exactly zero for a second of ticks while
-the coupling still asks for the press (device/force); after `false` it ramps back in over the
-device's soft start (0.5 s for the fake device), never at once. Waits on conditions with
+(device/state applied_force, and device/force, the topic a user echoes) goes to zero and stays
+exactly zero for a second of ticks while the coupling still asks for the press (feedback); after
+`false` it ramps back in over the device's soft start (0.5 s for the fake device), never at once. Waits on conditions with
 deadlines, never sleeps to synchronise."""
 import math
 import sys
@@ -12,7 +12,7 @@ import unittest
 import rospy
 import rostest
 from ros_test_support import RosTestSupport
-from geometry_msgs.msg import Vector3Stamped
+from geometry_msgs.msg import Vector3Stamped, WrenchStamped
 from god_finger.msg import DeviceState
 
 PRESSING = 0.5  # N: the press on the ball is well above it
@@ -27,12 +27,15 @@ class StopForce(RosTestSupport, unittest.TestCase):
     def setUp(self):
         rospy.init_node("stop_force_test")
         self.applied = []  # (stamp s, |applied_force| N) of every device state
-        self.commanded = []  # |commanded force| N
+        self.given = []  # |device/force| N: the force the device is given
+        self.asked = []  # |feedback force| N: what the coupling asks of the hand
         rospy.Subscriber("/finger/device/state", DeviceState,
                          lambda m: self.applied.append((m.header.stamp.to_sec(), norm(m.applied_force))),
                          queue_size=5000)
         rospy.Subscriber("/finger/device/force", Vector3Stamped,
-                         lambda m: self.commanded.append(norm(m.vector)), queue_size=5000)
+                         lambda m: self.given.append(norm(m.vector)), queue_size=5000)
+        rospy.Subscriber("/finger/feedback", WrenchStamped,
+                         lambda m: self.asked.append(norm(m.wrench.force)), queue_size=5000)
 
     def pressing(self):
         return len(self.applied) > 200 and all(f > PRESSING for _, f in self.applied[-200:])
@@ -50,8 +53,11 @@ class StopForce(RosTestSupport, unittest.TestCase):
         self.wait_for(lambda: len(self.applied) >= stopped + 1000, 10.0, "a second of ticks after the stop")
         held = self.applied[stopped:stopped + 1000]
         self.assertEqual([f for _, f in held if f != 0.0], [], "force applied while stopped")
-        asked = self.commanded[-500:]
+        asked = self.asked[-500:]
         self.assertGreater(min(asked), PRESSING, "the coupling still asks for the press while stopped")
+        given = self.given[-500:]
+        self.assertEqual(len(given), 500)
+        self.assertEqual([f for f in given if f != 0.0], [], "device/force shows a force while stopped")
 
         resume_from = len(self.applied)
         answer = self.run_command(["rosservice", "call", "/stop_force", "false"])

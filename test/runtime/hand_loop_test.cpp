@@ -2,12 +2,12 @@
 // one interface each in one tick; a finger whose pose stream is lost (non-finite poses, fewer
 // poses, stale stamps) lets go after pose_timeout, its samples say so, and the others go on
 // pressing; the fake hand grasps and lifts the mug.
-#include "god_finger/haptics/force_guard.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/hand_device.h"
 #include "god_finger/devices/pose_source.h"
-#include "god_finger/scene/urdf_scene.h"
+#include "god_finger/haptics/force_guard.h"
 #include "god_finger/runtime/servo_loop.h"
+#include "god_finger/scene/urdf_scene.h"
 
 #include <gtest/gtest.h>
 
@@ -140,6 +140,8 @@ void expectOnlyMiddleLetsGo(bool fewer_poses)
   EXPECT_GT(hand.last[2].user_force.z(), 1.0);
   hand.runUntil(lost_at + 0.3, lose);
   EXPECT_FALSE(hand.last[2].tracked);
+  // Named for why: missing from the array, or its poses stopped (here: non-finite ones).
+  EXPECT_EQ(hand.last[2].missing, fewer_poses);
   EXPECT_LT(hand.last[2].user_force.norm(), 0.01);  // let go: no coupling force
   EXPECT_GT(hand.loop->counters().untracked_readings.load(), 0);
   for (int i = 0; i < 2; ++i)  // the others go on
@@ -150,6 +152,7 @@ void expectOnlyMiddleLetsGo(bool fewer_poses)
   // Seen again: it presses again (its target ramped back in over the soft start).
   hand.runUntil(lost_at + 0.4 + ForceGuardParams().soft_start, [&hand](double t) { hand.writeAll(t, 3); });
   EXPECT_TRUE(hand.last[2].tracked);
+  EXPECT_FALSE(hand.last[2].missing);
   EXPECT_GT(hand.last[2].user_force.z(), 1.0);
 }
 

@@ -32,6 +32,9 @@ struct DeviceReading
   // False: the source lost this finger (a pose source's stream lost or late,
   // devices/hand_device.h); the position is then not the finger's, and the loop lets it go.
   bool tracked = true;
+  // Untracked because the source's newest message lacked this finger (a PoseArray with fewer
+  // poses than fingers), not because its poses stopped or came late.
+  bool missing = false;
   // A backend that knows the finger's orientation (an Omni/Touch stylus, a fake script with
   // orientations, a pose source) sets has_orientation and `orientation`: the finger frame
   // (physics/oriented_finger.h: z out of the pulp, x towards the tip) in the device frame, a

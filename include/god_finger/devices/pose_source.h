@@ -21,10 +21,10 @@
 // read() is real-time safe (no allocation, no lock).
 #pragma once
 
+#include "god_finger/devices/hand_device.h"
 #include "god_finger/support/latest_value.h"
 #include "god_finger/support/parameter_source.h"
 #include "god_finger/support/parameter_table.h"
-#include "god_finger/devices/hand_device.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -60,6 +60,7 @@ struct FingerPose
 {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m, device frame
   double stamp = -1.0;                                 // s, the source's clock; < 0: none
+  bool missing = false;                                // PoseFeed: the newest write had no entry for this finger
   bool has_orientation = false;
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // finger frame, device frame
 };
@@ -76,7 +77,8 @@ class PoseFeed
   {
     return latest_.size();
   }
-  // Writer: the newest poses; entries beyond `poses` or not finite keep their last value.
+  // Writer: the newest poses; entries beyond `poses` or not finite keep their last value (one
+  // beyond `poses` is marked missing until a pose for it comes).
   void write(const std::vector<FingerPose>& poses);
   // Reader (the loop): the newest poses written.
   const std::vector<FingerPose>& read();

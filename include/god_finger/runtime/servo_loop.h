@@ -192,6 +192,7 @@ struct ServoSample
   long physics_lag = 0;  // ticks from the targets of the last completed step to this reading (0: on time)
   // False: the device's source lost this finger (DeviceReading::tracked): the loop let it go.
   bool tracked = true;
+  bool missing = false;  // untracked because the source's newest message lacked it (DeviceReading::missing)
 };
 
 // Counters since the loop began; readable from any thread.
@@ -328,6 +329,7 @@ class ServoLoop
         Eigen::Vector3d::Zero();  // N, device frame: the workspace wall (haptics/workspace_bound.h)
     bool stale = false;           // the last decision's
     bool tracked = true;          // the last reading's (DeviceReading::tracked)
+    bool missing = false;         // the last reading's (DeviceReading::missing)
     // A finger tracked again: its target ramps from regrip_from (m, world: where it let go) to
     // the tracked pose with the force guard's soft start from regrip_at (s, loop time).
     Eigen::Vector3d regrip_from = Eigen::Vector3d::Zero();
