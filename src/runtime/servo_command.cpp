@@ -4,19 +4,8 @@ namespace god_finger
 {
 bool isWorldCommand(ServoCommand::Kind kind)
 {
-  switch (kind)
-  {
-    case ServoCommand::Kind::kSetContactModel:
-    case ServoCommand::Kind::kSetContactParams:
-    case ServoCommand::Kind::kReset:
-    case ServoCommand::Kind::kSetPadSolver:
-      return true;
-    case ServoCommand::Kind::kHandTarget:
-    case ServoCommand::Kind::kStopForce:
-    case ServoCommand::Kind::kResumeForce:
-      return false;
-  }
-  return false;
+  return kind == ServoCommand::Kind::kSetContactModel || kind == ServoCommand::Kind::kSetContactParams ||
+         kind == ServoCommand::Kind::kReset || kind == ServoCommand::Kind::kSetPadSolver;
 }
 
 bool applyWorldCommand(const ServoCommand& command, GodFingerWorld* world)
@@ -35,11 +24,8 @@ bool applyWorldCommand(const ServoCommand& command, GodFingerWorld* world)
     case ServoCommand::Kind::kSetPadSolver:
       world->setPadSolver(command.pad_solver);
       return true;
-    case ServoCommand::Kind::kHandTarget:
-    case ServoCommand::Kind::kStopForce:
-    case ServoCommand::Kind::kResumeForce:
+    default:  // not a world command (isWorldCommand above names the same four)
       return false;
   }
-  return false;
 }
 }  // namespace god_finger

@@ -61,10 +61,11 @@ class InterfaceInput
 
   InterfaceInputResult read(const InterfaceReading& reading);
 
+  // A usable orientation has been read.
   bool oriented() const
   {
     return oriented_;
-  }  // a usable orientation has been read
+  }
   // The last usable orientation, normalised: device frame and world frame.
   const Eigen::Quaterniond& deviceOrientation() const
   {
@@ -73,10 +74,6 @@ class InterfaceInput
   const Eigen::Quaterniond& worldOrientation() const
   {
     return world_orientation_;
-  }
-  const WorkspaceMapping& mapping() const
-  {
-    return mapping_;
   }
 
  private:
