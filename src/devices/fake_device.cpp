@@ -169,7 +169,7 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
     remaining -= dt;
   }
   // An idle handle settles on its hand exponentially: a component settling on 0 would walk into
-  // the subnormal range (support/denormals.h) after about a minute.
+  // the subnormal range (support/denormals.h) within seconds, and stick at its smallest value.
   flushTiny(&position_);
   flushTiny(&velocity_);
   last_time_ = time;

@@ -42,7 +42,7 @@ struct HapticNode::Impl
   ros::NodeHandle nh;
   WorkspaceMapping mapping;
   bool local_coupling = false;
-  DeviceProfile profile;                                 // workspace_radius and the coupling, for the workspace bound
+  DeviceProfile profile;  // torque_axes here; interface_input holds a copy for the workspace bound
   Eigen::Vector3d wall_force = Eigen::Vector3d::Zero();  // N, device frame, under mutex: the last state's wall
   CouplingProfile coupling;  // the device's profile: the physics pulls the proxy with the same
   std::string frame;
