@@ -21,6 +21,10 @@ const ParameterTable<FakeDeviceParams>& fakeDeviceParameterTable()
                  [](P& p) -> double& { return p.grip_stiffness; }),
       realRow<P>("grip_damping", "N s/m", closed(0.0, 1e4), "damping of the scripted hand's grip",
                  [](P& p) -> double& { return p.grip_damping; }),
+      realRow<P>("repeat_return", "s", closed(0.0, 60.0),
+                 "0 plays the script once; else the hand goes back to the script's start in this time once it "
+                 "ends, and plays it again",
+                 [](P& p) -> double& { return p.repeat_return; }),
   };
   return table;
 }
@@ -94,6 +98,23 @@ FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand, std::o
   }
 }
 
+Eigen::Vector3d FakeDevice::handAt(double t) const
+{
+  const double end = hand_.endTime();
+  if (params_.repeat_return <= 0.0 || t <= end)
+  {
+    return hand_.at(t);
+  }
+  const double period = end + params_.repeat_return;
+  const double in_period = std::fmod(t, period);
+  if (in_period <= end)
+  {
+    return hand_.at(in_period);
+  }
+  const double back = (in_period - end) / params_.repeat_return;  // [0, 1]: from the end to the start
+  return (1.0 - back) * hand_.at(end) + back * hand_.at(0.0);
+}
+
 void FakeDevice::start() {}
 
 bool FakeDevice::setHandTarget(const Eigen::Vector3d& position)
@@ -158,9 +179,9 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
     t += dt;
     // A dragged marker jumps between mouse events: the hand moves there, and its velocity is
     // left to the grip's damping rather than differentiated from the jumps.
-    const Eigen::Vector3d hand = has_target ? target : hand_.at(t);
+    const Eigen::Vector3d hand = has_target ? target : handAt(t);
     const Eigen::Vector3d hand_velocity =
-        has_target ? Eigen::Vector3d::Zero() : Eigen::Vector3d((hand_.at(t) - hand_.at(t - dt)) / dt);
+        has_target ? Eigen::Vector3d::Zero() : Eigen::Vector3d((handAt(t) - handAt(t - dt)) / dt);
     const Eigen::Vector3d total = applied + params_.grip_stiffness * (hand - position_) +
                                   params_.grip_damping * (hand_velocity - velocity_) -
                                   params_.handle_damping * velocity_;

@@ -346,6 +346,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   {
     HapticDevice* hand = impl.device.get();
     impl.marker_server = makeHandMarker(nh, impl.frame, readVector(device_params, "start", Eigen::Vector3d(0, 0, 0.12)),
+                                        config.profile.workspace_radius,
                                         [hand](const HandMarkerPose& target)
                                         {
                                           if (target.rotated)

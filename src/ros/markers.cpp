@@ -39,6 +39,38 @@ void setPose(visualization_msgs::Marker* m, const Eigen::Isometry3d& pose)
   m->pose.orientation.w = q.w();
 }
 
+// The rest of the finger around god-object `index`: a translucent finger body behind the tip
+// (finger -x) and the nail on its back (finger -z), so that a look shows which way the pulp
+// faces and how the finger is rolled. A 3-DOF finger is drawn pulp down, along world x.
+void appendFingertip(const InterfaceState& state, double proxy_radius, int index, const ros::Time& stamp,
+                     visualization_msgs::MarkerArray* markers)
+{
+  const Eigen::Quaterniond finger =
+      state.oriented ? state.proxy_orientation.normalized() : Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0);
+  const Eigen::Vector3d tip = state.proxy_position;
+  const double r = proxy_radius;
+  Eigen::Isometry3d body_pose = Eigen::Isometry3d::Identity();
+  body_pose.translation() = tip + finger * Eigen::Vector3d(-2.0 * r, 0.0, 0.0);
+  // rviz's cylinder runs along its z: turn it onto the finger's x.
+  body_pose.linear() = (finger * Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitY())).toRotationMatrix();
+  visualization_msgs::Marker body = marker("fingertips", 2 * index, visualization_msgs::Marker::CYLINDER, stamp);
+  setPose(&body, body_pose);
+  body.scale.x = body.scale.y = 1.8 * r;
+  body.scale.z = 4.0 * r;
+  setColor(&body, 0.95f, 0.8f, 0.7f, 0.45f);
+  markers->markers.push_back(body);
+  Eigen::Isometry3d nail_pose = Eigen::Isometry3d::Identity();
+  nail_pose.translation() = tip + finger * Eigen::Vector3d(-0.6 * r, 0.0, -0.95 * r);
+  nail_pose.linear() = finger.toRotationMatrix();
+  visualization_msgs::Marker nail = marker("fingertips", 2 * index + 1, visualization_msgs::Marker::CUBE, stamp);
+  setPose(&nail, nail_pose);
+  nail.scale.x = 1.4 * r;
+  nail.scale.y = 1.2 * r;
+  nail.scale.z = 0.3 * r;
+  setColor(&nail, 1.0f, 0.95f, 0.95f);
+  markers->markers.push_back(nail);
+}
+
 visualization_msgs::Marker deleteAll(const std::string& ns, const ros::Time& stamp)
 {
   visualization_msgs::Marker m = marker(ns, 0, visualization_msgs::Marker::CUBE, stamp);
@@ -52,6 +84,7 @@ void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world
 {
   // rviz's DELETEALL clears every namespace: it goes first, and everything is sent again.
   markers->markers.push_back(deleteAll("", stamp));
+  int moving_index = 0;  // among the free bodies
   for (std::size_t i = 0; i < world.bodies.size() && i < scene.bodies.size(); ++i)
   {
     const BodyDescription& body = scene.bodies[i];
@@ -82,16 +115,47 @@ void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world
         m.scale.z = body.geometry.scale.z();
         break;
     }
-    if (body.is_static)
-    {
-      setColor(&m, 0.55f, 0.45f, 0.35f);
-    }
-    else
-    {
-      setColor(&m, 0.6f, 0.7f, 0.85f, 0.9f);
-    }
+    const BodyColour colour = bodyColour(body, moving_index);
+    setColor(&m, colour.r, colour.g, colour.b, colour.a);
+    moving_index += body.is_static ? 0 : 1;
     markers->markers.push_back(m);
   }
+}
+
+bool isSupport(const BodyDescription& body)
+{
+  if (!body.is_static)
+  {
+    return false;
+  }
+  for (const char* word : {"table", "ground", "floor", "room", "shelf"})
+  {
+    if (body.name.find(word) != std::string::npos)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+BodyColour bodyColour(const BodyDescription& body, int moving_index)
+{
+  if (isSupport(body))
+  {
+    return {0.55f, 0.45f, 0.35f, 1.0f};  // wood
+  }
+  if (body.is_static)
+  {
+    return {0.42f, 0.47f, 0.55f, 1.0f};  // slate: a fixed part (a holder, a rail)
+  }
+  // Light tints far from the fingers' yellow areas, the blue god-objects and the orange
+  // sub-god-objects; the first is the demo's light blue ball.
+  static const BodyColour kPalette[] = {
+      {0.6f, 0.7f, 0.85f, 0.9f}, {0.95f, 0.55f, 0.5f, 0.9f}, {0.55f, 0.85f, 0.6f, 0.9f}, {0.75f, 0.6f, 0.95f, 0.9f},
+      {0.45f, 0.8f, 0.8f, 0.9f}, {0.95f, 0.6f, 0.8f, 0.9f},  {0.8f, 0.85f, 0.5f, 0.9f},  {0.85f, 0.85f, 0.88f, 0.9f},
+  };
+  const int n = static_cast<int>(sizeof(kPalette) / sizeof(kPalette[0]));
+  return kPalette[((moving_index % n) + n) % n];
 }
 
 FingerColour fingerColour(int interface)
@@ -120,6 +184,7 @@ void appendInteractionMarkers(const WorldSnapshot& world, double proxy_radius, c
     proxy.scale.x = proxy.scale.y = proxy.scale.z = 2.0 * proxy_radius;
     setColor(&proxy, 0.1f, 0.3f, 1.0f);
     markers->markers.push_back(proxy);
+    appendFingertip(state, proxy_radius, static_cast<int>(i), stamp, markers);
 
     visualization_msgs::Marker device = marker("interfaces", i, visualization_msgs::Marker::SPHERE, stamp);
     device.pose.position = toPoint(state.interface_position);

@@ -1,7 +1,10 @@
-// rviz markers of a physics world, all in `world`: scene bodies (namespace "bodies"), each
+// rviz markers of a physics world, all in `world`: scene bodies (namespace "bodies": the table
+// in wood, other fixed parts in slate, each free body in its own tint, bodyColour()), each
 // contact area as a filled polygon in its finger's colour ("contact_areas"; the first finger's
 // yellow, fingerColour()), its sub-god-objects
-// ("sub_god_objects"), god-objects ("god_objects"), interface points ("interfaces"),
+// ("sub_god_objects"), god-objects ("god_objects") with the rest of their fingertip, a
+// translucent finger body and a nail on the back ("fingertips": which way the pulp faces),
+// interface points ("interfaces"),
 // coupling springs ("couplings") and the force on the hand ("forces", 1 cm per newton).
 #pragma once
 
@@ -25,6 +28,15 @@ struct FingerColour
   float r, g, b;
 };
 FingerColour fingerColour(int interface);
+
+// A body's colour (RGBA in [0, 1]): a support (a fixed body named table, ground, floor, room or
+// shelf) in wood, any other fixed body in slate, free body number `moving_index` (counted among
+// the free bodies, in scene order) from a palette of 8 light tints, the first light blue.
+struct BodyColour
+{
+  float r, g, b, a;
+};
+BodyColour bodyColour(const BodyDescription& body, int moving_index);
 
 // A DELETEALL (rviz clears every namespace with it), then the bodies at their current poses.
 // Call first, then appendInteractionMarkers: the whole picture is sent at each publish.

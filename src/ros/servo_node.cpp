@@ -345,6 +345,7 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
       ServoLoop* loop = impl.loop.get();
       const int index = static_cast<int>(i);
       interface.hand_marker = makeHandMarker(interface_nh, interface.device_frame, setup.hand_starts[i],
+                                             impl.loop->interfaces()[i].profile.workspace_radius,
                                              [loop, index](const HandMarkerPose& target)
                                              {
                                                ServoCommand command;

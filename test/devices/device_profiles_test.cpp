@@ -1,11 +1,11 @@
 // The shipped device profiles (config/devices/*.yaml) set only rows of the one profile table
 // (haptics/device_profile.h; the fake device's own rows for fake.yaml), each in its range, and the
 // README shows the fake device's table as generated.
-#include "god_finger/haptics/device_profile.h"
-#include "god_finger/support/input_error.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/devices/falcon_device.h"
 #include "god_finger/devices/omni_device.h"
+#include "god_finger/haptics/device_profile.h"
+#include "god_finger/support/input_error.h"
 
 #include "docs_text.h"
 
@@ -51,7 +51,9 @@ TEST(DeviceProfiles, ShippedDeviceProfilesSetOnlyRowsOfTheProfileTable)
       }
       for (const auto& row : fakeDeviceParameterTable())
       {
-        known = known || (match[1] == row.name && entry.path().filename() == "fake.yaml");
+        // The fake handle's own rows: its profile and the interactive handle's.
+        known = known || (match[1] == row.name &&
+                          (entry.path().filename() == "fake.yaml" || entry.path().filename() == "interactive.yaml"));
       }
       EXPECT_TRUE(known) << entry.path() << ": '" << match[1]
                          << "' is no row of deviceProfileTable() (or, for the fake device, of its own table)";
@@ -65,7 +67,7 @@ TEST(DeviceProfiles, ShippedDeviceProfilesSetOnlyRowsOfTheProfileTable)
     EXPECT_NO_THROW(readFakeDeviceParams(source)) << entry.path();
     ++files;
   }
-  EXPECT_EQ(files, 3);
+  EXPECT_EQ(files, 4);
 }
 
 TEST(DeviceProfiles, TheOmniAndTheFalconRenderForceOnly)

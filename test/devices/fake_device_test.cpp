@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace god_finger
 {
@@ -34,6 +36,44 @@ TEST(FakeDevice, FollowsItsScriptedHand)
   }
   EXPECT_NEAR(reading.position.x(), 0.1, 1e-5);
   EXPECT_NEAR(reading.velocity.norm(), 0.0, 1e-4);
+}
+
+// With repeat_return the script plays again and again: the hand goes back from the script's
+// last waypoint to its first in repeat_return s, then follows the script as the first time.
+// Without it (the default) the hand stays at the last waypoint.
+TEST(FakeDevice, RepeatsItsScriptWhenAskedAndOtherwiseHoldsTheEnd)
+{
+  const WaypointPath script({{0.0, Eigen::Vector3d(0, 0, 0.1)}, {1.0, Eigen::Vector3d(0.1, 0, 0.1)}});
+  FakeDeviceParams repeating;
+  repeating.repeat_return = 0.5;
+  FakeDevice once(FakeDeviceParams{}, script);
+  FakeDevice again(repeating, script);
+  std::vector<Eigen::Vector3d> first_play;
+  double largest_step = 0.0;  // m per 1 ms update: no jump when the script wraps
+  Eigen::Vector3d last = again.update(0.0, Eigen::Vector3d::Zero()).position;
+  once.update(0.0, Eigen::Vector3d::Zero());
+  DeviceReading held;
+  for (int i = 1; i <= 4500; ++i)  // 4.5 s: three plays of 1.5 s
+  {
+    const DeviceReading reading = again.update(i * 1e-3, Eigen::Vector3d::Zero());
+    held = once.update(i * 1e-3, Eigen::Vector3d::Zero());
+    largest_step = std::max(largest_step, (reading.position - last).norm());
+    last = reading.position;
+    if (i == 1000)
+    {
+      EXPECT_NEAR(reading.position.x(), 0.1, 2e-3) << "the first play reaches the script's end";
+    }
+    if (i == 1500 || i == 3000 || i == 4500)
+    {
+      EXPECT_NEAR(reading.position.x(), 0.0, 2e-3) << "back at the script's start at " << i * 1e-3 << " s";
+    }
+    if (i == 2500 || i == 4000)
+    {
+      EXPECT_NEAR(reading.position.x(), 0.1, 2e-3) << "the script's end again at " << i * 1e-3 << " s";
+    }
+  }
+  EXPECT_NEAR(held.position.x(), 0.1, 1e-5) << "without repeat_return the hand holds the last waypoint";
+  EXPECT_LT(largest_step, 0.3e-3) << "the handle moves at most 0.2 m/s (the return's speed) plus its lag";
 }
 
 // An idle handle settling on a hand at x = 0 (here: after a 1 cm step) decays toward 0

@@ -109,6 +109,31 @@ class Interactive(unittest.TestCase):
         # Across the finger (y), not along it.
         self.assertLess(abs(self.area_point[0] - before[0]), 3e-4)
 
+    def test_the_handle_stays_in_the_workspace_and_goes_back_to_its_start(self):
+        """A wild drag (rviz's shift-drag along the view axis) 1 m away leaves the finger on the
+        workspace's edge (the interactive profile's 0.25 m), and the marker's menu entry "back
+        to the start" brings it back to its start (0, 0, 0.12)."""
+        self.wait_for(lambda: self.state is not None, 30.0, "a device state")
+        self.wait_for(lambda: self.drag.get_num_connections() > 0, 10.0, "the marker server")
+        radius = rospy.get_param("/finger/workspace_radius")
+        self.assertEqual(radius, 0.25)
+        self.drag_to(0.0, 1.0, 0.12, 0.5)
+        distance = lambda: math.sqrt(self.state.x ** 2 + self.state.y ** 2 + self.state.z ** 2)
+        self.wait_for(lambda: abs(distance() - radius) < 1e-3, 10.0,
+                      lambda: "the finger on the workspace's edge (%.4f m from its centre)" % distance())
+        print("interactive: dragged 1 m away, the finger stopped %.4f m from the workspace centre" % distance())
+        menu = InteractiveMarkerFeedback()
+        menu.header.frame_id = "finger_device"
+        menu.client_id = "/rviz/InteractiveMarkers"
+        menu.marker_name = "hand"
+        menu.event_type = InteractiveMarkerFeedback.MENU_SELECT
+        menu.menu_entry_id = 1  # "back to the start", the marker's only entry
+        menu.pose.position.y = 1.0
+        menu.pose.orientation.w = 1.0
+        self.drag.publish(menu)
+        self.wait_for(lambda: self.handle_error(0.0, 0.0, 0.12) < 1e-3, 10.0,
+                      lambda: "the finger back at its start (%.2f mm away)" % (1e3 * self.handle_error(0.0, 0.0, 0.12)))
+
 
 if __name__ == "__main__":
     rostest.rosrun("god_finger", "interactive", Interactive, sys.argv)

@@ -10,9 +10,18 @@ from diagnostic_msgs.msg import DiagnosticArray
 from visualization_msgs.msg import InteractiveMarkerFeedback
 
 
+def handle_height(publisher):
+    """How far (m) the interactive handle floats above its finger: the marker server's
+    parameter NAME/device_marker/handle_height, NAME/device_marker/feedback being `publisher`'s
+    topic (the marker's pose is the handle's, the finger is that far below it)."""
+    return rospy.get_param(publisher.resolved_name[:-len("feedback")] + "handle_height")
+
+
 def drag_marker(publisher, start, x, y, z, seconds):
-    """Drags the interactive device's marker (device frame, m) from `start` (a point) to (x, y,
-    z) in 20 mouse events over `seconds`, as rviz sends them on NAME/device_marker/feedback."""
+    """Drags the interactive device's marker so that its finger goes from `start` (a point,
+    device frame, m) to (x, y, z) in 20 mouse events over `seconds`, as rviz sends them on
+    NAME/device_marker/feedback (the handle's poses: the finger's raised by handle_height)."""
+    above = handle_height(publisher)
     for k in range(1, 21):
         feedback = InteractiveMarkerFeedback()
         feedback.header.frame_id = "finger_device"
@@ -22,7 +31,7 @@ def drag_marker(publisher, start, x, y, z, seconds):
         s = k / 20.0
         feedback.pose.position.x = start.x + s * (x - start.x)
         feedback.pose.position.y = start.y + s * (y - start.y)
-        feedback.pose.position.z = start.z + s * (z - start.z)
+        feedback.pose.position.z = start.z + s * (z - start.z) + above
         feedback.pose.orientation.w = 1.0
         publisher.publish(feedback)
         # Paces the drag (mouse events spread over `seconds`, as a hand drags), not a
@@ -31,9 +40,10 @@ def drag_marker(publisher, start, x, y, z, seconds):
 
 
 def turn_marker(publisher, position, angle, seconds):
-    """Turns the interactive device's marker, held at `position` (a point, device frame), from
-    rest to `angle` (rad) about its x (the finger's own axis: its ring rotate_x) in 20 mouse
-    events over `seconds`, as rviz sends them."""
+    """Turns the interactive device's marker, its finger held at `position` (a point, device
+    frame), from rest to `angle` (rad) about its x (the finger's own axis: its ring rotate_x) in
+    20 mouse events over `seconds`, as rviz sends them."""
+    above = handle_height(publisher)
     for k in range(1, 21):
         feedback = InteractiveMarkerFeedback()
         feedback.header.frame_id = "finger_device"
@@ -43,7 +53,7 @@ def turn_marker(publisher, position, angle, seconds):
         feedback.event_type = InteractiveMarkerFeedback.POSE_UPDATE
         feedback.pose.position.x = position.x
         feedback.pose.position.y = position.y
-        feedback.pose.position.z = position.z
+        feedback.pose.position.z = position.z + above
         half = 0.5 * angle * k / 20.0
         feedback.pose.orientation.w = math.cos(half)
         feedback.pose.orientation.x = math.sin(half)

@@ -11,11 +11,11 @@
 // update() calls, split into sub-steps of at most 1 ms. Deterministic for identical calls.
 #pragma once
 
+#include "god_finger/devices/haptic_device.h"
 #include "god_finger/haptics/orientation_path.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/support/parameter_source.h"
 #include "god_finger/support/parameter_table.h"
-#include "god_finger/haptics/waypoint_path.h"
-#include "god_finger/devices/haptic_device.h"
 
 #include <mutex>
 #include <optional>
@@ -28,8 +28,12 @@ struct FakeDeviceParams
   double handle_damping = 0.5;   // N s/m: the mechanism's friction
   double grip_stiffness = 2000;  // N/m: how firmly the hand holds the handle
   double grip_damping = 20;      // N s/m
+  // s: 0 plays the script once; else, once it ends, the hand goes back to the script's first
+  // waypoint in this time (a straight line) and plays it again, for ever.
+  double repeat_return = 0.0;
 };
-// handle_mass, handle_damping, grip_stiffness, grip_damping: units, ranges, meanings.
+// handle_mass, handle_damping, grip_stiffness, grip_damping, repeat_return: units, ranges,
+// meanings.
 const ParameterTable<FakeDeviceParams>& fakeDeviceParameterTable();
 std::string validate(const FakeDeviceParams& params);
 // Every row `source` sets (defaults above); InputError on a bad one.
@@ -87,6 +91,9 @@ class FakeDevice : public HapticDevice
   }
 
  private:
+  // The scripted hand's position at script time `t` (s), repeating with params_.repeat_return.
+  Eigen::Vector3d handAt(double t) const;
+
   FakeDeviceParams params_;
   WaypointPath hand_;
   std::optional<OrientationPath> orientation_;

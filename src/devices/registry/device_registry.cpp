@@ -1,6 +1,5 @@
 #include "god_finger/devices/device_registry.h"
 
-#include "god_finger/support/input_error.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/falcon_device.h"
@@ -8,6 +7,7 @@
 #include "god_finger/devices/pose_source.h"
 #include "god_finger/devices/replay_device.h"
 #include "god_finger/devices/vendor_io.h"
+#include "god_finger/support/input_error.h"
 
 #include <chrono>
 #include <thread>
@@ -184,12 +184,12 @@ std::unique_ptr<HapticDevice> makeOmni(const DeviceContext& context)
 
 const std::vector<DeviceBackend>& deviceBackends()
 {
-  // replay and interactive are simulated handles: the fake device's profile; so are the hands,
-  // whose coupling pulls proxies only.
+  // replay is a simulated handle: the fake device's profile; so are the hands, whose coupling
+  // pulls proxies only. interactive is the fake handle with a workspace the views show.
   static const std::vector<DeviceBackend> backends = {
       // name, profile, simulated, hand_target, factory
       {"fake", "fake", true, false, makeFake},
-      {"interactive", "fake", true, true, makeInteractive},
+      {"interactive", "interactive", true, true, makeInteractive},
       {"replay", "fake", true, false, makeReplay},
       {"falcon", "falcon", false, false, makeFalcon},
       {"omni", "omni", false, false, makeOmni},
