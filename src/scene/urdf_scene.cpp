@@ -1,8 +1,8 @@
 #include "god_finger/scene/urdf_scene.h"
 
+#include "god_finger/scene/scene_budget.h"
 #include "god_finger/support/input_error.h"
 #include "god_finger/support/memory_budget.h"
-#include "god_finger/scene/scene_budget.h"
 
 #include <tinyxml2.h>
 #include <urdf_parser/urdf_parser.h>
@@ -78,38 +78,29 @@ class SceneParser
 
   std::string resolveMesh(const std::string& link, const std::string& filename) const
   {
-    std::string path;
-    const std::string package_prefix = "package://";
-    const std::string file_prefix = "file://";
-    if (filename.rfind(package_prefix, 0) == 0)
+    std::string package;
+    const std::string path = resolveFileName(filename, base_directory_, packages_, &package);
+    if (path.empty())
     {
-      const std::string rest = filename.substr(package_prefix.size());
-      const std::size_t slash = rest.find('/');
-      const std::string package = rest.substr(0, slash);
-      const std::string root = packages_ ? packages_(package) : findPackageAbove(package, base_directory_);
-      if (root.empty())
-      {
-        fail(link, "mesh '" + filename + "': ROS package '" + package + "' not found");
-      }
-      path = root + (slash == std::string::npos ? "" : rest.substr(slash));
-    }
-    else if (filename.rfind(file_prefix, 0) == 0)
-    {
-      path = filename.substr(file_prefix.size());
-    }
-    else if (!filename.empty() && filename[0] == '/')
-    {
-      path = filename;
-    }
-    else
-    {
-      path = base_directory_ + "/" + filename;
+      fail(link, "mesh '" + filename + "': ROS package '" + package + "' not found");
     }
     if (!fileExists(path))
     {
       fail(link, "mesh '" + filename + "' not found (looked for '" + path + "')");
     }
     return path;
+  }
+
+  // Sizes a scene can hold: a body of a hand's world, between a grain and a room.
+  void checkSize(const std::string& link, const std::string& what, double metres) const
+  {
+    if (metres < kMinBodySize || metres > kMaxBodySize)
+    {
+      std::ostringstream message;
+      message << what << " " << metres << " m is outside the sizes a scene can hold, [" << kMinBodySize << ", "
+              << kMaxBodySize << "] m (a unit mix-up? URDF lengths are metres)";
+      fail(link, message.str());
+    }
   }
 
   Geometry geometry(const std::string& link, const urdf::GeometrySharedPtr& geometry) const
@@ -130,6 +121,8 @@ class SceneParser
         {
           fail(link, "box size must be positive and finite");
         }
+        checkSize(link, "box size", result.size.maxCoeff());
+        checkSize(link, "box size", result.size.minCoeff());
         break;
       }
       case urdf::Geometry::SPHERE:
@@ -140,6 +133,7 @@ class SceneParser
         {
           fail(link, "sphere radius must be positive and finite");
         }
+        checkSize(link, "sphere radius", result.radius);
         break;
       }
       case urdf::Geometry::CYLINDER:
@@ -153,6 +147,8 @@ class SceneParser
         {
           fail(link, "cylinder radius and length must be positive and finite");
         }
+        checkSize(link, "cylinder radius", result.radius);
+        checkSize(link, "cylinder length", result.length);
         break;
       }
       case urdf::Geometry::MESH:
@@ -197,6 +193,85 @@ class SceneParser
       fail(link.name, message.str());
     }
     body->inertia = inertia;
+  }
+
+  // urdfdom drops an element whose numbers it cannot read (a NaN scale, an infinite mass) and
+  // goes on, so its absence would be blamed ("has no <collision>"): the numbers are checked
+  // here first, naming the link, the element and the text.
+  void checkNumbers(const std::string& xml) const
+  {
+    tinyxml2::XMLDocument document;
+    if (document.Parse(xml.c_str()) != tinyxml2::XML_SUCCESS)
+    {
+      return;  // urdfdom reports the syntax error
+    }
+    const tinyxml2::XMLElement* robot = document.FirstChildElement("robot");
+    for (const tinyxml2::XMLElement* link = robot ? robot->FirstChildElement("link") : nullptr; link != nullptr;
+         link = link->NextSiblingElement("link"))
+    {
+      const char* name = link->Attribute("name");
+      const std::string link_name = name ? name : "";
+      const tinyxml2::XMLElement* inertial = link->FirstChildElement("inertial");
+      const tinyxml2::XMLElement* mass = inertial ? inertial->FirstChildElement("mass") : nullptr;
+      if (mass != nullptr)
+      {
+        checkFinite(link_name, "<inertial><mass value>", mass->Attribute("value"), 1);
+      }
+      const tinyxml2::XMLElement* inertia = inertial ? inertial->FirstChildElement("inertia") : nullptr;
+      for (const char* component : {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"})
+      {
+        if (inertia != nullptr && inertia->Attribute(component) != nullptr)
+        {
+          checkFinite(link_name, std::string("<inertia ") + component + ">", inertia->Attribute(component), 1);
+        }
+      }
+      for (const char* part : {"collision", "visual"})
+      {
+        for (const tinyxml2::XMLElement* element = link->FirstChildElement(part); element != nullptr;
+             element = element->NextSiblingElement(part))
+        {
+          const tinyxml2::XMLElement* geometry = element->FirstChildElement("geometry");
+          const tinyxml2::XMLElement* mesh = geometry ? geometry->FirstChildElement("mesh") : nullptr;
+          if (mesh != nullptr && mesh->Attribute("scale") != nullptr)
+          {
+            checkFinite(link_name, std::string("<") + part + "> <mesh scale>", mesh->Attribute("scale"), 3);
+          }
+          const tinyxml2::XMLElement* origin = element->FirstChildElement("origin");
+          for (const char* attribute : {"xyz", "rpy"})
+          {
+            if (origin != nullptr && origin->Attribute(attribute) != nullptr)
+            {
+              checkFinite(link_name, std::string("<") + part + "><origin " + attribute + ">",
+                          origin->Attribute(attribute), 3);
+            }
+          }
+        }
+      }
+    }
+  }
+
+  // `text` must be `count` finite numbers separated by blanks.
+  void checkFinite(const std::string& link, const std::string& what, const char* text, int count) const
+  {
+    std::istringstream stream(text ? text : "");
+    int read = 0;
+    std::string token;
+    while (stream >> token)
+    {
+      char* end = nullptr;
+      const double value = std::strtod(token.c_str(), &end);
+      if (end == token.c_str() || *end != '\0' || !std::isfinite(value))
+      {
+        read = -1;
+        break;
+      }
+      ++read;
+    }
+    if (read != count)
+    {
+      fail(link, what + " '" + (text ? text : "") + "' is not " +
+                     (count == 1 ? "a finite number" : std::to_string(count) + " finite numbers"));
+    }
   }
 
   std::map<std::string, ContactMaterial> materials(const std::string& xml) const
@@ -250,6 +325,7 @@ class SceneParser
 
   SceneDescription parse(const std::string& xml) const
   {
+    checkNumbers(xml);
     const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
     if (!model)
     {
@@ -265,15 +341,24 @@ class SceneParser
     scene.name = model->getName();
     std::vector<urdf::LinkSharedPtr> links;
     model->getLinks(links);
+    // An object file as PyBullet and Gazebo ship them: the root link is the body.
+    const bool object_file = static_cast<bool>(root->collision);
     for (const urdf::LinkSharedPtr& link : links)
     {
       if (link->name == root->name)
       {
-        if (link->collision)
+        if (object_file)
         {
-          fail(link->name, "the root link stands for the world and must have no <collision>");
+          scene.bodies.push_back(objectBody(*link, link_materials));
         }
         continue;
+      }
+      if (object_file)
+      {
+        fail(link->name, "joined to the object's root link '" + root->name +
+                             "': an object file here is one rigid link (several links, as a compound or an "
+                             "articulated object, are not supported yet); give each part as an object of a scene "
+                             "list");
       }
       const urdf::JointConstSharedPtr joint = link->parent_joint;
       if (!joint || joint->parent_link_name != root->name)
@@ -284,34 +369,20 @@ class SceneParser
       {
         fail(link->name, "joint '" + joint->name + "' must be 'fixed' (static body) or 'floating' (free body)");
       }
-      if (!link->collision)
-      {
-        fail(link->name, "has no <collision>");
-      }
-      if (link->collision_array.size() > 1)
-      {
-        fail(link->name, "has more than one <collision>; split it into links");
-      }
-      BodyDescription body;
-      body.name = link->name;
+      BodyDescription body = linkBody(*link, link_materials);
       body.pose = toIsometry(joint->parent_to_joint_origin_transform);
-      body.collision_origin = toIsometry(link->collision->origin);
-      body.geometry = geometry(link->name, link->collision->geometry);
       body.is_static = joint->type == urdf::Joint::FIXED;
       if (!body.is_static)
       {
         inertial(*link, &body);
       }
-      const auto material = link_materials.find(link->name);
-      if (material != link_materials.end())
-      {
-        body.material = material->second;
-      }
       scene.bodies.push_back(body);
     }
     if (scene.bodies.empty())
     {
-      fail("", "no bodies (links with a <collision> joined to the root)");
+      fail("",
+           "no bodies (links with a <collision> joined to the root, or a root link with a <collision>: an "
+           "object file)");
     }
     if (scene.bodies.size() > static_cast<std::size_t>(kMaxBodies))
     {
@@ -321,12 +392,77 @@ class SceneParser
     return scene;
   }
 
+  // A link's geometry and material (its pose and mass are the caller's).
+  BodyDescription linkBody(const urdf::Link& link, const std::map<std::string, ContactMaterial>& materials) const
+  {
+    if (!link.collision)
+    {
+      fail(link.name, "has no <collision>");
+    }
+    if (link.collision_array.size() > 1)
+    {
+      fail(link.name, "has more than one <collision>; split it into links");
+    }
+    BodyDescription body;
+    body.name = link.name;
+    body.collision_origin = toIsometry(link.collision->origin);
+    body.geometry = geometry(link.name, link.collision->geometry);
+    const auto material = materials.find(link.name);
+    if (material != materials.end())
+    {
+      body.material = material->second;
+    }
+    return body;
+  }
+
+  // An object file's root link, at the origin: free with a positive <inertial> mass, fixed
+  // without one or with mass 0 (PyBullet's convention for a fixed base).
+  BodyDescription objectBody(const urdf::Link& link, const std::map<std::string, ContactMaterial>& materials) const
+  {
+    BodyDescription body = linkBody(link, materials);
+    body.is_static = !link.inertial || link.inertial->mass == 0.0;
+    if (!body.is_static)
+    {
+      inertial(link, &body);
+    }
+    return body;
+  }
+
  private:
   std::string source_;
   std::string base_directory_;
   PackageResolver packages_;
 };
 }  // namespace
+
+std::string resolveFileName(const std::string& filename, const std::string& base_directory,
+                            const PackageResolver& packages, std::string* package)
+{
+  const std::string package_prefix = "package://";
+  const std::string file_prefix = "file://";
+  if (filename.rfind(package_prefix, 0) == 0)
+  {
+    const std::string rest = filename.substr(package_prefix.size());
+    const std::size_t slash = rest.find('/');
+    *package = rest.substr(0, slash);
+    const std::string root = packages ? packages(*package) : findPackageAbove(*package, base_directory);
+    return root.empty() ? root : root + (slash == std::string::npos ? "" : rest.substr(slash));
+  }
+  if (filename.rfind(file_prefix, 0) == 0)
+  {
+    return filename.substr(file_prefix.size());
+  }
+  if (!filename.empty() && filename[0] == '/')
+  {
+    return filename;
+  }
+  return base_directory + "/" + filename;
+}
+
+std::string folderOf(const std::string& path)
+{
+  return directoryOf(path);
+}
 
 SceneDescription parseUrdfScene(const std::string& urdf_xml, const std::string& base_directory,
                                 const std::string& source_name, const PackageResolver& packages)

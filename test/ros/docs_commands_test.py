@@ -10,11 +10,12 @@ screenshot tests look at rviz) and with a recording sent to a temporary bag, and
 - with a scripted device (fake, fake_hand: the launches' default), touch an object: a contact
   area on /contact_areas within 30 s;
 - stop cleanly on Ctrl-C (SIGINT).
-Commands that need what this machine has not are skipped, and say why: a Falcon or an Omni
-(no device attached; their launch stops with a clear error, node_errors_test), a replay of
-a bag the user recorded, a pose source (pose_source_docs.test runs its example with the
-docs' poses), a placeholder path (/abs/path/my.urdf), and one half of a session
-across two machines (physics.launch or interface.launch alone: loop_processes runs both)."""
+Commands are run from the package's folder, as the docs type them. Commands that need what
+this machine has not are skipped, and say why: a Falcon or an Omni (no device attached; their
+launch stops with a clear error, node_errors_test), a replay of a bag the user recorded, a
+user's own file (/abs/path/my.urdf, /tmp/mine.yaml), a pose source (pose_source_docs.test runs
+its example with the docs' poses), and one half of a session across two machines
+(physics.launch or interface.launch alone: loop_processes runs both)."""
 import os
 import signal
 import subprocess
@@ -24,6 +25,7 @@ import time
 import unittest
 
 import rosgraph
+import rospkg
 import rospy
 import rostest
 from god_finger.msg import ContactAreaArray, DeviceState
@@ -45,8 +47,8 @@ def why_skipped(launch, args):
         return "replays a bag the user recorded"
     if device == "pose_source":
         return "its fingers come from a tracker's poses: pose_source_docs.test runs the docs' example with its poses"
-    if any("/abs/path" in value or "my.urdf" in value for value in args.values()):
-        return "a placeholder path"
+    if any("/abs/path" in value or "my.urdf" in value or "mine.yaml" in value for value in args.values()):
+        return "a user's own file"
     return None
 
 
@@ -103,7 +105,9 @@ class DocsCommands(unittest.TestCase, RosTestSupport):
         self.areas = 0
         self.subscribers = [rospy.Subscriber("/contact_areas", ContactAreaArray, self.on_areas, queue_size=10)]
         log = open(bag + ".log", "w")
-        process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
+        # From the package's folder, as the docs' commands are typed (relative scene files).
+        process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, start_new_session=True,
+                                   cwd=rospkg.RosPack().get_path("god_finger"))
         try:
             self.wait_for(lambda: self.interfaces() is not None or process.poll() is not None, 60.0,
                           "%s to load its scene" % " ".join(command))

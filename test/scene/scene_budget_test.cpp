@@ -2,9 +2,9 @@
 // (scene_budget.h).
 #include "god_finger/scene/scene_budget.h"
 
-#include "god_finger/support/memory_budget.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/memory_budget.h"
 
 #include <gtest/gtest.h>
 

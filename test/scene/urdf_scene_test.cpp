@@ -174,6 +174,89 @@ TEST(UrdfScene, LinkWithoutCollisionIsRejected)
 {
   EXPECT_NE(errorOf(sceneWith(kGoodInertial)).find("link 'thing': has no <collision>"), std::string::npos);
 }
+
+// An object file as PyBullet ships one: the root link is the body, at the origin.
+std::string objectFile(const std::string& root_xml, const std::string& more = "")
+{
+  return "<?xml version='1.0'?><robot name='duck'><link name='baseLink'>" + root_xml + "</link>" + more + "</robot>";
+}
+
+TEST(UrdfScene, AnObjectFilesRootLinkIsTheBodyFreeWithMassFixedWithout)
+{
+  const SceneDescription free = parseUrdfScene(
+      objectFile("<collision><origin xyz='0 0 0.01'/><geometry><sphere radius='0.02'/></geometry></collision>" +
+                 kGoodInertial),
+      kScenes, "duck.urdf");
+  ASSERT_EQ(free.bodies.size(), 1u);
+  EXPECT_EQ(free.bodies[0].name, "baseLink");
+  EXPECT_FALSE(free.bodies[0].is_static);
+  EXPECT_DOUBLE_EQ(free.bodies[0].mass, 0.1);
+  EXPECT_TRUE(free.bodies[0].pose.isApprox(Eigen::Isometry3d::Identity()));
+  EXPECT_DOUBLE_EQ(free.bodies[0].collision_origin.translation().z(), 0.01);
+  // PyBullet's fixed base: mass 0, or no <inertial> at all.
+  for (const std::string& inertial :
+       {std::string("<inertial><mass value='0'/><inertia ixx='0' ixy='0' ixz='0' iyy='0' iyz='0' izz='0'/></inertial>"),
+        std::string()})
+  {
+    const SceneDescription fixed =
+        parseUrdfScene(objectFile("<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>" + inertial),
+                       kScenes, "tray.urdf");
+    ASSERT_EQ(fixed.bodies.size(), 1u);
+    EXPECT_TRUE(fixed.bodies[0].is_static);
+  }
+}
+
+TEST(UrdfScene, AnObjectFilesOtherLinksAreRefusedNamingThem)
+{
+  const std::string error = errorOf(objectFile(
+      "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>" + kGoodInertial,
+      "<link name='lid'><collision><geometry><box size='0.1 0.1 0.01'/></geometry></collision>" + kGoodInertial +
+          "</link><joint name='hinge' type='revolute'><parent link='baseLink'/><child link='lid'/>"
+          "<limit lower='0' upper='1' effort='1' velocity='1'/></joint>"));
+  EXPECT_NE(error.find("link 'lid': joined to the object's root link 'baseLink'"), std::string::npos) << error;
+  EXPECT_NE(error.find("not supported yet"), std::string::npos) << error;
+}
+
+// urdfdom drops what it cannot read and goes on: the real problem must be named, not the
+// missing element it leaves behind.
+TEST(UrdfScene, NonFiniteNumbersAreNamedNotTheElementUrdfdomDrops)
+{
+  const std::string infinite_mass = errorOf(sceneWith(
+      "<collision><geometry><sphere radius='0.1'/></geometry></collision>"
+      "<inertial><mass value='inf'/><inertia ixx='1e-4' ixy='0' ixz='0' iyy='1e-4' iyz='0' izz='1e-4'/></inertial>"));
+  EXPECT_NE(infinite_mass.find("link 'thing': <inertial><mass value> 'inf' is not a finite number"), std::string::npos)
+      << infinite_mass;
+  const std::string nan_scale = errorOf(
+      sceneWith("<collision><geometry><mesh filename='meshes/nothing.stl' scale='nan 1 1'/></geometry></collision>" +
+                kGoodInertial));
+  EXPECT_NE(nan_scale.find("link 'thing': <collision> <mesh scale> 'nan 1 1' is not 3 finite numbers"),
+            std::string::npos)
+      << nan_scale;
+  const std::string short_origin = errorOf(sceneWith(
+      "<collision><origin xyz='0 1'/><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial));
+  EXPECT_NE(short_origin.find("link 'thing': <collision><origin xyz> '0 1' is not 3 finite numbers"), std::string::npos)
+      << short_origin;
+  const std::string bad_inertia = errorOf(sceneWith(
+      "<collision><geometry><sphere radius='0.1'/></geometry></collision>"
+      "<inertial><mass value='1'/><inertia ixx='nan' ixy='0' ixz='0' iyy='1e-4' iyz='0' izz='1e-4'/></inertial>"));
+  EXPECT_NE(bad_inertia.find("link 'thing': <inertia ixx> 'nan' is not a finite number"), std::string::npos)
+      << bad_inertia;
+}
+
+TEST(UrdfScene, SizesOutsideWhatASceneHoldsAreRefusedNamingTheRange)
+{
+  const std::string huge =
+      errorOf(sceneWith("<collision><geometry><box size='1e30 1 1'/></geometry></collision>" + kGoodInertial));
+  EXPECT_NE(huge.find("link 'thing': box size 1e+30 m is outside the sizes a scene can hold, [0.0001, 100] m"),
+            std::string::npos)
+      << huge;
+  const std::string tiny =
+      errorOf(sceneWith("<collision><geometry><sphere radius='1e-6'/></geometry></collision>" + kGoodInertial));
+  EXPECT_NE(tiny.find("link 'thing': sphere radius 1e-06 m is outside"), std::string::npos) << tiny;
+  const std::string long_cylinder = errorOf(
+      sceneWith("<collision><geometry><cylinder radius='0.1' length='500'/></geometry></collision>" + kGoodInertial));
+  EXPECT_NE(long_cylinder.find("link 'thing': cylinder length 500 m is outside"), std::string::npos) << long_cylinder;
+}
 }  // namespace
 }  // namespace god_finger
 

@@ -1,12 +1,19 @@
 // Scenes from URDF (through urdfdom).
 //
-// Conventions:
-//  - The root link is `world` (or any link without geometry): every link joined to it by a
-//    `fixed` joint is static; by a `floating` joint, a free rigid body starting at the joint
-//    origin. Other joint types, and chains deeper than one joint, are rejected: scenes are
-//    sets of rigid objects, not robots.
+// Two forms:
+//  - A scene: the root link is `world` (or any link without geometry): every link joined to it
+//    by a `fixed` joint is static; by a `floating` joint, a free rigid body starting at the
+//    joint origin. Other joint types, and chains deeper than one joint, are rejected: scenes
+//    are sets of rigid objects, not robots.
+//  - An object file, as PyBullet and Gazebo ship them: the root link has a <collision> and is
+//    the body, at the origin (scene_file.h's scene lists place it); free with a positive
+//    <inertial> mass, fixed without one or with mass 0 (PyBullet's fixed base). Links joined
+//    to it (compounds, articulated objects) are refused, naming the link.
 //  - Each body has exactly one <collision> (box, sphere, cylinder, or mesh with scale);
-//    dynamic bodies need an <inertial> with mass > 0 and a positive-definite inertia.
+//    dynamic bodies need an <inertial> with mass > 0 and a positive-definite inertia. Every
+//    number of a mass, an inertia, a mesh scale or an origin must be finite, and every
+//    primitive's size within [kMinBodySize, kMaxBodySize] (scene_budget.h): each refusal
+//    names the link, the element and its text.
 //  - Contact materials come from PyBullet's URDF extension, the documented source Bullet
 //    users already know: <link><contact><lateral_friction value=".."/>
 //    <rolling_friction value=".."/><spinning_friction value=".."/>
@@ -28,6 +35,14 @@ namespace god_finger
 {
 // The folder of package `name`, or "" when it is not known.
 using PackageResolver = std::function<std::string(const std::string& name)>;
+
+// A file name as URDF writes it (absolute, file://..., package://NAME/..., or relative to
+// `base_directory`) as a path; "" when its package is not known (then `package` names it).
+// Whether the file exists is the caller's question.
+std::string resolveFileName(const std::string& filename, const std::string& base_directory,
+                            const PackageResolver& packages, std::string* package);
+// The folder a file is in ("." for a bare name).
+std::string folderOf(const std::string& path);
 
 SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolver& packages = PackageResolver());
 // Same, from a string; relative mesh paths are resolved against `base_directory`.

@@ -1,0 +1,231 @@
+#include "god_finger/scene/scene_file.h"
+
+#include "god_finger/support/input_error.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace god_finger
+{
+namespace
+{
+bool endsWith(const std::string& text, const std::string& suffix)
+{
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+class SceneListParser
+{
+ public:
+  SceneListParser(const std::string& path, const PackageResolver& packages) : path_(path), packages_(packages) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& problem) const
+  {
+    throw InputError("scene list '" + path_ + "': " + (where.empty() ? "" : where + ": ") + problem);
+  }
+
+  SceneDescription parse() const
+  {
+    YAML::Node root;
+    try
+    {
+      root = YAML::LoadFile(path_);
+    }
+    catch (const YAML::BadFile&)
+    {
+      fail("", "no such file or not readable");
+    }
+    catch (const YAML::Exception& error)
+    {
+      fail("line " + std::to_string(error.mark.line + 1), "not YAML: " + error.msg);
+    }
+    if (!root.IsMap())
+    {
+      fail("", "must be a map with 'objects' (and optionally 'support')");
+    }
+    checkKeys(root, {"support", "objects"}, "");
+    SceneDescription scene;
+    scene.name = path_;
+    const std::string support = root["support"] ? text(root["support"], "support") : "table";
+    if (support == "table")
+    {
+      scene.bodies.push_back(supportTable());
+    }
+    else if (support != "none")
+    {
+      fail("support", "'" + support + "' is not one of table, none");
+    }
+    const YAML::Node objects = root["objects"];
+    if (!objects || !objects.IsSequence() || objects.size() == 0)
+    {
+      fail("objects", "must be a non-empty list of objects (file, and optionally name, xyz, rpy, fixed)");
+    }
+    std::set<std::string> names;
+    for (const BodyDescription& body : scene.bodies)
+    {
+      names.insert(body.name);
+    }
+    for (std::size_t i = 0; i < objects.size(); ++i)
+    {
+      appendObject(objects[i], "objects[" + std::to_string(i) + "]", &scene, &names);
+    }
+    return scene;
+  }
+
+ private:
+  void checkKeys(const YAML::Node& map, const std::set<std::string>& known, const std::string& where) const
+  {
+    for (const auto& entry : map)
+    {
+      const std::string key = entry.first.as<std::string>();
+      if (known.count(key) == 0)
+      {
+        std::string list;
+        for (const std::string& name : known)
+        {
+          list += (list.empty() ? "" : ", ") + name;
+        }
+        fail(where, "unknown key '" + key + "' (known: " + list + ")");
+      }
+    }
+  }
+
+  std::string text(const YAML::Node& node, const std::string& where) const
+  {
+    if (!node.IsScalar())
+    {
+      fail(where, "must be a text");
+    }
+    return node.as<std::string>();
+  }
+
+  Eigen::Vector3d vector3(const YAML::Node& node, const std::string& where) const
+  {
+    Eigen::Vector3d result;
+    bool good = node.IsSequence() && node.size() == 3;
+    for (std::size_t i = 0; good && i < 3; ++i)
+    {
+      try
+      {
+        result[i] = node[i].as<double>();
+      }
+      catch (const YAML::Exception&)
+      {
+        good = false;
+      }
+    }
+    if (!good || !result.allFinite())
+    {
+      fail(where, "must be three finite numbers, [a, b, c]");
+    }
+    return result;
+  }
+
+  void appendObject(const YAML::Node& object, const std::string& where, SceneDescription* scene,
+                    std::set<std::string>* names) const
+  {
+    if (!object.IsMap())
+    {
+      fail(where, "must be a map (file, and optionally name, xyz, rpy, fixed)");
+    }
+    checkKeys(object, {"file", "name", "xyz", "rpy", "fixed"}, where);
+    if (!object["file"])
+    {
+      fail(where, "has no 'file'");
+    }
+    const std::string file = text(object["file"], where + ".file");
+    std::string package;
+    const std::string path = resolveFileName(file, folderOf(path_), packages_, &package);
+    if (path.empty())
+    {
+      fail(where, "file '" + file + "': ROS package '" + package + "' not found");
+    }
+    if (endsWith(path, ".yaml") || endsWith(path, ".yml"))
+    {
+      fail(where, "file '" + file + "': a scene list cannot list another (give URDF files)");
+    }
+    SceneDescription parts;
+    try
+    {
+      parts = loadUrdfScene(path, packages_);
+    }
+    catch (const InputError& error)
+    {
+      fail(where, error.what());
+    }
+    Eigen::Isometry3d placement = Eigen::Isometry3d::Identity();
+    if (object["xyz"])
+    {
+      placement.translation() = vector3(object["xyz"], where + ".xyz");
+    }
+    if (object["rpy"])
+    {
+      const Eigen::Vector3d rpy = vector3(object["rpy"], where + ".rpy");
+      placement.linear() =
+          (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+           Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+              .toRotationMatrix();
+    }
+    const std::string name = object["name"] ? text(object["name"], where + ".name") : std::string();
+    for (BodyDescription body : parts.bodies)
+    {
+      body.pose = placement * body.pose;
+      if (!name.empty())
+      {
+        body.name = parts.bodies.size() == 1 ? name : name + "/" + body.name;
+      }
+      if (object["fixed"])
+      {
+        bool fixed = false;
+        try
+        {
+          fixed = object["fixed"].as<bool>();
+        }
+        catch (const YAML::Exception&)
+        {
+          fail(where + ".fixed", "must be true or false");
+        }
+        if (!fixed && body.is_static && !(body.mass > 0.0))
+        {
+          fail(where, "body '" + body.name + "' is fixed in its file (no <inertial> mass): it cannot be made free");
+        }
+        body.is_static = fixed;
+      }
+      if (!names->insert(body.name).second)
+      {
+        fail(where, "the name '" + body.name + "' is given twice (give each object its own 'name')");
+      }
+      scene->bodies.push_back(body);
+    }
+  }
+
+  std::string path_;
+  PackageResolver packages_;
+};
+}  // namespace
+
+BodyDescription supportTable()
+{
+  BodyDescription table;
+  table.name = "table";
+  table.geometry.kind = GeometryKind::kBox;
+  table.geometry.size = Eigen::Vector3d(1.0, 1.0, 0.04);
+  table.pose.translation() = Eigen::Vector3d(0.0, 0.0, -0.02);
+  table.is_static = true;
+  table.material.friction = 0.6;
+  return table;
+}
+
+SceneDescription loadScene(const std::string& path, const PackageResolver& packages)
+{
+  if (endsWith(path, ".yaml") || endsWith(path, ".yml"))
+  {
+    return SceneListParser(path, packages).parse();
+  }
+  return loadUrdfScene(path, packages);
+}
+}  // namespace god_finger
