@@ -30,6 +30,19 @@ class SceneListParser
 
   SceneDescription parse() const
   {
+    try
+    {
+      return parseYaml();
+    }
+    catch (const YAML::Exception& error)  // a node of an unexpected kind (a list as a key, ...)
+    {
+      fail("line " + std::to_string(error.mark.line + 1), "not a scene list: " + error.msg);
+    }
+  }
+
+ private:
+  SceneDescription parseYaml() const
+  {
     YAML::Node root;
     try
     {
@@ -76,12 +89,11 @@ class SceneListParser
     return scene;
   }
 
- private:
   void checkKeys(const YAML::Node& map, const std::set<std::string>& known, const std::string& where) const
   {
     for (const auto& entry : map)
     {
-      const std::string key = entry.first.as<std::string>();
+      const std::string key = entry.first.IsScalar() ? entry.first.as<std::string>() : std::string("(not a text)");
       if (known.count(key) == 0)
       {
         std::string list;

@@ -160,6 +160,9 @@ TEST_F(SceneFiles, EveryBadListIsRefusedNamingItsProblem)
       {"objects:\n  - file: objects/ball.urdf\n    name: table\n", "objects[0]: the name 'table' is given twice"},
       {"objects:\n  - file: list.yaml\n", "a scene list cannot list another"},
       {"objects:\n  - file: package://no_such_package/ball.urdf\n", "ROS package 'no_such_package' not found"},
+      // Found by scene_loading_fuzz: a list as a key threw yaml-cpp's own exception past the loader.
+      {"[a]: 1\nobjects:\n  - file: objects/ball.urdf\n", "unknown key '(not a text)'"},
+      {"objects:\n  - file: [a, b]\n", "objects[0].file: must be a text"},
   };
   for (const auto& bad : cases)
   {
