@@ -24,15 +24,54 @@ std::optional<PrimitiveSurface> primitiveSurface(const Geometry& geometry)
   }
   return std::nullopt;
 }
+
+// `mesh`'s triangles moved by `place`, as a soup to build a union from.
+TriangleSoup soupOf(const TriangleMesh& mesh, const Eigen::Isometry3d& place)
+{
+  TriangleSoup soup;
+  for (const Eigen::Vector3d& vertex : mesh.vertices())
+  {
+    soup.vertices.push_back(place * vertex);
+  }
+  for (const Eigen::Vector3i& triangle : mesh.triangles())
+  {
+    soup.triangles.push_back({triangle[0], triangle[1], triangle[2]});
+  }
+  return soup;
+}
 }  // namespace
 
 SceneBody makeSceneBody(const BodyDescription& description, double max_edge)
 {
   SceneBody body;
-  body.walk = std::make_unique<TriangleMesh>(makeWalkMesh(description.geometry, max_edge));
+  const TriangleMesh first = makeWalkMesh(description.geometry, max_edge);
+  body.collision = makeCollisionShape(description.geometry, first, description.is_static);
+  if (description.more_parts.empty())
+  {
+    body.walk = std::make_unique<TriangleMesh>(first);
+    body.primitive = primitiveSurface(description.geometry);
+  }
+  else
+  {
+    // A compound: the pad walks on the union of its pieces' surfaces (no exact primitive walk).
+    TriangleSoup soup = soupOf(first, Eigen::Isometry3d::Identity());
+    for (const BodyPart& part : description.more_parts)
+    {
+      const TriangleMesh part_walk = makeWalkMesh(part.geometry, max_edge);
+      const Eigen::Isometry3d in_geometry = description.collision_origin.inverse() * part.origin;
+      body.part_collisions.push_back(makeCollisionShape(part.geometry, part_walk, description.is_static));
+      body.part_in_geometry.push_back(in_geometry);
+      const TriangleSoup part_soup = soupOf(part_walk, in_geometry);
+      const int offset = static_cast<int>(soup.vertices.size());
+      soup.vertices.insert(soup.vertices.end(), part_soup.vertices.begin(), part_soup.vertices.end());
+      for (const std::array<int, 3>& triangle : part_soup.triangles)
+      {
+        soup.triangles.push_back({triangle[0] + offset, triangle[1] + offset, triangle[2] + offset});
+      }
+    }
+    body.walk = std::make_unique<TriangleMesh>(TriangleMesh::build(soup));
+  }
   body.locator = std::make_unique<SurfaceLocator>(*body.walk);
-  body.primitive = primitiveSurface(description.geometry);
-  body.collision = makeCollisionShape(description.geometry, *body.walk, description.is_static);
   if (!description.is_static)
   {
     // Bullet's body frame is the centre of mass on the principal axes of inertia.
@@ -55,6 +94,11 @@ void buildRigidBody(const BodyDescription& description, int index, SceneBody* bo
 {
   body->placed = std::make_unique<btCompoundShape>();
   body->placed->addChildShape(toBullet(body->geometry_in_com), body->collision->shape);
+  for (std::size_t i = 0; i < body->part_collisions.size(); ++i)
+  {
+    body->placed->addChildShape(toBullet(body->geometry_in_com * body->part_in_geometry[i]),
+                                body->part_collisions[i]->shape);
+  }
   const double mass = description.is_static ? 0.0 : description.mass;
   btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, body->placed.get(),
                                                 description.is_static ? btVector3(0, 0, 0) : body->principal_inertia);

@@ -19,6 +19,7 @@
 #include <Eigen/Geometry>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace god_finger::internal
 {
@@ -30,7 +31,11 @@ struct SceneBody
   // surface then only serves the collision shape and walkMesh().
   std::optional<PrimitiveSurface> primitive;
   std::unique_ptr<CollisionShape> collision;
-  std::unique_ptr<btCompoundShape> placed;  // the collision shape placed in the centre-of-mass frame
+  // A compound body's other pieces (BodyDescription::more_parts): their shapes, each at its
+  // place in the geometry frame (the first piece's).
+  std::vector<std::unique_ptr<CollisionShape>> part_collisions;
+  std::vector<Eigen::Isometry3d> part_in_geometry;
+  std::unique_ptr<btCompoundShape> placed;  // the collision shape(s) placed in the centre-of-mass frame
   std::unique_ptr<btRigidBody> rigid;
   Eigen::Isometry3d com_in_link = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d geometry_in_com = Eigen::Isometry3d::Identity();
@@ -41,8 +46,9 @@ struct SceneBody
   double left_world_at = -1.0;  // s, world time
 };
 
-// The walk mesh (a primitive's tessellated with edges of at most `max_edge` m), locator,
-// exact surface, collision shape and frames of `description`; no rigid body yet.
+// The walk mesh (a primitive's tessellated with edges of at most `max_edge` m; a compound's,
+// the union of its pieces' in the first piece's frame), locator, exact surface (one sphere or
+// cylinder only), collision shape(s) and frames of `description`; no rigid body yet.
 SceneBody makeSceneBody(const BodyDescription& description, double max_edge);
 
 // (Re)builds `body`'s placed shape and rigid body (scene index `index`, tagged kKindBody) at

@@ -1,6 +1,7 @@
 #include "markers.h"
 
 #include "god_finger/ros/conversions.h"
+#include "god_finger/scene/scene_budget.h"
 
 namespace god_finger
 {
@@ -77,6 +78,42 @@ visualization_msgs::Marker deleteAll(const std::string& ns, const ros::Time& sta
   m.action = visualization_msgs::Marker::DELETEALL;
   return m;
 }
+// One piece of a body drawn at `pose` (its geometry frame in world).
+visualization_msgs::Marker geometryMarker(const Geometry& geometry, const Eigen::Isometry3d& pose, int id,
+                                          const BodyColour& colour, const ros::Time& stamp)
+{
+  visualization_msgs::Marker m = marker("bodies", id, visualization_msgs::Marker::CUBE, stamp);
+  setPose(&m, pose);
+  switch (geometry.kind)
+  {
+    case GeometryKind::kBox:
+      m.scale.x = geometry.size.x();
+      m.scale.y = geometry.size.y();
+      m.scale.z = geometry.size.z();
+      break;
+    case GeometryKind::kSphere:
+      m.type = visualization_msgs::Marker::SPHERE;
+      m.scale.x = m.scale.y = m.scale.z = 2.0 * geometry.radius;
+      break;
+    case GeometryKind::kCylinder:
+      m.type = visualization_msgs::Marker::CYLINDER;
+      m.scale.x = m.scale.y = 2.0 * geometry.radius;
+      m.scale.z = geometry.length;
+      break;
+    case GeometryKind::kMesh:
+      m.type = visualization_msgs::Marker::MESH_RESOURCE;
+      m.mesh_resource = "file://" + geometry.mesh_path;
+      m.scale.x = geometry.scale.x();
+      m.scale.y = geometry.scale.y();
+      m.scale.z = geometry.scale.z();
+      break;
+  }
+  m.color.r = colour.r;
+  m.color.g = colour.g;
+  m.color.b = colour.b;
+  m.color.a = colour.a;
+  return m;
+}
 }  // namespace
 
 void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world, const ros::Time& stamp,
@@ -88,37 +125,17 @@ void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world
   for (std::size_t i = 0; i < world.bodies.size() && i < scene.bodies.size(); ++i)
   {
     const BodyDescription& body = scene.bodies[i];
-    const Eigen::Isometry3d geometry_pose = world.bodies[i].pose * body.collision_origin;
-    visualization_msgs::Marker m = marker("bodies", i, visualization_msgs::Marker::CUBE, stamp);
-    setPose(&m, geometry_pose);
-    switch (body.geometry.kind)
-    {
-      case GeometryKind::kBox:
-        m.scale.x = body.geometry.size.x();
-        m.scale.y = body.geometry.size.y();
-        m.scale.z = body.geometry.size.z();
-        break;
-      case GeometryKind::kSphere:
-        m.type = visualization_msgs::Marker::SPHERE;
-        m.scale.x = m.scale.y = m.scale.z = 2.0 * body.geometry.radius;
-        break;
-      case GeometryKind::kCylinder:
-        m.type = visualization_msgs::Marker::CYLINDER;
-        m.scale.x = m.scale.y = 2.0 * body.geometry.radius;
-        m.scale.z = body.geometry.length;
-        break;
-      case GeometryKind::kMesh:
-        m.type = visualization_msgs::Marker::MESH_RESOURCE;
-        m.mesh_resource = "file://" + body.geometry.mesh_path;
-        m.scale.x = body.geometry.scale.x();
-        m.scale.y = body.geometry.scale.y();
-        m.scale.z = body.geometry.scale.z();
-        break;
-    }
     const BodyColour colour = bodyColour(body, moving_index);
-    setColor(&m, colour.r, colour.g, colour.b, colour.a);
     moving_index += body.is_static ? 0 : 1;
-    markers->markers.push_back(m);
+    // A compound's pieces after the first get ids past every body's (kMaxBodies apart).
+    markers->markers.push_back(geometryMarker(body.geometry, world.bodies[i].pose * body.collision_origin,
+                                              static_cast<int>(i), colour, stamp));
+    for (std::size_t k = 0; k < body.more_parts.size(); ++k)
+    {
+      const BodyPart& part = body.more_parts[k];
+      markers->markers.push_back(geometryMarker(part.geometry, world.bodies[i].pose * part.origin,
+                                                static_cast<int>((k + 1) * kMaxBodies + i), colour, stamp));
+    }
   }
 }
 

@@ -399,14 +399,15 @@ class SceneParser
     {
       fail(link.name, "has no <collision>");
     }
-    if (link.collision_array.size() > 1)
-    {
-      fail(link.name, "has more than one <collision>; split it into links");
-    }
     BodyDescription body;
     body.name = link.name;
-    body.collision_origin = toIsometry(link.collision->origin);
-    body.geometry = geometry(link.name, link.collision->geometry);
+    body.collision_origin = toIsometry(link.collision_array.front()->origin);
+    body.geometry = geometry(link.name, link.collision_array.front()->geometry);
+    for (std::size_t i = 1; i < link.collision_array.size(); ++i)  // a compound: one body of all pieces
+    {
+      body.more_parts.push_back(
+          {geometry(link.name, link.collision_array[i]->geometry), toIsometry(link.collision_array[i]->origin)});
+    }
     const auto material = materials.find(link.name);
     if (material != materials.end())
     {

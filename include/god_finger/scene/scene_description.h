@@ -38,17 +38,28 @@ struct ContactMaterial
   double restitution = 0.0;        // (1)
 };
 
+// One more piece of a compound body (a link with several <collision>s): its geometry and where
+// it sits in the link frame.
+struct BodyPart
+{
+  Geometry geometry;
+  Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();  // geometry in link frame
+};
+
 struct BodyDescription
 {
   std::string name;
-  Geometry geometry;
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();              // link frame in world
+  Geometry geometry;                                       // the first piece; a compound's others are in more_parts
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // link frame in world
   Eigen::Isometry3d collision_origin = Eigen::Isometry3d::Identity();  // geometry in link frame
   bool is_static = false;                                              // fixed to world
   double mass = 0.0;                                                   // kg, > 0 unless static
   Eigen::Isometry3d inertial_origin = Eigen::Isometry3d::Identity();   // centre of mass in link frame
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();                   // kg m^2 at the centre of mass
   ContactMaterial material;
+  // A compound body's pieces after the first (empty for one piece): one rigid body colliding
+  // as all of them, its walk surface the union of their surfaces.
+  std::vector<BodyPart> more_parts;
 };
 
 struct SceneDescription

@@ -9,7 +9,8 @@
 //    the body, at the origin (scene_file.h's scene lists place it); free with a positive
 //    <inertial> mass, fixed without one or with mass 0 (PyBullet's fixed base). Links joined
 //    to it (compounds, articulated objects) are refused, naming the link.
-//  - Each body has exactly one <collision> (box, sphere, cylinder, or mesh with scale);
+//  - Each body has one <collision> (box, sphere, cylinder, or mesh with scale), or several: a
+//    compound body (BodyDescription::more_parts), one rigid body colliding as all its pieces;
 //    dynamic bodies need an <inertial> with mass > 0 and a positive-definite inertia. Every
 //    number of a mass, an inertia, a mesh scale or an origin must be finite, and every
 //    primitive's size within [kMinBodySize, kMaxBodySize] (scene_budget.h): each refusal
