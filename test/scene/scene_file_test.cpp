@@ -125,7 +125,7 @@ TEST_F(SceneFiles, AURDFSceneLoadsThroughTheSameLoader)
 TEST_F(SceneFiles, TheShippedListLoadsItsObjectFiles)
 {
   const SceneDescription scene = loadScene(std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/lists/table_objects.yaml");
-  ASSERT_EQ(scene.bodies.size(), 5u);
+  ASSERT_EQ(scene.bodies.size(), 6u);
   EXPECT_EQ(scene.bodies[0].name, "table");
   EXPECT_EQ(scene.bodies[1].name, "ball");
   EXPECT_EQ(scene.bodies[2].name, "mug");
@@ -133,6 +133,8 @@ TEST_F(SceneFiles, TheShippedListLoadsItsObjectFiles)
   EXPECT_TRUE(std::filesystem::exists(scene.bodies[2].geometry.mesh_path)) << scene.bodies[2].geometry.mesh_path;
   EXPECT_FALSE(scene.bodies[3].is_static);
   EXPECT_TRUE(scene.bodies[4].is_static);
+  EXPECT_EQ(scene.bodies[5].name, "stool");
+  EXPECT_EQ(scene.bodies[5].more_parts.size(), 4u) << "a seat and four legs: one compound body";
 }
 
 TEST_F(SceneFiles, EveryBadListIsRefusedNamingItsProblem)
