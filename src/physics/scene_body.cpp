@@ -25,6 +25,17 @@ std::optional<PrimitiveSurface> primitiveSurface(const Geometry& geometry)
   return std::nullopt;
 }
 
+// `more`'s triangles added to `soup`'s.
+void append(const TriangleSoup& more, TriangleSoup* soup)
+{
+  const int offset = static_cast<int>(soup->vertices.size());
+  soup->vertices.insert(soup->vertices.end(), more.vertices.begin(), more.vertices.end());
+  for (const std::array<int, 3>& triangle : more.triangles)
+  {
+    soup->triangles.push_back({triangle[0] + offset, triangle[1] + offset, triangle[2] + offset});
+  }
+}
+
 // `mesh`'s triangles moved by `place`, as a soup to build a union from.
 TriangleSoup soupOf(const TriangleMesh& mesh, const Eigen::Isometry3d& place)
 {
@@ -46,7 +57,24 @@ SceneBody makeSceneBody(const BodyDescription& description, double max_edge)
   SceneBody body;
   const TriangleMesh first = makeWalkMesh(description.geometry, max_edge);
   body.collision = makeCollisionShape(description.geometry, first, description.is_static);
-  if (description.more_parts.empty())
+  TriangleSoup pieces = soupOf(first, Eigen::Isometry3d::Identity());  // a compound's surfaces, united
+  for (const BodyPart& part : description.more_parts)
+  {
+    const TriangleMesh part_walk = makeWalkMesh(part.geometry, max_edge);
+    const Eigen::Isometry3d in_geometry = description.collision_origin.inverse() * part.origin;
+    body.part_collisions.push_back(makeCollisionShape(part.geometry, part_walk, description.is_static));
+    body.part_in_geometry.push_back(in_geometry);
+    append(soupOf(part_walk, in_geometry), &pieces);
+  }
+  if (description.visual_mesh)
+  {
+    // The true surface: the pad walks on the visual mesh (in the first piece's frame), whatever
+    // the collision pieces are.
+    const TriangleMesh visual = makeWalkMesh(description.visual_mesh->geometry, max_edge);
+    body.walk = std::make_unique<TriangleMesh>(
+        TriangleMesh::build(soupOf(visual, description.collision_origin.inverse() * description.visual_mesh->origin)));
+  }
+  else if (description.more_parts.empty())
   {
     body.walk = std::make_unique<TriangleMesh>(first);
     body.primitive = primitiveSurface(description.geometry);
@@ -54,22 +82,7 @@ SceneBody makeSceneBody(const BodyDescription& description, double max_edge)
   else
   {
     // A compound: the pad walks on the union of its pieces' surfaces (no exact primitive walk).
-    TriangleSoup soup = soupOf(first, Eigen::Isometry3d::Identity());
-    for (const BodyPart& part : description.more_parts)
-    {
-      const TriangleMesh part_walk = makeWalkMesh(part.geometry, max_edge);
-      const Eigen::Isometry3d in_geometry = description.collision_origin.inverse() * part.origin;
-      body.part_collisions.push_back(makeCollisionShape(part.geometry, part_walk, description.is_static));
-      body.part_in_geometry.push_back(in_geometry);
-      const TriangleSoup part_soup = soupOf(part_walk, in_geometry);
-      const int offset = static_cast<int>(soup.vertices.size());
-      soup.vertices.insert(soup.vertices.end(), part_soup.vertices.begin(), part_soup.vertices.end());
-      for (const std::array<int, 3>& triangle : part_soup.triangles)
-      {
-        soup.triangles.push_back({triangle[0] + offset, triangle[1] + offset, triangle[2] + offset});
-      }
-    }
-    body.walk = std::make_unique<TriangleMesh>(TriangleMesh::build(soup));
+    body.walk = std::make_unique<TriangleMesh>(TriangleMesh::build(pieces));
   }
   body.locator = std::make_unique<SurfaceLocator>(*body.walk);
   if (!description.is_static)

@@ -127,6 +127,13 @@ void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world
     const BodyDescription& body = scene.bodies[i];
     const BodyColour colour = bodyColour(body, moving_index);
     moving_index += body.is_static ? 0 : 1;
+    if (body.visual_mesh)  // the true surface, over collision pieces that may be coarse hulls
+    {
+      markers->markers.push_back(geometryMarker(body.visual_mesh->geometry,
+                                                world.bodies[i].pose * body.visual_mesh->origin, static_cast<int>(i),
+                                                colour, stamp));
+      continue;
+    }
     // A compound's pieces after the first get ids past every body's (kMaxBodies apart).
     markers->markers.push_back(geometryMarker(body.geometry, world.bodies[i].pose * body.collision_origin,
                                               static_cast<int>(i), colour, stamp));

@@ -1,5 +1,6 @@
 // rviz markers of a physics world, all in `world`: scene bodies (namespace "bodies": the table
-// in wood, other fixed parts in slate, each free body in its own tint, bodyColour()), each
+// in wood, other fixed parts in slate, each free body in its own tint, bodyColour(); a body
+// with a visual mesh as it, else every collision piece), each
 // contact area as a filled polygon in its finger's colour ("contact_areas"; the first finger's
 // yellow, fingerColour()), its sub-god-objects
 // ("sub_god_objects"), god-objects ("god_objects") with the rest of their fingertip, a

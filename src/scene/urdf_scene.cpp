@@ -408,6 +408,22 @@ class SceneParser
       body.more_parts.push_back(
           {geometry(link.name, link.collision_array[i]->geometry), toIsometry(link.collision_array[i]->origin)});
     }
+    for (const urdf::VisualSharedPtr& visual : link.visual_array)
+    {
+      if (visual && visual->geometry && visual->geometry->type == urdf::Geometry::MESH)
+      {
+        BodyPart surface{geometry(link.name, visual->geometry), toIsometry(visual->origin)};
+        const bool same_as_collision = body.more_parts.empty() && body.geometry.kind == GeometryKind::kMesh &&
+                                       surface.geometry.mesh_path == body.geometry.mesh_path &&
+                                       surface.geometry.scale == body.geometry.scale &&
+                                       surface.origin.isApprox(body.collision_origin);
+        if (!same_as_collision)
+        {
+          body.visual_mesh = surface;
+        }
+        break;  // the first visual mesh is the surface
+      }
+    }
     const auto material = materials.find(link.name);
     if (material != materials.end())
     {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,10 @@ struct BodyDescription
   // A compound body's pieces after the first (empty for one piece): one rigid body colliding
   // as all of them, its walk surface the union of their surfaces.
   std::vector<BodyPart> more_parts;
+  // The true surface, when the link's <visual> is a mesh other than its collision geometry (a
+  // scanned or modelled surface over coarse collision hulls): the pad walks on it and rviz shows
+  // it; the <collision>s are for collision only.
+  std::optional<BodyPart> visual_mesh;
 };
 
 struct SceneDescription

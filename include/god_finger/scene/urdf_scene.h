@@ -11,7 +11,9 @@
 //    to it (compounds, articulated objects) are refused, naming the link.
 //  - Each body has one <collision> (box, sphere, cylinder, or mesh with scale), or several: a
 //    compound body (BodyDescription::more_parts), one rigid body colliding as all its pieces;
-//    dynamic bodies need an <inertial> with mass > 0 and a positive-definite inertia. Every
+//    a link's first <visual> mesh, when it is not its collision mesh, is the true surface
+//    (BodyDescription::visual_mesh: the pad walks on it, rviz shows it; other visuals are
+//    ignored); dynamic bodies need an <inertial> with mass > 0 and a positive-definite inertia. Every
 //    number of a mass, an inertia, a mesh scale or an origin must be finite, and every
 //    primitive's size within [kMinBodySize, kMaxBodySize] (scene_budget.h): each refusal
 //    names the link, the element and its text.
