@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -43,7 +44,12 @@ bool fileExists(const std::string& path)
 // Without a resolver (no ROS): the folders above `start` whose package.xml names `name`.
 std::string findPackageAbove(const std::string& name, const std::string& start)
 {
-  std::string folder = start;
+  std::error_code error;
+  std::string folder = std::filesystem::absolute(start, error).lexically_normal().string();  // "urdf/lists" too
+  while (folder.size() > 1 && folder.back() == '/')
+  {
+    folder.pop_back();
+  }
   for (int level = 0; level < 16 && !folder.empty(); ++level)
   {
     std::ifstream manifest(folder + "/package.xml");

@@ -1,0 +1,69 @@
+// god_finger_scene as a user runs it: the shipped scene list's summary (bodies, the surface each
+// pad walks on), a touch on its ball (an area, a force, the ball held by the table), and one
+// line and exit code 2 for a scene that cannot be used or a body that is not there.
+#include "tool_run.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace god_finger
+{
+namespace
+{
+const std::string kList = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/lists/table_objects.yaml";
+
+TEST(SceneTool, SummarisesTheShippedListsBodies)
+{
+  const test::ToolRun run = test::runTool(GOD_FINGER_SCENE_TOOL, kList);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("6 bodies"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("table            fixed"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("ball             free  0.200 kg at (0.000, 0.000, 0.040) m; collides as sphere; the pad "
+                         "walks on it"),
+            std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("stool            free  0.150 kg at (-0.120, -0.100, 0.001) m; collides as box + box + box + "
+                         "box + box; the pad walks on all its pieces, 60 triangles"),
+            std::string::npos)
+      << run.out;
+}
+
+TEST(SceneTool, FindsTheListsPackageFilesFromARelativePathAsTypedInThePackage)
+{
+  const test::ToolRun run = test::runTool(std::string("cd ") + GOD_FINGER_SOURCE_DIR + " && " + GOD_FINGER_SCENE_TOOL,
+                                          "urdf/lists/table_objects.yaml");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("6 bodies"), std::string::npos) << run.out;
+}
+
+TEST(SceneTool, TouchesABodyAndReportsTheAreaAndTheForce)
+{
+  const test::ToolRun run = test::runTool(GOD_FINGER_SCENE_TOOL, kList + " --touch ball");
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(
+      run.out.find("touch 'ball': a finger down over its centre, to 5 mm below its top (0.0000, 0.0000, 0.0800) m"),
+      std::string::npos)
+      << run.out;
+  const std::size_t radius = run.out.find("contact area: radius ");
+  ASSERT_NE(radius, std::string::npos) << run.out;
+  EXPECT_GT(std::stod(run.out.substr(radius + 21)), 2.0) << "a pad of a few mm, not a point: " << run.out;
+  const std::size_t force = run.out.find("force on the hand: ");
+  ASSERT_NE(force, std::string::npos) << run.out;
+  EXPECT_GT(std::stod(run.out.substr(force + 19)), 1.0) << run.out;
+}
+
+TEST(SceneTool, ABadSceneOrBodyIsOneLineAndExitCodeTwo)
+{
+  const test::ToolRun missing = test::runTool(GOD_FINGER_SCENE_TOOL, "/nonexistent/scene.urdf");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err, "god_finger_scene: URDF '/nonexistent/scene.urdf': no such file or not readable\n");
+  const test::ToolRun no_body = test::runTool(GOD_FINGER_SCENE_TOOL, kList + " --touch duck");
+  EXPECT_EQ(no_body.exit_code, 2);
+  EXPECT_NE(no_body.err.find("--touch 'duck': no such body"), std::string::npos) << no_body.err;
+  const test::ToolRun no_file = test::runTool(GOD_FINGER_SCENE_TOOL, "");
+  EXPECT_EQ(no_file.exit_code, 2);
+  EXPECT_NE(no_file.err.find("usage: god_finger_scene FILE"), std::string::npos) << no_file.err;
+}
+}  // namespace
+}  // namespace god_finger
