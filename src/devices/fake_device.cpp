@@ -98,21 +98,32 @@ FakeDevice::FakeDevice(const FakeDeviceParams& params, WaypointPath hand, std::o
   }
 }
 
-Eigen::Vector3d FakeDevice::handAt(double t) const
+FakeDevice::ScriptTime FakeDevice::scriptTime(double t) const
 {
   const double end = hand_.endTime();
   if (params_.repeat_return <= 0.0 || t <= end)
   {
-    return hand_.at(t);
+    return {t, 0.0};
   }
-  const double period = end + params_.repeat_return;
-  const double in_period = std::fmod(t, period);
+  const double in_period = std::fmod(t, end + params_.repeat_return);
   if (in_period <= end)
   {
-    return hand_.at(in_period);
+    return {in_period, 0.0};
   }
-  const double back = (in_period - end) / params_.repeat_return;  // [0, 1]: from the end to the start
-  return (1.0 - back) * hand_.at(end) + back * hand_.at(0.0);
+  return {end, (in_period - end) / params_.repeat_return};
+}
+
+Eigen::Vector3d FakeDevice::handAt(double t) const
+{
+  const ScriptTime at = scriptTime(t);
+  return at.back == 0.0 ? hand_.at(at.time)
+                        : Eigen::Vector3d((1.0 - at.back) * hand_.at(at.time) + at.back * hand_.at(0.0));
+}
+
+Eigen::Quaterniond FakeDevice::orientationAt(double t) const
+{
+  const ScriptTime at = scriptTime(t);
+  return at.back == 0.0 ? orientation_->at(at.time) : orientation_->at(at.time).slerp(at.back, orientation_->at(0.0));
 }
 
 void FakeDevice::start() {}
@@ -205,7 +216,7 @@ DeviceReading FakeDevice::update(double time, const Eigen::Vector3d& force)
   else if (orientation_)
   {
     reading.has_orientation = true;
-    reading.orientation = orientation_->at(last_time_ - start_time_);
+    reading.orientation = orientationAt(last_time_ - start_time_);
   }
   return reading;
 }

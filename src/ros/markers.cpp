@@ -1,5 +1,7 @@
 #include "markers.h"
 
+#include <cctype>
+
 #include "god_finger/ros/conversions.h"
 #include "god_finger/scene/scene_budget.h"
 
@@ -152,12 +154,21 @@ bool isSupport(const BodyDescription& body)
   {
     return false;
   }
-  for (const char* word : {"table", "ground", "floor", "room", "shelf"})
+  // A word of the name (split at anything not a letter or digit): "table", "table_top", "my/floor";
+  // not "stable" or "vegetable".
+  std::string word;
+  for (const char c : body.name + " ")
   {
-    if (body.name.find(word) != std::string::npos)
+    if (std::isalnum(static_cast<unsigned char>(c)))
+    {
+      word += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      continue;
+    }
+    if (word == "table" || word == "ground" || word == "floor" || word == "room" || word == "shelf")
     {
       return true;
     }
+    word.clear();
   }
   return false;
 }

@@ -1,9 +1,10 @@
 #include "scene_parameter.h"
 
-#include "god_finger/support/input_error.h"
 #include "god_finger/scene/scene_file.h"
+#include "god_finger/support/input_error.h"
 #include "parameters.h"
 
+#include <ros/console.h>
 #include <ros/package.h>
 
 namespace god_finger
@@ -16,6 +17,11 @@ SceneDescription loadSceneParameter(const ros::NodeHandle& pnh, std::string* pat
     throw InputError("parameter '" + pnh.resolveName("scene") +
                      "' is required (the scene's file: a URDF, an object's URDF or a scene list)");
   }
-  return loadScene(*path, [](const std::string& name) { return ros::package::getPath(name); });
+  SceneDescription scene = loadScene(*path, [](const std::string& name) { return ros::package::getPath(name); });
+  for (const std::string& warning : scene.warnings)
+  {
+    ROS_WARN("%s", warning.c_str());
+  }
+  return scene;
 }
 }  // namespace god_finger

@@ -169,6 +169,7 @@ class SceneListParser
     {
       fail(where, error.what());
     }
+    scene->warnings.insert(scene->warnings.end(), parts.warnings.begin(), parts.warnings.end());
     Eigen::Isometry3d placement = Eigen::Isometry3d::Identity();
     if (object["xyz"])
     {
@@ -203,7 +204,9 @@ class SceneListParser
         }
         if (!fixed && body.is_static && !(body.mass > 0.0))
         {
-          fail(where, "body '" + body.name + "' is fixed in its file (no <inertial> mass): it cannot be made free");
+          fail(where, "body '" + body.name +
+                          "' is fixed in its file and has no usable <inertial> (a positive mass, a positive-definite "
+                          "inertia): it cannot be made free");
         }
         body.is_static = fixed;
       }

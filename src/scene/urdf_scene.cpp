@@ -82,6 +82,11 @@ class SceneParser
     throw InputError("URDF '" + source_ + "': " + (link.empty() ? "" : "link '" + link + "': ") + problem);
   }
 
+  void warn(const std::string& link, const std::string& problem) const
+  {
+    warnings_.push_back("URDF '" + source_ + "': link '" + link + "': " + problem);
+  }
+
   std::string resolveMesh(const std::string& link, const std::string& filename) const
   {
     std::string package;
@@ -171,6 +176,20 @@ class SceneParser
       }
     }
     return result;
+  }
+
+  // A positive finite mass and a positive-definite inertia: what inertial() accepts.
+  static bool usableInertial(const urdf::Link& link)
+  {
+    if (!link.inertial || !(link.inertial->mass > 0.0 && std::isfinite(link.inertial->mass)))
+    {
+      return false;
+    }
+    const urdf::Inertial& i = *link.inertial;
+    Eigen::Matrix3d inertia;
+    inertia << i.ixx, i.ixy, i.ixz, i.ixy, i.iyy, i.iyz, i.ixz, i.iyz, i.izz;
+    return inertia.allFinite() &&
+           Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(inertia).eigenvalues().minCoeff() > 0.0;
   }
 
   void inertial(const urdf::Link& link, BodyDescription* body) const
@@ -378,9 +397,9 @@ class SceneParser
       BodyDescription body = linkBody(*link, link_materials);
       body.pose = toIsometry(joint->parent_to_joint_origin_transform);
       body.is_static = joint->type == urdf::Joint::FIXED;
-      if (!body.is_static)
+      if (!body.is_static || usableInertial(*link))
       {
-        inertial(*link, &body);
+        inertial(*link, &body);  // a fixed body keeps a usable one: a scene list may free it
       }
       scene.bodies.push_back(body);
     }
@@ -395,6 +414,7 @@ class SceneParser
       throw ResourceLimitError("URDF '" + source_ + "': " + std::to_string(scene.bodies.size()) +
                                " bodies, more than the limit of " + std::to_string(kMaxBodies));
     }
+    scene.warnings = warnings_;
     return scene;
   }
 
@@ -414,11 +434,31 @@ class SceneParser
       body.more_parts.push_back(
           {geometry(link.name, link.collision_array[i]->geometry), toIsometry(link.collision_array[i]->origin)});
     }
+    int visual_meshes = 0;
     for (const urdf::VisualSharedPtr& visual : link.visual_array)
     {
-      if (visual && visual->geometry && visual->geometry->type == urdf::Geometry::MESH)
+      visual_meshes += visual && visual->geometry && visual->geometry->type == urdf::Geometry::MESH ? 1 : 0;
+    }
+    if (visual_meshes > 1)
+    {
+      warn(link.name, std::to_string(visual_meshes) +
+                          " visual meshes: the pad walks on its collision geometry (one visual mesh is the surface)");
+    }
+    for (const urdf::VisualSharedPtr& visual : link.visual_array)
+    {
+      if (visual_meshes == 1 && visual && visual->geometry && visual->geometry->type == urdf::Geometry::MESH)
       {
-        BodyPart surface{geometry(link.name, visual->geometry), toIsometry(visual->origin)};
+        BodyPart surface;
+        try
+        {
+          surface = BodyPart{geometry(link.name, visual->geometry), toIsometry(visual->origin)};
+        }
+        catch (const InputError& error)
+        {
+          warn(link.name, std::string("its visual mesh cannot be used, the pad walks on its collision geometry (") +
+                              error.what() + ")");
+          break;
+        }
         const bool same_as_collision = body.more_parts.empty() && body.geometry.kind == GeometryKind::kMesh &&
                                        surface.geometry.mesh_path == body.geometry.mesh_path &&
                                        surface.geometry.scale == body.geometry.scale &&
@@ -444,7 +484,7 @@ class SceneParser
   {
     BodyDescription body = linkBody(link, materials);
     body.is_static = !link.inertial || link.inertial->mass == 0.0;
-    if (!body.is_static)
+    if (!body.is_static || usableInertial(link))
     {
       inertial(link, &body);
     }
@@ -455,6 +495,7 @@ class SceneParser
   std::string source_;
   std::string base_directory_;
   PackageResolver packages_;
+  mutable std::vector<std::string> warnings_;
 };
 }  // namespace
 

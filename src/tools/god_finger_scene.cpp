@@ -183,6 +183,10 @@ int main(int argc, char** argv)
                   body.visual_mesh ? "its visual mesh" : (body.more_parts.empty() ? "it" : "all its pieces"),
                   world.walkMesh(i).triangles().size());
     }
+    for (const std::string& warning : scene.warnings)
+    {
+      std::printf("warning: %s\n", warning.c_str());
+    }
     if (touch_body.empty())
     {
       return 0;

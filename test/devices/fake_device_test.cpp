@@ -76,6 +76,34 @@ TEST(FakeDevice, RepeatsItsScriptWhenAskedAndOtherwiseHoldsTheEnd)
   EXPECT_LT(largest_step, 0.3e-3) << "the handle moves at most 0.2 m/s (the return's speed) plus its lag";
 }
 
+// An oriented script repeats its turn too: back to the first orientation on the way back.
+TEST(FakeDevice, RepeatsItsOrientationScriptWithItsPositions)
+{
+  FakeDeviceParams repeating;
+  repeating.repeat_return = 0.5;
+  const Eigen::Quaterniond quarter(Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitX()));
+  FakeDevice device(repeating, WaypointPath({{0.0, Eigen::Vector3d(0, 0, 0.1)}, {1.0, Eigen::Vector3d(0, 0, 0.1)}}),
+                    OrientationPath({{0.0, Eigen::Quaterniond::Identity()}, {1.0, quarter}}));
+  for (int i = 0; i <= 2500; ++i)
+  {
+    const DeviceReading reading = device.update(i * 1e-3, Eigen::Vector3d::Zero());
+    ASSERT_TRUE(reading.has_orientation);
+    if (i == 1000 || i == 2500)
+    {
+      EXPECT_NEAR(reading.orientation.angularDistance(quarter), 0.0, 1e-9) << "turned at " << i * 1e-3 << " s";
+    }
+    if (i == 1250)
+    {
+      EXPECT_NEAR(reading.orientation.angularDistance(Eigen::Quaterniond::Identity()), M_PI / 4.0, 1e-9)
+          << "half way back";
+    }
+    if (i == 1500)
+    {
+      EXPECT_NEAR(reading.orientation.angularDistance(Eigen::Quaterniond::Identity()), 0.0, 1e-9) << "back at 1.5 s";
+    }
+  }
+}
+
 // An idle handle settling on a hand at x = 0 (here: after a 1 cm step) decays toward 0
 // exponentially; the device ends the decay at exactly 0 instead of walking into the subnormal
 // range (support/denormals.h), where x86 arithmetic is many times slower. This thread does not

@@ -106,8 +106,10 @@ class DocsCommands(unittest.TestCase, RosTestSupport):
         self.subscribers = [rospy.Subscriber("/contact_areas", ContactAreaArray, self.on_areas, queue_size=10)]
         log = open(bag + ".log", "w")
         # From the package's folder, as the docs' commands are typed (relative scene files).
+        # (roslaunch reads the folder from PWD, which a cwd alone does not set.)
+        package = rospkg.RosPack().get_path("god_finger")
         process = subprocess.Popen(command, stdout=log, stderr=subprocess.STDOUT, start_new_session=True,
-                                   cwd=rospkg.RosPack().get_path("god_finger"))
+                                   cwd=package, env=dict(os.environ, PWD=package))
         try:
             self.wait_for(lambda: self.interfaces() is not None or process.poll() is not None, 60.0,
                           "%s to load its scene" % " ".join(command))

@@ -103,9 +103,20 @@ TEST_F(SceneFiles, FixedOverridesTheFileAndSupportNoneLeavesTheTableOut)
   ASSERT_EQ(scene.bodies.size(), 1u);
   EXPECT_TRUE(scene.bodies[0].is_static);
   const std::string error = errorOf("objects:\n  - file: objects/block.urdf\n    fixed: false\n");
-  EXPECT_NE(error.find("objects[0]: body 'baseLink' is fixed in its file (no <inertial> mass): it cannot be made free"),
+  EXPECT_NE(error.find("objects[0]: body 'baseLink' is fixed in its file and has no usable <inertial>"),
             std::string::npos)
       << error;
+  // A body fixed by its file's joint but with a usable <inertial> can be freed by the list.
+  write("objects/pinned.urdf",
+        "<robot name='pinned'><link name='world'/><link name='cube'><inertial><mass value='0.2'/>"
+        "<inertia ixx='1e-4' ixy='0' ixz='0' iyy='1e-4' iyz='0' izz='1e-4'/></inertial>"
+        "<collision><geometry><box size='0.05 0.05 0.05'/></geometry></collision></link>"
+        "<joint name='j' type='fixed'><parent link='world'/><child link='cube'/></joint></robot>");
+  const SceneDescription freed =
+      loadScene(write("list.yaml", "objects:\n  - file: objects/pinned.urdf\n    fixed: false\n"));
+  ASSERT_EQ(freed.bodies.size(), 2u);
+  EXPECT_FALSE(freed.bodies[1].is_static);
+  EXPECT_DOUBLE_EQ(freed.bodies[1].mass, 0.2);
 }
 
 TEST_F(SceneFiles, AURDFSceneLoadsThroughTheSameLoader)
@@ -120,6 +131,30 @@ TEST_F(SceneFiles, AURDFSceneLoadsThroughTheSameLoader)
   EXPECT_EQ(listed.bodies[1].name, "left/" + scene.bodies[1].name);
   EXPECT_TRUE(
       listed.bodies[1].pose.translation().isApprox(scene.bodies[1].pose.translation() + Eigen::Vector3d(0, -1, 0)));
+}
+
+TEST_F(SceneFiles, AVisualMeshThatCannotBeUsedIsAWarningNotARefusal)
+{
+  write("objects/shown.urdf",
+        "<robot name='shown'><link name='thing'><visual><geometry><mesh filename='not_here.dae'/></geometry></visual>"
+        "<collision><geometry><sphere radius='0.02'/></geometry></collision></link></robot>");
+  write("objects/two_visuals.urdf",
+        "<robot name='two'><link name='thing'><visual><geometry><mesh filename='a.obj'/></geometry></visual>"
+        "<visual><geometry><mesh filename='b.obj'/></geometry></visual>"
+        "<collision><geometry><sphere radius='0.02'/></geometry></collision></link></robot>");
+  const SceneDescription scene = loadScene(write("list.yaml",
+                                                 "objects:\n  - file: objects/shown.urdf\n"
+                                                 "  - file: objects/two_visuals.urdf\n    name: two\n"));
+  ASSERT_EQ(scene.bodies.size(), 3u);
+  EXPECT_FALSE(scene.bodies[1].visual_mesh.has_value());
+  EXPECT_FALSE(scene.bodies[2].visual_mesh.has_value());
+  ASSERT_EQ(scene.warnings.size(), 2u);
+  EXPECT_NE(scene.warnings[0].find("link 'thing': its visual mesh cannot be used, the pad walks on its collision "
+                                   "geometry"),
+            std::string::npos)
+      << scene.warnings[0];
+  EXPECT_NE(scene.warnings[0].find("not_here.dae"), std::string::npos) << scene.warnings[0];
+  EXPECT_NE(scene.warnings[1].find("2 visual meshes"), std::string::npos) << scene.warnings[1];
 }
 
 TEST_F(SceneFiles, TheShippedListLoadsItsObjectFiles)

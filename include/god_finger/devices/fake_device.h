@@ -91,8 +91,18 @@ class FakeDevice : public HapticDevice
   }
 
  private:
-  // The scripted hand's position at script time `t` (s), repeating with params_.repeat_return.
+  // Where script time `t` (s) falls with params_.repeat_return: a time of the script, and how far
+  // (0 to 1) the hand is on its way back from the script's end to its start.
+  struct ScriptTime
+  {
+    double time;
+    double back;
+  };
+  ScriptTime scriptTime(double t) const;
+  // The scripted hand's position and orientation at script time `t`, repeating with it (a
+  // straight line and a slerp back to the start).
   Eigen::Vector3d handAt(double t) const;
+  Eigen::Quaterniond orientationAt(double t) const;
 
   FakeDeviceParams params_;
   WaypointPath hand_;

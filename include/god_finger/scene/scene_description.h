@@ -71,6 +71,9 @@ struct SceneDescription
 {
   std::string name;
   std::vector<BodyDescription> bodies;
+  // What the loader passed over and the user should know, one line each naming the file and the
+  // link (a visual mesh that cannot be read, visuals beyond the first): the loaders print them.
+  std::vector<std::string> warnings;
   // Index of a body by name, -1 if absent.
   int find(const std::string& body_name) const
   {
