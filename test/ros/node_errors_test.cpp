@@ -26,7 +26,8 @@ void expectFails(const std::string& binary, const std::string& arguments, const 
 TEST(NodeErrors, PhysicsNode)
 {
   const std::string node = GOD_FINGER_PHYSICS_NODE;
-  expectFails(node, "__name:=p1", "/p1: parameter '/p1/scene' is required (the scene's URDF file)");
+  expectFails(node, "__name:=p1",
+              "/p1: parameter '/p1/scene' is required (the scene's file: a URDF, an object's URDF or a scene list)");
   expectFails(node, "__name:=p2 _scene:=/nonexistent/scene.urdf",
               "URDF '/nonexistent/scene.urdf': no such file or not readable");
   expectFails(node, "__name:=p3 _scene:=" + kData + "/malformed.urdf", "not a valid URDF");
@@ -49,7 +50,8 @@ TEST(NodeErrors, PhysicsNode)
 TEST(NodeErrors, ServoNode)
 {
   const std::string node = GOD_FINGER_SERVO_NODE;
-  expectFails(node, "__name:=s1", "/s1: parameter '/s1/scene' is required (the scene's URDF file)");
+  expectFails(node, "__name:=s1",
+              "/s1: parameter '/s1/scene' is required (the scene's file: a URDF, an object's URDF or a scene list)");
   expectFails(node, "__name:=s2 _scene:=" + kScene + " _real_time_factor:=-1",
               "parameter '/s2/real_time_factor' = -1 is out of range [0, 1000] (dimensionless)");
   expectFails(
