@@ -231,24 +231,23 @@ TriangleSoup makeLBlock(double arm, double depth)
   }
   return soup;
 }
-TriangleSoup makeMug(double radius, double height, double wall, double bottom, int segments)
+TriangleSoup makeRevolved(const std::vector<Eigen::Vector2d>& profile, int segments)
 {
-  requirePositive(radius, "mug radius");
-  requirePositive(height, "mug height");
-  requirePositive(wall, "mug wall");
-  requirePositive(bottom, "mug bottom");
-  if (wall >= radius || bottom >= height)
-  {
-    throw InputError("mug wall must be thinner than its radius and its bottom lower than its height");
-  }
   if (segments < 3)
   {
-    throw InputError("mug needs at least 3 segments, got " + std::to_string(segments));
+    throw InputError("a revolved shape needs at least 3 segments, got " + std::to_string(segments));
   }
-  // The cup's profile in (r, z), counter-clockwise (the wall's section on its left): revolved,
-  // each segment's quads face out as the cylinder's do.
-  const std::vector<Eigen::Vector2d> profile = {
-      {0.0, 0.0}, {radius, 0.0}, {radius, height}, {radius - wall, height}, {radius - wall, bottom}, {0.0, bottom}};
+  if (profile.size() < 3)
+  {
+    throw InputError("a revolved shape needs a profile of at least 3 points");
+  }
+  for (const Eigen::Vector2d& point : profile)
+  {
+    if (!std::isfinite(point.x()) || !std::isfinite(point.y()) || point.x() < 0.0)
+    {
+      throw InputError("a revolved shape's profile needs finite points with r >= 0");
+    }
+  }
   TriangleSoup soup;
   std::vector<int> first(profile.size());  // each profile point's first vertex (one on the axis)
   for (std::size_t k = 0; k < profile.size(); ++k)
@@ -280,6 +279,55 @@ TriangleSoup makeMug(double radius, double height, double wall, double bottom, i
       }
     }
   }
+  return soup;
+}
+
+namespace
+{
+// A cup's profile in (r, z), counter-clockwise (the wall's section on its left): out along the
+// bottom, up the outside, in over the rim, down the inside, in along the inner floor.
+std::vector<Eigen::Vector2d> cupProfile(double radius, double height, double wall, double bottom)
+{
+  requirePositive(radius, "cup radius");
+  requirePositive(height, "cup height");
+  requirePositive(wall, "cup wall");
+  requirePositive(bottom, "cup bottom");
+  if (wall >= radius || bottom >= height)
+  {
+    throw InputError("a cup's wall must be thinner than its radius and its bottom lower than its height");
+  }
+  return {{0.0, 0.0}, {radius, 0.0}, {radius, height}, {radius - wall, height}, {radius - wall, bottom}, {0.0, bottom}};
+}
+}  // namespace
+
+TriangleSoup makeCup(double radius, double height, double wall, double bottom, int segments)
+{
+  return makeRevolved(cupProfile(radius, height, wall, bottom), segments);
+}
+
+TriangleSoup makePlate(double radius, double height, double thickness, int segments)
+{
+  requirePositive(radius, "plate radius");
+  requirePositive(height, "plate height");
+  requirePositive(thickness, "plate thickness");
+  if (thickness >= height || thickness >= 0.3 * radius)
+  {
+    throw InputError("a plate must be thinner than its height and than 0.3 of its radius");
+  }
+  // A flat floor out to 0.6 of the radius, then a rim sloping up to the full radius.
+  const double foot = 0.6 * radius;
+  return makeRevolved({{0.0, 0.0},
+                       {foot, 0.0},
+                       {radius, height},
+                       {radius - thickness, height},
+                       {foot - thickness / 2.0, thickness},
+                       {0.0, thickness}},
+                      segments);
+}
+
+TriangleSoup makeMug(double radius, double height, double wall, double bottom, int segments)
+{
+  TriangleSoup soup = makeRevolved(cupProfile(radius, height, wall, bottom), segments);
   // The handle: a torus about z turned into the x-z plane (a rotation keeps its winding).
   const double major = 0.45 * height / 2.0;
   const TriangleSoup ring = makeTorus(major, wall, segments, 8);

@@ -52,6 +52,27 @@ double enclosedVolume(const TriangleMesh& mesh)
   return volume;
 }
 
+std::unique_ptr<CollisionShape> makeTriangleMeshShape(const TriangleMesh& mesh, double margin)
+{
+  auto result = std::make_unique<CollisionShape>();
+  for (const Eigen::Vector3d& v : mesh.vertices())
+  {
+    result->vertices.insert(result->vertices.end(), {v.x(), v.y(), v.z()});
+  }
+  for (const Eigen::Vector3i& t : mesh.triangles())
+  {
+    result->indices.insert(result->indices.end(), {t[0], t[1], t[2]});
+  }
+  result->triangle_array =
+      std::make_unique<btTriangleIndexVertexArray>(mesh.triangleCount(), result->indices.data(), 3 * sizeof(int),
+                                                   mesh.vertexCount(), result->vertices.data(), 3 * sizeof(btScalar));
+  auto shape = std::make_unique<btBvhTriangleMeshShape>(result->triangle_array.get(), true);
+  shape->setMargin(margin);
+  result->shape = shape.get();
+  result->owned.push_back(std::move(shape));
+  return result;
+}
+
 std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, const TriangleMesh& walk_mesh,
                                                    bool is_static, double margin)
 {
@@ -88,22 +109,7 @@ std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, con
   const TriangleMesh& mesh = walk_mesh;
   if (is_static)
   {
-    for (const Eigen::Vector3d& v : mesh.vertices())
-    {
-      result->vertices.insert(result->vertices.end(), {v.x(), v.y(), v.z()});
-    }
-    for (const Eigen::Vector3i& t : mesh.triangles())
-    {
-      result->indices.insert(result->indices.end(), {t[0], t[1], t[2]});
-    }
-    result->triangle_array =
-        std::make_unique<btTriangleIndexVertexArray>(mesh.triangleCount(), result->indices.data(), 3 * sizeof(int),
-                                                     mesh.vertexCount(), result->vertices.data(), 3 * sizeof(btScalar));
-    auto shape = std::make_unique<btBvhTriangleMeshShape>(result->triangle_array.get(), true);
-    shape->setMargin(margin);
-    result->shape = shape.get();
-    result->owned.push_back(std::move(shape));
-    return result;
+    return makeTriangleMeshShape(mesh, margin);
   }
   std::vector<btScalar> coordinates;
   for (const Eigen::Vector3d& v : mesh.vertices())

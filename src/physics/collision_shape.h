@@ -35,6 +35,10 @@ struct CollisionShape
 std::unique_ptr<CollisionShape> makeCollisionShape(const Geometry& geometry, const TriangleMesh& walk_mesh,
                                                    bool is_static, double margin = 0.0005);
 
+// `mesh`'s own triangles as a btBvhTriangleMeshShape (exact; a static mesh's collision shape,
+// and the surface fingers touch on a body that collides through hulls: scene_body.h).
+std::unique_ptr<CollisionShape> makeTriangleMeshShape(const TriangleMesh& mesh, double margin = 0.0005);
+
 // Volume enclosed by a closed mesh (m^3); meaningless for open meshes.
 double enclosedVolume(const TriangleMesh& mesh);
 }  // namespace god_finger::internal

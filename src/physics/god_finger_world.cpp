@@ -11,12 +11,14 @@
 #include "god_finger/geometry/surface_locator.h"
 #include "god_finger/scene/scene_budget.h"
 #include "sleep/hooked_world.h"
+#include "near_callback.h"
 #include "overlap_push.h"
 #include "solver/pad_constraints.h"
 #include "proxy.h"
 #include "proxy_touches.h"
 #include "scene_body.h"
 #include "sleep/slept_contacts.h"
+#include "start_overlaps.h"
 #include "solver/sub_god_object_injection.h"
 #include "world_bounds.h"
 
@@ -42,6 +44,7 @@ struct GodFingerWorld::Impl
   Eigen::AlignedBox3d bounds;  // world_bounds.h: set by buildWorld
   SceneDescription scene;
   std::vector<Body> bodies;
+  std::vector<std::string> start_warnings;  // startWarnings()
   std::vector<Proxy> proxies;
   std::unique_ptr<btDefaultCollisionConfiguration> configuration;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
@@ -98,24 +101,11 @@ struct GodFingerWorld::Impl
     }
   }
 
-  // Bullet's near callback, with the test that skips a pair of sleeping (or static) bodies first:
-  // a resting table of 1000 boxes has 1000 such pairs, visited every step.
-  static void nearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info)
-  {
-    const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
-    const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-    if (!a->isActive() && !b->isActive())
-    {
-      return;
-    }
-    btCollisionDispatcher::defaultNearCallback(pair, dispatcher, info);
-  }
-
   void buildWorld()
   {
     configuration = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
-    dispatcher->setNearCallback(&Impl::nearCallback);
+    dispatcher->setNearCallback(&worldNearCallback);
     broadphase = std::make_unique<btDbvtBroadphase>();
     solver = std::make_unique<ContactSolver>(params.support_passes, &pads);
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
@@ -622,6 +612,12 @@ GodFingerWorld::GodFingerWorld(const SceneDescription& scene, const WorldParams&
   impl_->scene = scene;
   impl_->buildBodies();
   impl_->buildWorld();
+  impl_->start_warnings = startOverlaps(impl_->world.get(), impl_->bodies, impl_->scene);
+}
+
+const std::vector<std::string>& GodFingerWorld::startWarnings() const
+{
+  return impl_->start_warnings;
 }
 
 GodFingerWorld::~GodFingerWorld()
@@ -869,6 +865,20 @@ const SceneDescription& GodFingerWorld::scene() const
 const TriangleMesh& GodFingerWorld::walkMesh(int body) const
 {
   return *impl_->bodies.at(body).walk;
+}
+
+GodFingerWorld::BodyCollision GodFingerWorld::bodyCollision(int body) const
+{
+  const SceneBody& scene_body = impl_->bodies.at(body);
+  BodyCollision result;
+  const auto add = [&result](const CollisionShape& shape) { result.convex_hulls += shape.exact ? 0 : shape.convex_parts; };
+  add(*scene_body.collision);
+  for (const std::unique_ptr<CollisionShape>& part : scene_body.part_collisions)
+  {
+    add(*part);
+  }
+  result.fingers_touch_walk_mesh = scene_body.finger_surface != nullptr;
+  return result;
 }
 
 int GodFingerWorld::awakeBodyCount() const

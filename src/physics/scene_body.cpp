@@ -85,6 +85,16 @@ SceneBody makeSceneBody(const BodyDescription& description, double max_edge)
     body.walk = std::make_unique<TriangleMesh>(TriangleMesh::build(pieces));
   }
   body.locator = std::make_unique<SurfaceLocator>(*body.walk);
+  bool exact = body.collision->exact;
+  for (const std::unique_ptr<CollisionShape>& part : body.part_collisions)
+  {
+    exact = exact && part->exact;
+  }
+  if (!exact || description.visual_mesh)
+  {
+    body.finger_surface = std::make_unique<FingerSurface>();
+    body.finger_surface->mesh = makeTriangleMeshShape(*body.walk);
+  }
   if (!description.is_static)
   {
     // Bullet's body frame is the centre of mass on the principal axes of inertia.
@@ -123,5 +133,10 @@ void buildRigidBody(const BodyDescription& description, int index, SceneBody* bo
   body->rigid = std::make_unique<btRigidBody>(info);
   body->rigid->setUserIndex(kKindBody);
   body->rigid->setUserIndex2(index);
+  if (body->finger_surface)
+  {
+    body->finger_surface->in_body = toBullet(body->geometry_in_com);
+    body->rigid->setUserPointer(body->finger_surface.get());
+  }
 }
 }  // namespace god_finger::internal

@@ -23,6 +23,19 @@
 
 namespace god_finger::internal
 {
+// The surface the fingers collide with when it is not the body's collision shape: a hull or a
+// decomposition fills a hollow (a cup's, a plate's) and a visual mesh is the true surface, so a
+// finger touches the walk mesh itself, a BVH of its triangles placed in the body frame; so does
+// a free convex body (near_callback.h), while supports and other hollow bodies touch the
+// collision shape. The body's btCollisionObject user
+// pointer points to it (null when the collision shape is the walk surface: primitives, static
+// meshes, convex closed meshes). Read by the world's near callback, real-time safe.
+struct FingerSurface
+{
+  std::unique_ptr<CollisionShape> mesh;
+  btTransform in_body = btTransform::getIdentity();  // the walk mesh's frame in Bullet's body frame
+};
+
 struct SceneBody
 {
   std::unique_ptr<TriangleMesh> walk;
@@ -35,7 +48,8 @@ struct SceneBody
   // place in the geometry frame (the first piece's).
   std::vector<std::unique_ptr<CollisionShape>> part_collisions;
   std::vector<Eigen::Isometry3d> part_in_geometry;
-  std::unique_ptr<btCompoundShape> placed;  // the collision shape(s) placed in the centre-of-mass frame
+  std::unique_ptr<FingerSurface> finger_surface;  // null where the fingers touch `placed`
+  std::unique_ptr<btCompoundShape> placed;        // the collision shape(s) placed in the centre-of-mass frame
   std::unique_ptr<btRigidBody> rigid;
   Eigen::Isometry3d com_in_link = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d geometry_in_com = Eigen::Isometry3d::Identity();

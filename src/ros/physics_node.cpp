@@ -381,7 +381,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   const WorldParams params = readWorldParams(pnh);
   impl.publish_period = 1.0 / readNodeParams(pnh).publish_rate;
   std::string scene_path;
-  impl.world = std::make_unique<GodFingerWorld>(loadSceneParameter(pnh, &scene_path), params);
+  impl.world = loadSceneWorld(pnh, params, &scene_path);
   const std::vector<std::string> names = readStringList(pnh, "interfaces", {"finger"});
   impl.interfaces.resize(names.size());
   for (std::size_t i = 0; i < names.size(); ++i)

@@ -24,4 +24,14 @@ SceneDescription loadSceneParameter(const ros::NodeHandle& pnh, std::string* pat
   }
   return scene;
 }
+
+std::unique_ptr<GodFingerWorld> loadSceneWorld(const ros::NodeHandle& pnh, const WorldParams& params, std::string* path)
+{
+  auto world = std::make_unique<GodFingerWorld>(loadSceneParameter(pnh, path), params);
+  for (const std::string& warning : world->startWarnings())
+  {
+    ROS_WARN("scene '%s': %s", path->c_str(), warning.c_str());
+  }
+  return world;
+}
 }  // namespace god_finger

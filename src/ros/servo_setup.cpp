@@ -28,7 +28,7 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
   loop_params.simulated_time = sim_time;
   loop_params.snapshot_every = std::max(1, static_cast<int>(std::lround(loop_params.rate / node_params.publish_rate)));
   std::string scene_path;
-  auto world = std::make_unique<GodFingerWorld>(loadSceneParameter(pnh, &scene_path), world_params);
+  auto world = loadSceneWorld(pnh, world_params, &scene_path);
   const std::vector<std::string> interface_names = readStringList(pnh, "interfaces", {"finger"});
   std::vector<std::string> names;  // one per finger
   // Simulated devices start their scripts together: on simulated time script_delay after 0,

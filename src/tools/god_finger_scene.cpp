@@ -7,8 +7,9 @@
 // root link is the body, a scene list). Prints a summary: each body (fixed or free, mass,
 // collision pieces, the surface the pad walks on and its triangles), the load time (file and
 // world, convex decompositions included). With --touch BODY, lets the scene settle for 0.5 s,
-// then brings a finger straight down over the body's centre of mass from above its highest point,
-// to 5 mm below that height, and holds it there (1 s in all), and
+// then brings a finger straight down over the body's centre of mass from 3 cm above its highest
+// point to 5 mm below the surface under it (a ball's top, a cup's inner floor), and holds it
+// there (1 s in all), and
 // reports the contact area (radius, sub-god-objects), the force on the hand and how the body
 // moved. Exit codes: 0 success, 2 bad options or a scene that cannot be used (one line on
 // stderr naming the file and the problem, as the physics node would print it).
@@ -57,18 +58,43 @@ double secondsSince(std::chrono::steady_clock::time_point start)
 
 // Over `body`'s centre of mass, at the height of its walk surface's highest point (m, world):
 // where a finger coming straight down first meets it (a stool's seat, a cup's hollow).
-Eigen::Vector3d topOf(const god_finger::GodFingerWorld& world, int body)
+// Where a finger coming straight down over the body's centre (its centre of mass; a static
+// body's link origin) first meets its surface: the highest crossing of that vertical with the
+// walk mesh (a cup's inner floor, a ball's top), or the mesh's highest point when the vertical
+// misses it (a ring's hole); `highest` is the mesh's highest point (m, world z).
+Eigen::Vector3d surfaceUnderFinger(const god_finger::GodFingerWorld& world, int body, double* highest)
 {
   const god_finger::BodyDescription& description = world.scene().bodies[body];
   const god_finger::BodyState state = world.bodyState(body);
   const Eigen::Isometry3d to_world = state.pose * description.collision_origin;
-  double top = -1e300;
-  for (const Eigen::Vector3d& vertex : world.walkMesh(body).vertices())
-  {
-    top = std::max(top, (to_world * vertex).z());
-  }
   const Eigen::Vector3d centre = description.is_static ? state.pose.translation() : state.center_of_mass;
-  return Eigen::Vector3d(centre.x(), centre.y(), top);
+  const god_finger::TriangleMesh& mesh = world.walkMesh(body);
+  double top = -1e300;
+  double crossing = -1e300;
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+  {
+    const Eigen::Vector3d a = to_world * mesh.corner(t, 0);
+    const Eigen::Vector3d b = to_world * mesh.corner(t, 1);
+    const Eigen::Vector3d c = to_world * mesh.corner(t, 2);
+    top = std::max({top, a.z(), b.z(), c.z()});
+    // The vertical through the centre in the triangle's (x, y) projection: barycentric weights.
+    const Eigen::Vector2d ab = (b - a).head<2>();
+    const Eigen::Vector2d ac = (c - a).head<2>();
+    const Eigen::Vector2d ap = (centre - a).head<2>();
+    const double area = ab.x() * ac.y() - ab.y() * ac.x();
+    if (std::abs(area) < 1e-18)
+    {
+      continue;  // seen edge-on from above
+    }
+    const double u = (ap.x() * ac.y() - ap.y() * ac.x()) / area;
+    const double v = (ab.x() * ap.y() - ab.y() * ap.x()) / area;
+    if (u >= 0.0 && v >= 0.0 && u + v <= 1.0)
+    {
+      crossing = std::max(crossing, a.z() + u * (b.z() - a.z()) + v * (c.z() - a.z()));
+    }
+  }
+  *highest = top;
+  return Eigen::Vector3d(centre.x(), centre.y(), crossing > -1e300 ? crossing : top);
 }
 
 int touch(god_finger::GodFingerWorld* world, int body)
@@ -78,22 +104,26 @@ int touch(god_finger::GodFingerWorld* world, int body)
   {
     world->step();
   }
-  const Eigen::Vector3d top = topOf(*world, body);
+  double highest = 0.0;
+  const Eigen::Vector3d top = surfaceUnderFinger(*world, body, &highest);
   const god_finger::BodyState before = world->bodyState(body);
-  const int finger = world->addInterface(top + Eigen::Vector3d(0.0, 0.0, 0.03));
-  // Down in 0.3 s (as a hand comes down), then held 5 mm into the body for 0.7 s.
+  // From 3 cm above the body's highest point (over a cup's rim), down in 0.3 s (as a hand comes
+  // down), then held 5 mm into the surface under it for 0.7 s.
+  const double start = highest + 0.03 - top.z();
+  const int finger = world->addInterface(top + Eigen::Vector3d(0.0, 0.0, start));
   const int steps = static_cast<int>(std::lround(1.0 / dt));
   for (int i = 1; i <= steps; ++i)
   {
     const double t = i * dt;
-    const double depth = t < 0.3 ? -0.03 + 0.035 * t / 0.3 : 0.005;
+    const double depth = t < 0.3 ? -start + (start + 0.005) * t / 0.3 : 0.005;
     world->setInterfaceTarget(finger, top - Eigen::Vector3d(0.0, 0.0, depth));
     world->step();
   }
   const god_finger::InterfaceState& state = world->interfaceState(finger);
   const god_finger::BodyState after = world->bodyState(body);
   std::printf(
-      "touch '%s': a finger down over its centre, to 5 mm below its top (%.4f, %.4f, %.4f) m, held 0.7 s (%s):\n",
+      "touch '%s': a finger down over its centre, to 5 mm below its surface there (%.4f, %.4f, %.4f) m, held 0.7 s "
+      "(%s):\n",
       world->scene().bodies[body].name.c_str(), top.x(), top.y(), top.z(),
       god_finger::contactModelName(world->contactModel()));
   int touching = -1;
@@ -179,11 +209,24 @@ int main(int argc, char** argv)
       {
         std::printf(" + %s", geometryName(part.geometry.kind));
       }
+      const god_finger::GodFingerWorld::BodyCollision collision = world.bodyCollision(i);
+      if (collision.convex_hulls > 0)
+      {
+        std::printf(" (%d convex hull%s)", collision.convex_hulls, collision.convex_hulls == 1 ? "" : "s");
+      }
+      if (collision.fingers_touch_walk_mesh)
+      {
+        std::printf("; fingers touch its true surface");
+      }
       std::printf("; the pad walks on %s, %zu triangles\n",
                   body.visual_mesh ? "its visual mesh" : (body.more_parts.empty() ? "it" : "all its pieces"),
                   world.walkMesh(i).triangles().size());
     }
     for (const std::string& warning : scene.warnings)
+    {
+      std::printf("warning: %s\n", warning.c_str());
+    }
+    for (const std::string& warning : world.startWarnings())
     {
       std::printf("warning: %s\n", warning.c_str());
     }

@@ -115,6 +115,43 @@ TEST(MeshPrimitives, MugIsACupAndARingHandle)
   EXPECT_THROW(makeMug(0.04, 0.09, 0.005, 0.006, 2), InputError);
 }
 
+// The volume a closed (r, z) profile sweeps about z, by Pappus: 2 pi times the profile's area
+// times its centroid's r.
+double revolvedVolume(const std::vector<Eigen::Vector2d>& profile)
+{
+  double twice_area = 0.0;
+  double six_area_r = 0.0;
+  for (std::size_t i = 0; i < profile.size(); ++i)
+  {
+    const Eigen::Vector2d& p = profile[i];
+    const Eigen::Vector2d& q = profile[(i + 1) % profile.size()];
+    const double cross = p.x() * q.y() - q.x() * p.y();
+    twice_area += cross;
+    six_area_r += (p.x() + q.x()) * cross;
+  }
+  return 2.0 * M_PI * six_area_r / 6.0;
+}
+
+TEST(MeshPrimitives, CupAndPlateAreClosedHollowRevolvedShapes)
+{
+  // 96 segments: the polygon's volume is within 0.1 % of the revolved profile's.
+  const TriangleMesh cup = TriangleMesh::build(makeCup(0.04, 0.08, 0.004, 0.012, 96));
+  const double cup_volume =
+      revolvedVolume({{0, 0}, {0.04, 0}, {0.04, 0.08}, {0.036, 0.08}, {0.036, 0.012}, {0, 0.012}});
+  expectClosedAndOutward(cup, 2, cup_volume, 0.002 * cup_volume);
+  const TriangleMesh plate = TriangleMesh::build(makePlate(0.1, 0.02, 0.004, 96));
+  const double plate_volume =
+      revolvedVolume({{0, 0}, {0.06, 0}, {0.1, 0.02}, {0.096, 0.02}, {0.058, 0.004}, {0, 0.004}});
+  expectClosedAndOutward(plate, 2, plate_volume, 0.002 * plate_volume);
+  // Hollow: the cup holds far less than the cylinder it fills.
+  EXPECT_LT(cup_volume, 0.35 * M_PI * 0.04 * 0.04 * 0.08);
+  EXPECT_THROW(makeCup(0.04, 0.08, 0.04, 0.012, 32), InputError);
+  EXPECT_THROW(makePlate(0.1, 0.02, 0.02, 32), InputError);
+  EXPECT_THROW(makePlate(0.1, 0.02, 0.004, 2), InputError);
+  EXPECT_THROW(makeRevolved({{0, 0}, {-0.01, 0}, {0, 0.01}}, 8), InputError);
+  EXPECT_THROW(makeRevolved({{0, 0}, {0.01, 0}}, 8), InputError);
+}
+
 TEST(MeshPrimitives, GridCoversTheSquareExactly)
 {
   const TriangleMesh grid = TriangleMesh::build(makeGrid(1.0, 7));

@@ -1,5 +1,6 @@
 // god_finger_scene as a user runs it: the shipped scene list's summary (bodies, the surface each
-// pad walks on), a touch on its ball (an area, a force, the ball held by the table), and one
+// pad walks on), a touch on its ball (an area, a force, the ball held by the table) and on its
+// hollow mug (the finger on its inner floor), and one
 // line and exit code 2 for a scene that cannot be used or a body that is not there.
 #include "tool_run.h"
 
@@ -42,7 +43,8 @@ TEST(SceneTool, TouchesABodyAndReportsTheAreaAndTheForce)
   const test::ToolRun run = test::runTool(GOD_FINGER_SCENE_TOOL, kList + " --touch ball");
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_NE(
-      run.out.find("touch 'ball': a finger down over its centre, to 5 mm below its top (0.0000, 0.0000, 0.0800) m"),
+      run.out.find("touch 'ball': a finger down over its centre, to 5 mm below its surface there (0.0000, 0.0000, "
+                   "0.0800) m"),
       std::string::npos)
       << run.out;
   const std::size_t radius = run.out.find("contact area: radius ");
@@ -51,6 +53,25 @@ TEST(SceneTool, TouchesABodyAndReportsTheAreaAndTheForce)
   const std::size_t force = run.out.find("force on the hand: ");
   ASSERT_NE(force, std::string::npos) << run.out;
   EXPECT_GT(std::stod(run.out.substr(force + 19)), 1.0) << run.out;
+}
+
+// The mug is hollow: the finger comes down over its rim into it and presses its inner floor
+// (6 mm above its base, which rests 0.5 mm above the table), not a lid over the opening at the
+// rim's 9 cm.
+TEST(SceneTool, TouchesTheMugsInnerFloor)
+{
+  const test::ToolRun run = test::runTool(GOD_FINGER_SCENE_TOOL, kList + " --touch mug");
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("convex hulls); fingers touch its true surface; the pad walks on it"), std::string::npos)
+      << run.out;
+  const std::size_t stopped = run.out.find("the finger (its god-object) stopped at z ");
+  ASSERT_NE(stopped, std::string::npos) << run.out;
+  const double z = std::stod(run.out.substr(stopped + 41));
+  // The god-object's centre: its 3 mm radius above the 6.5 mm floor, within Bullet's margins.
+  EXPECT_NEAR(z, 0.0065 + 0.003, 1.5e-3) << run.out;
+  const std::size_t force = run.out.find("force on the hand: ");
+  ASSERT_NE(force, std::string::npos) << run.out;
+  EXPECT_GT(std::stod(run.out.substr(force + 19)), 1.0) << "the floor holds the finger up: " << run.out;
 }
 
 TEST(SceneTool, ABadSceneOrBodyIsOneLineAndExitCodeTwo)

@@ -5,6 +5,9 @@
 
 #include "god_finger/geometry/triangle_mesh.h"
 
+#include <Eigen/Core>
+#include <vector>
+
 namespace god_finger
 {
 // Axis-aligned box with the given half extents; each face split into 2 triangles.
@@ -21,6 +24,16 @@ TriangleSoup makeTorus(double major_radius, double minor_radius, int major_segme
 // Closed L-shaped block (concave along one edge), extruded along y over [-depth/2, depth/2]:
 // the union of [0,2a]x[0,a] and [0,a]x[0,2a] in the x-z plane, with a = arm.
 TriangleSoup makeLBlock(double arm, double depth);
+// A closed profile in the (r, z) half-plane, counter-clockwise (the section on its left), revolved
+// about z in `segments`: a point at r = 0 is one vertex on the axis. Throws InputError for fewer
+// than 3 segments or points, a negative r or a non-finite point.
+TriangleSoup makeRevolved(const std::vector<Eigen::Vector2d>& profile, int segments);
+// Cup standing on z = 0, axis z, open at the top (hollow: its inner floor at z = `bottom`):
+// outer radius `radius`, height `height`, wall `wall`, bottom `bottom` thick.
+TriangleSoup makeCup(double radius, double height, double wall, double bottom, int segments);
+// Plate standing on z = 0, axis z: a flat floor out to 0.6 `radius` (its top at z =
+// `thickness`), then a rim sloping up to `radius` at z = `height`; `thickness` thick throughout.
+TriangleSoup makePlate(double radius, double height, double thickness, int segments);
 // Mug standing on z = 0, axis z: a cup (outer radius `radius`, height `height`, wall `wall`,
 // bottom `bottom` thick, open at the top; a closed profile revolved in `segments`) and a ring
 // handle on +x (a torus of major radius 0.45 height / 2 and minor radius wall, in the x-z plane,

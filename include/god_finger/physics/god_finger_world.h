@@ -31,10 +31,10 @@
 // original triangle mesh even where collision uses a convex decomposition.
 #pragma once
 
-#include "god_finger/support/input_error.h"
 #include "god_finger/physics/world_params.h"
 #include "god_finger/physics/world_state.h"
 #include "god_finger/scene/scene_description.h"
+#include "god_finger/support/input_error.h"
 
 #include <Eigen/Geometry>
 #include <memory>
@@ -116,6 +116,20 @@ class GodFingerWorld
   // the body or interface count (so a snapshot buffer filled once never allocates again).
   void snapshot(WorldSnapshot* out) const;
   const TriangleMesh& walkMesh(int body) const;
+  // What the user should know about the scene as the world found it when it was made, one line
+  // each: bodies that start inside one another (src/physics/start_overlaps.h). Whoever builds the
+  // world prints them, as it prints the scene's own warnings.
+  const std::vector<std::string>& startWarnings() const;
+  // How `body` collides: the convex hulls its pieces collide with other bodies as (0 when every
+  // piece collides exactly: primitives, static meshes), and whether fingers (and free convex
+  // bodies) touch its walk mesh itself instead (a hollow or a visual surface the hulls would
+  // fill or miss: src/physics/near_callback.h).
+  struct BodyCollision
+  {
+    int convex_hulls = 0;
+    bool fingers_touch_walk_mesh = false;
+  };
+  BodyCollision bodyCollision(int body) const;
   // Dynamic bodies awake now (simulated in the next step); static bodies never count.
   int awakeBodyCount() const;
   // Contact points between a proxy and an object the solver received in the last step (test

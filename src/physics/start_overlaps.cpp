@@ -1,0 +1,59 @@
+#include "start_overlaps.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace god_finger::internal
+{
+namespace
+{
+// The deepest penetration Bullet reports between two objects (m, >= 0).
+struct DeepestContact : btCollisionWorld::ContactResultCallback
+{
+  double depth = 0.0;
+  btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
+                           const btCollisionObjectWrapper*, int, int) override
+  {
+    depth = std::max(depth, -static_cast<double>(point.getDistance()));
+    return 0;
+  }
+};
+}  // namespace
+
+std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vector<SceneBody>& bodies,
+                                       const SceneDescription& scene)
+{
+  std::vector<std::string> warnings;
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+  {
+    btVector3 min_i;
+    btVector3 max_i;
+    bodies[i].rigid->getAabb(min_i, max_i);
+    for (std::size_t j = i + 1; j < bodies.size(); ++j)
+    {
+      if (scene.bodies[i].is_static && scene.bodies[j].is_static)
+      {
+        continue;  // a fixed scene's own parts may interlock
+      }
+      btVector3 min_j;
+      btVector3 max_j;
+      bodies[j].rigid->getAabb(min_j, max_j);
+      if (!TestAabbAgainstAabb2(min_i, max_i, min_j, max_j))
+      {
+        continue;
+      }
+      DeepestContact contact;
+      world->contactPairTest(bodies[i].rigid.get(), bodies[j].rigid.get(), contact);
+      if (contact.depth > kStartOverlapDepth)
+      {
+        char line[96];
+        std::snprintf(line, sizeof(line), "%.1f mm", 1e3 * contact.depth);
+        warnings.push_back("bodies '" + scene.bodies[i].name + "' and '" + scene.bodies[j].name + "' start " + line +
+                           " inside each other (more than " + std::to_string(int(1e3 * kStartOverlapDepth)) +
+                           " mm): the first step pushes them apart; move one of them");
+      }
+    }
+  }
+  return warnings;
+}
+}  // namespace god_finger::internal

@@ -1,0 +1,30 @@
+// Bodies that start inside one another: a scene whose bodies overlap by more than a contact's
+// worth at load (an object placed into the table, two objects at one place) explodes apart on
+// the first step, and the user should know which and by how much. Internal to physics.
+//
+// Units: m, the collision shapes' (hulls for free meshes). Not real-time safe (run once, when
+// the world is built); it leaves the world's own pairs and manifolds untouched, so a world
+// steps bit for bit as it would without the check.
+#pragma once
+
+#include "scene_body.h"
+
+#include "god_finger/scene/scene_description.h"
+
+#include <btBulletCollisionCommon.h>
+
+#include <string>
+#include <vector>
+
+namespace god_finger::internal
+{
+// Bodies penetrate more than this at load: warned about (Bullet's margins and a scene list's
+// 0.5 mm placements stay far below it).
+constexpr double kStartOverlapDepth = 0.002;  // m
+
+// One line per pair of bodies (at least one of them free) that start more than
+// kStartOverlapDepth inside each other, naming both and the depth. `bodies` are in `world`,
+// indexed as `scene`'s.
+std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vector<SceneBody>& bodies,
+                                       const SceneDescription& scene);
+}  // namespace god_finger::internal
