@@ -2,24 +2,26 @@
 
 #include "bullet_helpers.h"
 #include "contact_response.h"
-#include "solver/contact_solver.h"
-#include "sleep/dormant_bodies.h"
-#include "solver/finger_contact_friction.h"
-#include "god_finger/support/input_error.h"
-#include "god_finger/haptics/orientation_path.h"
 #include "god_finger/contact/primitive_walk.h"
 #include "god_finger/geometry/surface_locator.h"
+#include "god_finger/haptics/orientation_path.h"
+#include "god_finger/physics/joint_measure.h"
 #include "god_finger/scene/scene_budget.h"
-#include "sleep/hooked_world.h"
+#include "god_finger/support/input_error.h"
 #include "near_callback.h"
 #include "overlap_push.h"
-#include "solver/pad_constraints.h"
 #include "proxy.h"
 #include "proxy_touches.h"
 #include "scene_body.h"
+#include "scene_joints.h"
+#include "sleep/dormant_bodies.h"
+#include "sleep/hooked_world.h"
 #include "sleep/slept_contacts.h"
-#include "start_overlaps.h"
+#include "solver/contact_solver.h"
+#include "solver/finger_contact_friction.h"
+#include "solver/pad_constraints.h"
 #include "solver/sub_god_object_injection.h"
+#include "start_overlaps.h"
 #include "world_bounds.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -45,6 +47,58 @@ struct GodFingerWorld::Impl
   SceneDescription scene;
   std::vector<Body> bodies;
   std::vector<std::string> start_warnings;  // startWarnings()
+  // The scene's joints' constraints (scene_joints.h), by joint index; jointed[body]: a joint's
+  // parent or child, which never sleeps (a sleeping body leaves Bullet's world, its constraint
+  // cannot).
+  std::vector<std::unique_ptr<btTypedConstraint>> joints;
+  std::vector<char> jointed;
+
+  BodyState bodyState(int body) const
+  {
+    const Body& b = bodies.at(body);
+    BodyState state;
+    const Eigen::Isometry3d com = toEigen(b.rigid->getWorldTransform());
+    state.pose = com * b.com_in_link.inverse();
+    state.center_of_mass = com.translation();
+    state.linear_velocity = toEigen(b.rigid->getLinearVelocity());
+    state.angular_velocity = toEigen(b.rigid->getAngularVelocity());
+    state.net_force = b.net_force;
+    state.asleep = dormant.dormant(body) || b.rigid->getActivationState() == ISLAND_SLEEPING;
+    state.left_world = b.left_world;
+    state.left_world_at = b.left_world_at;
+    return state;
+  }
+
+  JointState jointState(int index) const
+  {
+    const JointDescription& joint = scene.joints.at(index);
+    if (joint.parent < 0)
+    {
+      return measureJoint(joint, nullptr, bodyState(joint.child));
+    }
+    const BodyState parent = bodyState(joint.parent);
+    return measureJoint(joint, &parent, bodyState(joint.child));
+  }
+
+  // The joints' constraints, between bodies already in the world.
+  void buildJoints()
+  {
+    for (const JointDescription& joint : scene.joints)
+    {
+      joints.push_back(
+          makeJointConstraint(joint, joint.parent < 0 ? nullptr : &bodies[joint.parent], bodies[joint.child]));
+      world->addConstraint(joints.back().get(), true);  // no contacts between a joint's two bodies
+    }
+  }
+
+  // Before each step: every joint's friction and damping at its current speed.
+  void resistJoints()
+  {
+    for (std::size_t i = 0; i < joints.size(); ++i)
+    {
+      resistJointMotion(scene.joints[i], jointState(static_cast<int>(i)), params.time_step, joints[i].get());
+    }
+  }
   std::vector<Proxy> proxies;
   std::unique_ptr<btDefaultCollisionConfiguration> configuration;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
@@ -124,6 +178,12 @@ struct GodFingerWorld::Impl
     world->setForceUpdateAllAabbs(false);
     injector = std::make_unique<SubGodObjectInjector>(dispatcher.get());
     chooseResponse();
+    jointed.assign(bodies.size(), 0);
+    for (const JointDescription& joint : scene.joints)
+    {
+      jointed[joint.child] = 1;
+      jointed[joint.parent < 0 ? joint.child : joint.parent] = 1;
+    }
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
       Body& body = bodies[i];
@@ -133,6 +193,7 @@ struct GodFingerWorld::Impl
       body.previous_velocity = Eigen::Vector3d::Zero();
       body.net_force = Eigen::Vector3d::Zero();
     }
+    buildJoints();
     Eigen::AlignedBox3d scene_box;
     for (const Body& body : bodies)
     {
@@ -274,7 +335,7 @@ struct GodFingerWorld::Impl
   void prepareSleep(btRigidBody* rigid) const
   {
     const SleepParams& sleep = params.sleep;
-    if (sleep.time <= 0.0)
+    if (sleep.time <= 0.0 || jointed[rigid->getUserIndex2()])
     {
       rigid->setActivationState(DISABLE_DEACTIVATION);
       return;
@@ -548,6 +609,7 @@ struct GodFingerWorld::Impl
     {
       bodies[index].previous_velocity = toEigen(bodies[index].rigid->getLinearVelocity());
     }
+    resistJoints();
     solver->resetCounts();
     world->stepSimulation(dt, 0);
     injector->recordImpulses(&proxies, steps);
@@ -578,6 +640,11 @@ struct GodFingerWorld::Impl
     }
     injector->release();
     pads.clear();
+    for (const std::unique_ptr<btTypedConstraint>& joint : joints)
+    {
+      world->removeConstraint(joint.get());
+    }
+    joints.clear();
     for (Proxy& proxy : proxies)
     {
       world->removeRigidBody(proxy.rigid.get());
@@ -607,6 +674,7 @@ GodFingerWorld::GodFingerWorld(const SceneDescription& scene, const WorldParams&
 {
   validateOrThrow(params);
   checkSceneFits(scene, params.walk_edge_per_max_radius * params.contact.max_radius);
+  checkJoints(scene);
   useFingerRollingFriction();
   impl_->params = params;
   impl_->scene = scene;
@@ -826,18 +894,17 @@ int GodFingerWorld::bodyCount() const
 
 BodyState GodFingerWorld::bodyState(int body) const
 {
-  const Impl::Body& b = impl_->bodies.at(body);
-  BodyState state;
-  const Eigen::Isometry3d com = toEigen(b.rigid->getWorldTransform());
-  state.pose = com * b.com_in_link.inverse();
-  state.center_of_mass = com.translation();
-  state.linear_velocity = toEigen(b.rigid->getLinearVelocity());
-  state.angular_velocity = toEigen(b.rigid->getAngularVelocity());
-  state.net_force = b.net_force;
-  state.asleep = impl_->dormant.dormant(body) || b.rigid->getActivationState() == ISLAND_SLEEPING;
-  state.left_world = b.left_world;
-  state.left_world_at = b.left_world_at;
-  return state;
+  return impl_->bodyState(body);
+}
+
+int GodFingerWorld::jointCount() const
+{
+  return static_cast<int>(impl_->scene.joints.size());
+}
+
+JointState GodFingerWorld::jointState(int joint) const
+{
+  return impl_->jointState(joint);
 }
 
 void GodFingerWorld::snapshot(WorldSnapshot* out) const
@@ -871,7 +938,8 @@ GodFingerWorld::BodyCollision GodFingerWorld::bodyCollision(int body) const
 {
   const SceneBody& scene_body = impl_->bodies.at(body);
   BodyCollision result;
-  const auto add = [&result](const CollisionShape& shape) { result.convex_hulls += shape.exact ? 0 : shape.convex_parts; };
+  const auto add = [&result](const CollisionShape& shape)
+  { result.convex_hulls += shape.exact ? 0 : shape.convex_parts; };
   add(*scene_body.collision);
   for (const std::unique_ptr<CollisionShape>& part : scene_body.part_collisions)
   {

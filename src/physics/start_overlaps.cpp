@@ -35,6 +35,16 @@ std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vecto
       {
         continue;  // a fixed scene's own parts may interlock
       }
+      const auto joined = [i, j](const JointDescription& joint)
+      {
+        const int parent = joint.parent;
+        const int child = joint.child;
+        return (parent == int(i) && child == int(j)) || (parent == int(j) && child == int(i));
+      };
+      if (std::any_of(scene.joints.begin(), scene.joints.end(), joined))
+      {
+        continue;  // a drawer in its cabinet: a joint's two bodies do not collide
+      }
       btVector3 min_j;
       btVector3 max_j;
       bodies[j].rigid->getAabb(min_j, max_j);

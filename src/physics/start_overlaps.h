@@ -22,7 +22,8 @@ namespace god_finger::internal
 // 0.5 mm placements stay far below it).
 constexpr double kStartOverlapDepth = 0.002;  // m
 
-// One line per pair of bodies (at least one of them free) that start more than
+// One line per pair of bodies (at least one of them free, not the two bodies of a joint, which
+// do not collide) that start more than
 // kStartOverlapDepth inside each other, naming both and the depth. `bodies` are in `world`,
 // indexed as `scene`'s.
 std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vector<SceneBody>& bodies,

@@ -78,6 +78,7 @@ struct PhysicsNode::Impl
   std::condition_variable pose_arrived;
   ros::Publisher contact_publisher;
   ros::Publisher marker_publisher;
+  ros::Publisher joint_publisher;  // joint_states, when the scene has joints
   ros::Publisher diagnostics_publisher;
   tf2_ros::TransformBroadcaster broadcaster;
   double publish_period = 1.0 / 60.0;
@@ -272,6 +273,10 @@ struct PhysicsNode::Impl
     contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
     marker_publisher.publish(markerMessage(scene, snapshot, proxy_radius, stamp));
     broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
+    if (!scene.joints.empty())
+    {
+      joint_publisher.publish(jointStateMessage(scene, snapshot, stamp));
+    }
     std::lock_guard<std::mutex> lock(mutex);
     left_world.update(scene, snapshot, stamp.toSec(),
                       [](const std::string& line) { ROS_WARN("physics: %s", line.c_str()); });
@@ -405,6 +410,10 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   }
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
+  if (!impl.world->scene().joints.empty())
+  {
+    impl.joint_publisher = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+  }
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.services = std::make_unique<WorldServices>(
       nh, pnh, params, [this](const ServoCommand& command, std::string* error) { return impl_->apply(command, error); },

@@ -68,6 +68,7 @@ struct ServoNode::Impl
   ros::Publisher clock_publisher;
   ros::Publisher contact_publisher;
   ros::Publisher marker_publisher;
+  ros::Publisher joint_publisher;  // joint_states, when the scene has joints
   ros::Publisher diagnostics_publisher;
   ros::ServiceServer stop_service;  // /stop_force
   tf2_ros::TransformBroadcaster broadcaster;
@@ -291,6 +292,10 @@ struct ServoNode::Impl
         contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
         marker_publisher.publish(markerMessage(scene, snapshot, loop->world().params().coupling.proxy_radius, stamp));
         broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
+        if (!scene.joints.empty())
+        {
+          joint_publisher.publish(jointStateMessage(scene, snapshot, stamp));
+        }
         left_world.update(scene, snapshot, stamp.toSec(),
                           [](const std::string& line) { ROS_WARN("servo: %s", line.c_str()); });
       }
@@ -372,6 +377,10 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   }
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
+  if (!impl.loop->world().scene().joints.empty())
+  {
+    impl.joint_publisher = nh.advertise<sensor_msgs::JointState>("joint_states", kPublisherQueue);
+  }
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.services = std::make_unique<WorldServices>(
       nh, pnh, world_params,

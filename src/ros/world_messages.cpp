@@ -1,5 +1,9 @@
 #include "world_messages.h"
 
+#include "god_finger/physics/joint_measure.h"
+
+#include <boost/make_shared.hpp>
+
 #include "god_finger/ros/conversions.h"
 #include "markers.h"
 
@@ -136,5 +140,25 @@ std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescripti
     transforms.push_back(transform);
   }
   return transforms;
+}
+
+sensor_msgs::JointStatePtr jointStateMessage(const SceneDescription& scene, const WorldSnapshot& world,
+                                             const ros::Time& stamp)
+{
+  auto message = boost::make_shared<sensor_msgs::JointState>();
+  message->header.stamp = stamp;
+  for (const JointDescription& joint : scene.joints)
+  {
+    if (joint.child >= static_cast<int>(world.bodies.size()) || joint.parent >= static_cast<int>(world.bodies.size()))
+    {
+      continue;
+    }
+    const JointState state =
+        measureJoint(joint, joint.parent < 0 ? nullptr : &world.bodies[joint.parent], world.bodies[joint.child]);
+    message->name.push_back(joint.name);
+    message->position.push_back(state.position);
+    message->velocity.push_back(state.velocity);
+  }
+  return message;
 }
 }  // namespace god_finger

@@ -11,6 +11,7 @@
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/time.h>
+#include <sensor_msgs/JointState.h>
 #include <visualization_msgs/MarkerArray.h>
 
 #include <string>
@@ -42,6 +43,10 @@ geometry_msgs::TransformStamped interfaceTransform(const geometry_msgs::PoseStam
 // normalises it, or ignores and counts it when unusable).
 bool poseOrientation(const geometry_msgs::Pose& pose, Eigen::Quaterniond* orientation);
 geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position);
+// The scene's joints (articulated objects) as sensor_msgs/JointState: name, position (rad or m)
+// and velocity per joint, in the scene's order (joint_measure.h), no effort.
+sensor_msgs::JointStatePtr jointStateMessage(const SceneDescription& scene, const WorldSnapshot& world,
+                                             const ros::Time& stamp);
 std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescription& scene, const WorldSnapshot& world,
                                                             const ros::Time& stamp);
 }  // namespace god_finger

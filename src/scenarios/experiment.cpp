@@ -1,4 +1,6 @@
 #include "god_finger/scenarios/experiment.h"
+
+#include "god_finger/scenarios/joint_metrics.h"
 #include "god_finger/scenarios/overlap_metrics.h"
 #include "god_finger/scenarios/pinch_metrics.h"
 #include "god_finger/scenarios/scenario_metrics.h"
@@ -324,6 +326,68 @@ Script pinchCardScript(std::uint64_t seed)
   return script;
 }
 
+// door.urdf: a 30 x 40 cm door on a vertical hinge at the origin, closed along +x, its -y face at
+// y = -0.0075. A finger at the door's mid-height, `lever` = 27 cm from the hinge, comes to that
+// face from 4 cm away in 0.5 s, its target 4 mm inside where its proxy rests on the face (1.6 N
+// of coupling to start the door), then follows the face's arc open to 65 degrees in 3 s (0.5 to
+// 3.5 s; about 0.38 rad/s, the hinge's damping then asks 0.03 N m, 0.1 N at the finger) and holds
+// until 4.5 s. Asymmetry: the lever is off by the seed's jitter, the finger 3 mm above mid-height.
+Script doorScript(std::uint64_t seed)
+{
+  const double lever = 0.27 + seededJitter(seed);
+  const double z = 0.005 + 0.2 + 0.003;
+  const double inside = 0.0075 + 0.003 - 0.004;  // the target's distance from the hinge plane
+  const double open = 65.0 * M_PI / 180.0;
+  Script script;
+  script.scene_file = "door.urdf";
+  script.object = "door";
+  script.lift_start = 0.5;
+  script.lift_end = 3.5;
+  script.duration = 4.5;
+  const auto on_arc = [&](double angle, double off_face)
+  {
+    return xyz(lever * std::cos(angle) + off_face * std::sin(angle),
+               lever * std::sin(angle) - off_face * std::cos(angle), z);
+  };
+  std::vector<Waypoint> path = {{0.0, on_arc(0.0, 0.04)}, {script.lift_start, on_arc(0.0, inside)}};
+  const int pieces = 26;  // 2.5 degrees each: the chord strays 0.07 mm from the arc
+  for (int k = 1; k <= pieces; ++k)
+  {
+    const double share = static_cast<double>(k) / pieces;
+    path.push_back({script.lift_start + share * (script.lift_end - script.lift_start), on_arc(share * open, inside)});
+  }
+  path.push_back({script.duration, on_arc(open, inside)});
+  script.fingers.emplace_back(path);
+  return script;
+}
+
+// drawer.urdf: a handle-less drawer drawn 8 cm out of its cabinet, its top at z = 0.10 showing
+// from x = 0 to 0.08. A finger comes down onto that top at x = 5 cm in 0.5 s, its target 7.5 mm
+// inside where its proxy rests (3 N of coupling: a pad of friction 0.8 x 0.8 can pull 1.9 N),
+// waits 0.2 s, pulls 12 cm along +x in 2 s (0.06 m/s: the runners ask 0.5 N of friction and
+// 0.12 N of damping) and waits 0.3 s, then rises 4 cm by 3.5 s. Asymmetry: 3 mm (+ jitter) off
+// the drawer's middle along y.
+Script drawerScript(std::uint64_t seed)
+{
+  const double x = 0.05;
+  const double y = 0.003 + seededJitter(seed);
+  const double press = 0.10 + 0.003 - 0.0075;
+  const double pull = 0.12;
+  Script script;
+  script.scene_file = "drawer.urdf";
+  script.object = "drawer";
+  script.lift_start = 0.7;
+  script.lift_end = 2.7;
+  script.duration = 3.5;
+  script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(x, y, 0.14)},
+                                                    {0.5, xyz(x, y, press)},
+                                                    {script.lift_start, xyz(x, y, press)},
+                                                    {script.lift_end, xyz(x + pull, y, press)},
+                                                    {3.0, xyz(x + pull, y, press)},
+                                                    {script.duration, xyz(x + pull, y, 0.14)}});
+  return script;
+}
+
 Script scriptFor(const ExperimentOptions& options)
 {
   switch (options.scenario)
@@ -346,6 +410,10 @@ Script scriptFor(const ExperimentOptions& options)
       return pinchThinScript(options.seed);
     case Scenario::kPinchCard:
       return pinchCardScript(options.seed);
+    case Scenario::kDoor:
+      return doorScript(options.seed);
+    case Scenario::kDrawer:
+      return drawerScript(options.seed);
   }
   return slideScript(options.push_height, options.seed);
 }
@@ -466,6 +534,10 @@ const char* scenarioName(Scenario scenario)
       return "pinch_thin";
     case Scenario::kPinchCard:
       return "pinch_card";
+    case Scenario::kDoor:
+      return "door";
+    case Scenario::kDrawer:
+      return "drawer";
   }
   return "?";
 }
@@ -591,6 +663,12 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   {
     pinch = std::make_unique<PinchMetrics>(object, timesOf(script), world.bodyState(object));
   }
+  // door, drawer: the joint's (joint_metrics.h).
+  std::unique_ptr<JointMetrics> joint;
+  if (options.scenario == Scenario::kDoor || options.scenario == Scenario::kDrawer)
+  {
+    joint = std::make_unique<JointMetrics>(scene, timesOf(script));
+  }
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));
   ExperimentResult result;
@@ -618,6 +696,10 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
     if (pinch)
     {
       pinch->add(world.time(), world);
+    }
+    if (joint)
+    {
+      joint->add(world.time(), world);
     }
     csv.add(world.time(), state, world);
     if (sample_every > 0 && (i + 1) % sample_every == 0)
@@ -653,6 +735,13 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   if (pinch)
   {
     for (const auto& entry : pinch->metrics())
+    {
+      result.metrics.insert(entry);
+    }
+  }
+  if (joint)
+  {
+    for (const auto& entry : joint->metrics())
     {
       result.metrics.insert(entry);
     }

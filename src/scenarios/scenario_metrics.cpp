@@ -111,6 +111,9 @@ void ScenarioMetrics::add(double time, double dt, const BodyState& state)
       break;  // the plate is clamped: the hands' metrics are overlap_metrics.h's
     case Scenario::kPinchCard:
       break;  // the grip's metrics (pinch_metrics.h)
+    case Scenario::kDoor:
+    case Scenario::kDrawer:
+      break;  // the joint's metrics (joint_metrics.h)
   }
   last_ = state;
 }
@@ -187,6 +190,8 @@ std::map<std::string, double> ScenarioMetrics::metrics() const
       break;
     case Scenario::kPinchThin:
     case Scenario::kPinchCard:
+    case Scenario::kDoor:    // the joint's metrics (joint_metrics.h)
+    case Scenario::kDrawer:
       break;
   }
   return result;

@@ -1,5 +1,10 @@
 #include "god_finger/scene/scene_description.h"
 
+#include "god_finger/support/input_error.h"
+
+#include <cmath>
+#include <vector>
+
 namespace god_finger
 {
 namespace
@@ -49,5 +54,48 @@ BodyDescription cylinderBody(const std::string& name, double radius, double leng
     body.inertia = Eigen::Vector3d(across, across, 0.5 * mass * radius * radius).asDiagonal();
   }
   return body;
+}
+void checkJoints(const SceneDescription& scene)
+{
+  const int bodies = static_cast<int>(scene.bodies.size());
+  std::vector<int> parent_joint(scene.bodies.size(), -1);
+  for (std::size_t j = 0; j < scene.joints.size(); ++j)
+  {
+    const JointDescription& joint = scene.joints[j];
+    const std::string where = "joint '" + joint.name + "': ";
+    if (joint.child < 0 || joint.child >= bodies || joint.parent < -1 || joint.parent >= bodies)
+    {
+      throw InputError(where + "its parent or child is no body of the scene");
+    }
+    const std::string& child = scene.bodies[joint.child].name;
+    if (scene.bodies[joint.child].is_static)
+    {
+      throw InputError(where + "its child '" + child + "' is fixed: a joint moves a free body");
+    }
+    if (joint.parent == joint.child)
+    {
+      throw InputError(where + "'" + child + "' cannot be its own parent");
+    }
+    if (parent_joint[joint.child] >= 0)
+    {
+      throw InputError(where + "'" + child + "' is already the child of joint '" +
+                       scene.joints[parent_joint[joint.child]].name + "'");
+    }
+    parent_joint[joint.child] = static_cast<int>(j);
+    if (!joint.axis.allFinite() || std::abs(joint.axis.norm() - 1.0) > 1e-6)
+    {
+      throw InputError(where + "its axis must be a unit vector");
+    }
+    if (!joint.joint_in_parent.matrix().allFinite() || !std::isfinite(joint.lower) || !std::isfinite(joint.upper) ||
+        joint.lower > joint.upper)
+    {
+      throw InputError(where + "needs a finite frame and finite limits, lower <= upper");
+    }
+    if (!(joint.damping >= 0.0) || !(joint.friction >= 0.0) || !std::isfinite(joint.damping) ||
+        !std::isfinite(joint.friction))
+    {
+      throw InputError(where + "damping and friction must be finite and >= 0");
+    }
+  }
 }
 }  // namespace god_finger

@@ -184,14 +184,26 @@ class SceneListParser
               .toRotationMatrix();
     }
     const std::string name = object["name"] ? text(object["name"], where + ".name") : std::string();
-    for (BodyDescription body : parts.bodies)
+    const int first_body = static_cast<int>(scene->bodies.size());
+    std::vector<bool> jointed(parts.bodies.size(), false);  // an articulated object's moving links
+    for (JointDescription joint : parts.joints)
     {
+      jointed[joint.child] = true;
+      joint.child += first_body;
+      joint.parent = joint.parent < 0 ? -1 : joint.parent + first_body;
+      joint.joint_in_parent = joint.parent < 0 ? placement * joint.joint_in_parent : joint.joint_in_parent;
+      joint.name = name.empty() ? joint.name : name + "/" + joint.name;
+      scene->joints.push_back(joint);
+    }
+    for (std::size_t part = 0; part < parts.bodies.size(); ++part)
+    {
+      BodyDescription body = parts.bodies[part];
       body.pose = placement * body.pose;
       if (!name.empty())
       {
         body.name = parts.bodies.size() == 1 ? name : name + "/" + body.name;
       }
-      if (object["fixed"])
+      if (object["fixed"] && !jointed[part])  // fixed: the object's base; its jointed links still move
       {
         bool fixed = false;
         try

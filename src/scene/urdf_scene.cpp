@@ -368,40 +368,65 @@ class SceneParser
     model->getLinks(links);
     // An object file as PyBullet and Gazebo ship them: the root link is the body.
     const bool object_file = static_cast<bool>(root->collision);
+    std::map<std::string, int> body_of_link;
     for (const urdf::LinkSharedPtr& link : links)
     {
       if (link->name == root->name)
       {
         if (object_file)
         {
+          body_of_link[link->name] = static_cast<int>(scene.bodies.size());
           scene.bodies.push_back(objectBody(*link, link_materials));
         }
         continue;
       }
-      if (object_file)
-      {
-        fail(link->name, "joined to the object's root link '" + root->name +
-                             "': an object file here is one rigid link (several links, as a compound or an "
-                             "articulated object, are not supported yet); give each part as an object of a scene "
-                             "list");
-      }
       const urdf::JointConstSharedPtr joint = link->parent_joint;
-      if (!joint || joint->parent_link_name != root->name)
+      const bool on_root = joint && joint->parent_link_name == root->name;
+      if (!joint)
       {
-        fail(link->name, "must be joined directly to the root link '" + root->name + "'");
+        fail(link->name, "has no joint to a parent link");
       }
-      if (joint->type != urdf::Joint::FIXED && joint->type != urdf::Joint::FLOATING)
+      if (jointKind(joint->type) == nullptr)
       {
-        fail(link->name, "joint '" + joint->name + "' must be 'fixed' (static body) or 'floating' (free body)");
+        if (object_file || !on_root)
+        {
+          fail(link->name, "joint '" + joint->name + "' is '" + jointTypeName(joint->type) + "' to link '" +
+                               joint->parent_link_name +
+                               "': a link joined to another body moves on a 'revolute', 'continuous' or "
+                               "'prismatic' joint (merge a fixed part into its parent link as more <collision>s)");
+        }
+        if (joint->type != urdf::Joint::FIXED && joint->type != urdf::Joint::FLOATING)
+        {
+          fail(link->name, "joint '" + joint->name +
+                               "' must be 'fixed' (static body), 'floating' (free body), 'revolute', 'continuous' "
+                               "or 'prismatic'");
+        }
       }
       BodyDescription body = linkBody(*link, link_materials);
-      body.pose = toIsometry(joint->parent_to_joint_origin_transform);
+      body.pose = linkPose(*model, *link, root->name);
       body.is_static = joint->type == urdf::Joint::FIXED;
       if (!body.is_static || usableInertial(*link))
       {
         inertial(*link, &body);  // a fixed body keeps a usable one: a scene list may free it
       }
+      body_of_link[link->name] = static_cast<int>(scene.bodies.size());
       scene.bodies.push_back(body);
+    }
+    for (const urdf::LinkSharedPtr& link : links)
+    {
+      const urdf::JointConstSharedPtr joint = link->parent_joint;
+      if (!joint || jointKind(joint->type) == nullptr)
+      {
+        continue;
+      }
+      const bool to_world = !object_file && joint->parent_link_name == root->name;
+      if (!to_world && body_of_link.count(joint->parent_link_name) == 0)
+      {
+        fail(link->name, "joint '" + joint->name + "': its parent link '" + joint->parent_link_name +
+                             "' is no body (it has no <collision>)");
+      }
+      scene.joints.push_back(jointDescription(*joint, to_world ? -1 : body_of_link.at(joint->parent_link_name),
+                                              body_of_link.at(link->name)));
     }
     if (scene.bodies.empty())
     {
@@ -480,6 +505,109 @@ class SceneParser
 
   // An object file's root link, at the origin: free with a positive <inertial> mass, fixed
   // without one or with mass 0 (PyBullet's convention for a fixed base).
+  static const JointKind* jointKind(int type)
+  {
+    static const JointKind revolute = JointKind::kRevolute;
+    static const JointKind continuous = JointKind::kContinuous;
+    static const JointKind prismatic = JointKind::kPrismatic;
+    switch (type)
+    {
+      case urdf::Joint::REVOLUTE:
+        return &revolute;
+      case urdf::Joint::CONTINUOUS:
+        return &continuous;
+      case urdf::Joint::PRISMATIC:
+        return &prismatic;
+      default:
+        return nullptr;
+    }
+  }
+
+  static std::string jointTypeName(int type)
+  {
+    switch (type)
+    {
+      case urdf::Joint::FIXED:
+        return "fixed";
+      case urdf::Joint::FLOATING:
+        return "floating";
+      case urdf::Joint::PLANAR:
+        return "planar";
+      default:
+        return "unknown";
+    }
+  }
+
+  // A link's pose at load (every joint at position 0): its joints' origins composed up to the
+  // root (the world, or the object's own frame).
+  Eigen::Isometry3d linkPose(const urdf::ModelInterface& model, const urdf::Link& link, const std::string& root) const
+  {
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    const urdf::Link* at = &link;
+    for (int depth = 0; at->name != root; ++depth)
+    {
+      if (depth > kMaxJointDepth || !at->parent_joint)
+      {
+        fail(link.name, "its chain to the root is more than " + std::to_string(kMaxJointDepth) + " joints long");
+      }
+      pose = toIsometry(at->parent_joint->parent_to_joint_origin_transform) * pose;
+      at = model.getLink(at->parent_joint->parent_link_name).get();
+    }
+    return pose;
+  }
+
+  JointDescription jointDescription(const urdf::Joint& joint, int parent, int child) const
+  {
+    const std::string& link = joint.child_link_name;
+    JointDescription result;
+    result.name = joint.name;
+    result.kind = *jointKind(joint.type);
+    result.parent = parent;
+    result.child = child;
+    result.joint_in_parent = toIsometry(joint.parent_to_joint_origin_transform);
+    result.axis = Eigen::Vector3d(joint.axis.x, joint.axis.y, joint.axis.z);
+    if (!result.axis.allFinite() || result.axis.norm() < 1e-9)
+    {
+      fail(link, "joint '" + joint.name + "': <axis> must be a non-zero direction");
+    }
+    result.axis.normalize();
+    if (joint.limits)
+    {
+      result.lower = joint.limits->lower;
+      result.upper = joint.limits->upper;
+      result.effort = joint.limits->effort;
+      result.velocity = joint.limits->velocity;
+    }
+    if (joint.dynamics)
+    {
+      result.damping = joint.dynamics->damping;
+      result.friction = joint.dynamics->friction;
+    }
+    const auto finite_non_negative = [](double value) { return std::isfinite(value) && value >= 0.0; };
+    if (!finite_non_negative(result.damping) || !finite_non_negative(result.friction))
+    {
+      fail(link, "joint '" + joint.name + "': <dynamics> damping and friction must be finite and >= 0");
+    }
+    if (result.kind != JointKind::kContinuous)
+    {
+      if (!joint.limits)
+      {
+        fail(link, "joint '" + joint.name + "' needs a <limit lower upper>");
+      }
+      if (!std::isfinite(result.lower) || !std::isfinite(result.upper) || result.lower > result.upper)
+      {
+        fail(link, "joint '" + joint.name + "': <limit> needs finite lower <= upper");
+      }
+      if (result.kind == JointKind::kRevolute && (result.lower < -M_PI || result.upper > M_PI))
+      {
+        fail(link, "joint '" + joint.name +
+                       "': a revolute joint's <limit> must lie within [-pi, pi] rad (give a "
+                       "wider one as 'continuous')");
+      }
+    }
+    return result;
+  }
+
   BodyDescription objectBody(const urdf::Link& link, const std::map<std::string, ContactMaterial>& materials) const
   {
     BodyDescription body = linkBody(link, materials);

@@ -193,8 +193,8 @@ int main(int argc, char** argv)
     const double read_seconds = secondsSince(start);
     god_finger::GodFingerWorld world(scene, params);
     const double load_seconds = secondsSince(start);
-    std::printf("scene '%s': %zu bodies, read in %.3f s, world built in %.3f s\n", file.c_str(), scene.bodies.size(),
-                read_seconds, load_seconds);
+    std::printf("scene '%s': %zu bodies, %zu joints, read in %.3f s, world built in %.3f s\n", file.c_str(),
+                scene.bodies.size(), scene.joints.size(), read_seconds, load_seconds);
     for (int i = 0; i < world.bodyCount(); ++i)
     {
       const god_finger::BodyDescription& body = scene.bodies[i];
@@ -221,6 +221,20 @@ int main(int argc, char** argv)
       std::printf("; the pad walks on %s, %zu triangles\n",
                   body.visual_mesh ? "its visual mesh" : (body.more_parts.empty() ? "it" : "all its pieces"),
                   world.walkMesh(i).triangles().size());
+    }
+    for (const god_finger::JointDescription& joint : scene.joints)
+    {
+      const bool prismatic = joint.kind == god_finger::JointKind::kPrismatic;
+      std::printf(
+          "  joint %-10s %s, %s -> %s, axis (%.3f, %.3f, %.3f)", joint.name.c_str(),
+          prismatic ? "prismatic" : (joint.kind == god_finger::JointKind::kRevolute ? "revolute" : "continuous"),
+          joint.parent < 0 ? "world" : scene.bodies[joint.parent].name.c_str(), scene.bodies[joint.child].name.c_str(),
+          joint.axis.x(), joint.axis.y(), joint.axis.z());
+      if (joint.kind != god_finger::JointKind::kContinuous)
+      {
+        std::printf(", limits [%.3f, %.3f] %s", joint.lower, joint.upper, prismatic ? "m" : "rad");
+      }
+      std::printf(", damping %g, friction %g\n", joint.damping, joint.friction);
     }
     for (const std::string& warning : scene.warnings)
     {

@@ -179,7 +179,7 @@ TEST(Clutter, ScenarioNamesComeFromOneList)
   Scenario parsed = Scenario::kSlide;
   ASSERT_TRUE(parseScenario("clutter", &parsed));
   EXPECT_EQ(parsed, Scenario::kClutter);
-  EXPECT_EQ(scenarioNames("|"), "slide|lift_one|lift_two|pinch_cylinder|clutter|hand_grasp|roll_finger|pinch_thin|pinch_card");
+  EXPECT_EQ(scenarioNames("|"), "slide|lift_one|lift_two|pinch_cylinder|clutter|hand_grasp|roll_finger|pinch_thin|pinch_card|door|drawer");
   for (Scenario scenario : kAllScenarios)
   {
     ASSERT_TRUE(parseScenario(scenarioName(scenario), &parsed));

@@ -153,11 +153,22 @@ TEST(UrdfScene, FreeBodyWithoutInertialIsRejected)
   EXPECT_NE(error.find("link 'thing': a floating body needs an <inertial>"), std::string::npos) << error;
 }
 
-TEST(UrdfScene, RevoluteJointIsRejected)
+TEST(UrdfScene, AJointToTheWorldThatTurnsMakesAnArticulatedBody)
 {
+  const SceneDescription scene = parseUrdfScene(
+      sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial, "continuous"),
+      kScenes, "knob.urdf");
+  ASSERT_EQ(scene.joints.size(), 1u);
+  EXPECT_EQ(scene.joints[0].kind, JointKind::kContinuous);
+  EXPECT_EQ(scene.joints[0].parent, -1);
+  EXPECT_EQ(scene.bodies[scene.joints[0].child].name, "thing");
+  EXPECT_FALSE(scene.bodies[scene.joints[0].child].is_static);
   const std::string error = errorOf(
-      sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial, "continuous"));
-  EXPECT_NE(error.find("link 'thing': joint 'j' must be 'fixed'"), std::string::npos) << error;
+      sceneWith("<collision><geometry><sphere radius='0.1'/></geometry></collision>" + kGoodInertial, "planar"));
+  EXPECT_NE(error.find("link 'thing': joint 'j' must be 'fixed' (static body), 'floating' (free body), 'revolute', "
+                       "'continuous' or 'prismatic'"),
+            std::string::npos)
+      << error;
 }
 
 TEST(UrdfScene, BadGeometryValuesAreRejected)
@@ -206,15 +217,64 @@ TEST(UrdfScene, AnObjectFilesRootLinkIsTheBodyFreeWithMassFixedWithout)
   }
 }
 
-TEST(UrdfScene, AnObjectFilesOtherLinksAreRefusedNamingThem)
+// A box with a lid on a hinge, as an object file: the lid is a body of its own on a joint to the
+// box, placed with the joint at 0, with the joint's axis, limits and dynamics.
+std::string boxWithLid(const std::string& joint)
 {
-  const std::string error = errorOf(objectFile(
-      "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>" + kGoodInertial,
-      "<link name='lid'><collision><geometry><box size='0.1 0.1 0.01'/></geometry></collision>" + kGoodInertial +
-          "</link><joint name='hinge' type='revolute'><parent link='baseLink'/><child link='lid'/>"
-          "<limit lower='0' upper='1' effort='1' velocity='1'/></joint>"));
-  EXPECT_NE(error.find("link 'lid': joined to the object's root link 'baseLink'"), std::string::npos) << error;
-  EXPECT_NE(error.find("not supported yet"), std::string::npos) << error;
+  return objectFile("<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>" + kGoodInertial,
+                    "<link name='lid'><collision><origin xyz='0.05 0 0'/><geometry><box size='0.1 0.1 0.01'/>"
+                    "</geometry></collision>" +
+                        kGoodInertial + "</link>" + joint);
+}
+
+TEST(UrdfScene, AnObjectFilesJointedLinksAreItsMovingParts)
+{
+  const SceneDescription scene = parseUrdfScene(
+      boxWithLid("<joint name='hinge' type='revolute'><parent link='baseLink'/><child link='lid'/>"
+                 "<origin xyz='-0.05 0 0.055'/><axis xyz='0 2 0'/><limit lower='-1.5' upper='0' effort='1' "
+                 "velocity='2'/><dynamics damping='0.01' friction='0.02'/></joint>"),
+      kScenes, "box.urdf");
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  ASSERT_EQ(scene.joints.size(), 1u);
+  const JointDescription& hinge = scene.joints[0];
+  EXPECT_EQ(hinge.name, "hinge");
+  EXPECT_EQ(hinge.kind, JointKind::kRevolute);
+  EXPECT_EQ(scene.bodies[hinge.parent].name, "baseLink");
+  EXPECT_EQ(scene.bodies[hinge.child].name, "lid");
+  EXPECT_TRUE(hinge.axis.isApprox(Eigen::Vector3d::UnitY())) << "normalised";
+  EXPECT_DOUBLE_EQ(hinge.lower, -1.5);
+  EXPECT_DOUBLE_EQ(hinge.upper, 0.0);
+  EXPECT_DOUBLE_EQ(hinge.effort, 1.0);
+  EXPECT_DOUBLE_EQ(hinge.velocity, 2.0);
+  EXPECT_DOUBLE_EQ(hinge.damping, 0.01);
+  EXPECT_DOUBLE_EQ(hinge.friction, 0.02);
+  EXPECT_TRUE(scene.bodies[hinge.child].pose.translation().isApprox(Eigen::Vector3d(-0.05, 0, 0.055)));
+}
+
+TEST(UrdfScene, JointsThatCannotMoveABodyAreRefusedNamingThem)
+{
+  const auto joint = [](const std::string& type, const std::string& more) {
+    return "<joint name='hinge' type='" + type + "'><parent link='baseLink'/><child link='lid'/>" + more + "</joint>";
+  };
+  const std::string fixed = errorOf(boxWithLid(joint("fixed", "")));
+  EXPECT_NE(fixed.find("link 'lid': joint 'hinge' is 'fixed' to link 'baseLink'"), std::string::npos) << fixed;
+  EXPECT_NE(fixed.find("merge a fixed part into its parent link as more <collision>s"), std::string::npos) << fixed;
+  const std::string wide =
+      errorOf(boxWithLid(joint("revolute", "<limit lower='-4' upper='0' effort='1' velocity='1'/>")));
+  EXPECT_NE(wide.find("link 'lid': joint 'hinge': a revolute joint's <limit> must lie within [-pi, pi] rad"),
+            std::string::npos)
+      << wide;
+  const std::string reversed =
+      errorOf(boxWithLid(joint("prismatic", "<limit lower='0.2' upper='0.1' effort='1' velocity='1'/>")));
+  EXPECT_NE(reversed.find("link 'lid': joint 'hinge': <limit> needs finite lower <= upper"), std::string::npos)
+      << reversed;
+  const std::string damping = errorOf(boxWithLid(joint("continuous", "<dynamics damping='-1'/>")));
+  EXPECT_NE(damping.find("link 'lid': joint 'hinge': <dynamics> damping and friction must be finite and >= 0"),
+            std::string::npos)
+      << damping;
+  const std::string no_axis = errorOf(boxWithLid(joint("continuous", "<axis xyz='0 0 0'/>")));
+  EXPECT_NE(no_axis.find("link 'lid': joint 'hinge': <axis> must be a non-zero direction"), std::string::npos)
+      << no_axis;
 }
 
 // urdfdom drops what it cannot read and goes on: the real problem must be named, not the

@@ -111,6 +111,10 @@ class GodFingerWorld
   const InterfaceState& interfaceState(int interface) const;
   int bodyCount() const;
   BodyState bodyState(int body) const;
+  // The scene's joints (SceneDescription::joints), in its order: where each stands now
+  // (joint_measure.h). Articulated bodies never sleep.
+  int jointCount() const;
+  JointState jointState(int joint) const;
   const SceneDescription& scene() const;
   // Fills `out` with the current state. Allocates only when out's vectors are smaller than
   // the body or interface count (so a snapshot buffer filled once never allocates again).

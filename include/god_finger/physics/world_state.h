@@ -72,6 +72,15 @@ struct BodyState
 
 // Everything an observer shows of a world at one step (markers, TF, contact-area messages),
 // copied out so that it can be read in another thread while the world steps on.
+// An articulated object's joint (SceneDescription::joints): the child's position relative to
+// its parent, 0 where the scene placed it, and its speed: rad and rad/s about the axis
+// (revolute, continuous), m and m/s along it (prismatic).
+struct JointState
+{
+  double position = 0.0;
+  double velocity = 0.0;
+};
+
 struct WorldSnapshot
 {
   double time = 0.0;  // s, world time of the step

@@ -49,6 +49,15 @@
 //    its thickness where it overhangs the table's edge, one above and one below, lift it 10 cm
 //    in 1.5 s and hold; 3.5 s in all. Pads on opposite faces are a pinch, never an overlap.
 //    Metrics (pinch_metrics.h): held, slip_m, turn_rad.
+//  - kDoor (urdf/scenes/door.urdf, an articulated object): a finger comes to the door's face
+//    27 cm from the hinge in 0.5 s, then pushes it open along the arc to 65 degrees in 3 s
+//    (about 0.38 rad/s) and holds until 4.5 s; the hinge's damping and friction resist.
+//    Metrics (joint_metrics.h): opened_rad, beyond_limit, hand_force_N against
+//    resistance_force_N (the hinge's damping as the hand should feel it).
+//  - kDrawer (urdf/scenes/drawer.urdf): a pad presses the top of a handle-less drawer with about
+//    3 N, 5 cm in front of the cabinet, and pulls 12 cm along the runners in 2 s (0.7-2.7 s) by
+//    friction alone, then rises; 3.5 s in all. Metrics (joint_metrics.h): pulled_m, slip_m,
+//    beyond_limit, hand_force_N against resistance_force_N.
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
@@ -59,8 +68,8 @@
 #include "god_finger/haptics/orientation_path.h"
 #include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/scene/scene_description.h"
 #include "god_finger/physics/world_params.h"
+#include "god_finger/scene/scene_description.h"
 
 #include <Eigen/Geometry>
 #include <cstdint>
@@ -82,11 +91,14 @@ enum class Scenario
   kRollFinger,
   kPinchThin,
   kPinchCard,
+  kDoor,
+  kDrawer,
 };
 // Every scenario, in the order tools and scripts list them: the one list (scenarioNames()).
 constexpr Scenario kAllScenarios[] = {Scenario::kSlide,         Scenario::kLiftOne,   Scenario::kLiftTwo,
                                       Scenario::kPinchCylinder, Scenario::kClutter,   Scenario::kHandGrasp,
-                                      Scenario::kRollFinger,    Scenario::kPinchThin, Scenario::kPinchCard};
+                                      Scenario::kRollFinger,    Scenario::kPinchThin, Scenario::kPinchCard,
+                                      Scenario::kDoor,          Scenario::kDrawer};
 const char* scenarioName(Scenario scenario);
 // The names of kAllScenarios joined by `separator` ("slide, lift_one, ...").
 std::string scenarioNames(const std::string& separator = ", ");

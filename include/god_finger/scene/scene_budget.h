@@ -23,6 +23,9 @@ constexpr int kMaxBodies = 10000;
 constexpr std::uint64_t kBytesPerBody = 80 * 1024;
 constexpr double kMinBodySize = 1e-4;   // m: 0.1 mm
 constexpr double kMaxBodySize = 100.0;  // m
+// Joints from a link to the root of its URDF: deeper chains are refused (a cycle-free URDF's
+// articulated objects are a few links deep; the bound keeps a hostile file's walk short).
+constexpr int kMaxJointDepth = 64;
 
 // Bytes the scene's bodies and primitive walk meshes need (meshes' triangles not included).
 std::uint64_t estimatedSceneBytes(const SceneDescription& scene, double max_walk_edge);

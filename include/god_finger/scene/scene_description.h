@@ -1,7 +1,7 @@
 // A physics scene as plain data, independent of where it came from (URDF, code) and of
-// Bullet: rigid bodies with one collision geometry each, mass properties and contact
-// materials. Units SI; frames per REP-103 (z up); poses are of the body's link frame in
-// `world`.
+// Bullet: rigid bodies with their collision geometry, mass properties and contact materials,
+// and the joints of articulated objects between them. Units SI; frames per REP-103 (z up); poses are of the body's link
+// frame in `world`.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -67,10 +67,42 @@ struct BodyDescription
   std::optional<BodyPart> visual_mesh;
 };
 
+// A joint between two bodies of an articulated object (URDF's revolute, continuous and
+// prismatic joints): a door's hinge, a drawer's runners, a knob. The child is a free body; the
+// parent another body or the world.
+enum class JointKind
+{
+  kRevolute,    // about `axis`, limited to [lower, upper] rad
+  kContinuous,  // about `axis`, unlimited
+  kPrismatic,   // along `axis`, limited to [lower, upper] m
+};
+
+struct JointDescription
+{
+  std::string name;
+  JointKind kind = JointKind::kRevolute;
+  int parent = -1;  // body index; -1: the world
+  int child = -1;   // body index, a free body
+  // The joint frame at position 0 in the parent's link frame (in the world for -1); the child's
+  // link frame is the joint frame moved by the joint's position (URDF's convention).
+  Eigen::Isometry3d joint_in_parent = Eigen::Isometry3d::Identity();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitX();  // unit, in the joint frame
+  double lower = 0.0;                               // rad or m (revolute, prismatic)
+  double upper = 0.0;
+  // URDF's <limit effort velocity>: kept for the user; nothing drives the joint, so the world
+  // applies neither.
+  double effort = 0.0;
+  double velocity = 0.0;
+  // URDF's <dynamics>: viscous damping (N m s/rad or N s/m) and dry friction (N m or N).
+  double damping = 0.0;
+  double friction = 0.0;
+};
+
 struct SceneDescription
 {
   std::string name;
   std::vector<BodyDescription> bodies;
+  std::vector<JointDescription> joints;  // an articulated object's, between its bodies
   // What the loader passed over and the user should know, one line each naming the file and the
   // link (a visual mesh that cannot be read, visuals beyond the first): the loaders print them.
   std::vector<std::string> warnings;
@@ -87,6 +119,11 @@ struct SceneDescription
     return -1;
   }
 };
+// Throws InputError when a joint of `scene` cannot be built: a body index out of range, a child
+// that is static, its own parent or the child of another joint, a zero or non-finite axis,
+// lower > upper, a negative damping or friction.
+void checkJoints(const SceneDescription& scene);
+
 // A solid box body: `size` (m, full edges), `mass` (kg) spread uniformly (its inertia at the
 // centre of mass), its link frame at `centre` (m, world), axis-aligned. With mass 0: static.
 BodyDescription boxBody(const std::string& name, const Eigen::Vector3d& size, double mass,

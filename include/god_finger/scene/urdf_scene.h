@@ -3,12 +3,17 @@
 // Two forms:
 //  - A scene: the root link is `world` (or any link without geometry): every link joined to it
 //    by a `fixed` joint is static; by a `floating` joint, a free rigid body starting at the
-//    joint origin. Other joint types, and chains deeper than one joint, are rejected: scenes
-//    are sets of rigid objects, not robots.
+//    joint origin.
 //  - An object file, as PyBullet and Gazebo ship them: the root link has a <collision> and is
 //    the body, at the origin (scene_file.h's scene lists place it); free with a positive
-//    <inertial> mass, fixed without one or with mass 0 (PyBullet's fixed base). Links joined
-//    to it (compounds, articulated objects) are refused, naming the link.
+//    <inertial> mass, fixed without one or with mass 0 (PyBullet's fixed base).
+//  - In both, an articulated object: a link joined to the root or to another body by a
+//    `revolute`, `continuous` or `prismatic` joint is a free body moving on that joint
+//    (SceneDescription::joints, with <axis>, <limit lower upper effort velocity> and <dynamics
+//    damping friction>; a revolute joint's limits within [-pi, pi]), placed with every joint
+//    at 0. A `fixed` or `floating` joint between two bodies is refused (a fixed part belongs in
+//    its parent link as more <collision>s), as are `planar` joints and chains deeper than
+//    kMaxJointDepth.
 //  - Each body has one <collision> (box, sphere, cylinder, or mesh with scale), or several: a
 //    compound body (BodyDescription::more_parts), one rigid body colliding as all its pieces;
 //    a link's first <visual> mesh, when it is not its collision mesh, is the true surface

@@ -1,0 +1,43 @@
+// The fake device's scripts for the articulated scenarios' launches (config/scripts/door.yaml,
+// drawer.yaml) are the offline experiment's own (experiment.cpp, seed 1): every waypoint of the
+// file lies on the scenario's path at its time, within a micrometre (the file's 6 decimals), so
+// the launch shows what god_finger_experiment measures.
+#include "god_finger/scenarios/experiment.h"
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+namespace god_finger
+{
+namespace
+{
+void expectScriptFollowsScenario(const std::string& script, Scenario scenario)
+{
+  ExperimentOptions options;
+  options.scenario = scenario;
+  options.scenes_dir = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
+  const ScenarioSetup setup = loadScenario(options);
+  ASSERT_EQ(setup.fingers.size(), 1u);
+  const YAML::Node file = YAML::LoadFile(std::string(GOD_FINGER_SOURCE_DIR) + "/config/scripts/" + script + ".yaml");
+  ASSERT_TRUE(file["script"].IsSequence());
+  ASSERT_GE(file["script"].size(), 4u);
+  double last_time = -1.0;
+  for (const YAML::Node& waypoint : file["script"])
+  {
+    const double t = waypoint[0].as<double>();
+    const Eigen::Vector3d position(waypoint[1].as<double>(), waypoint[2].as<double>(), waypoint[3].as<double>());
+    EXPECT_LT((position - setup.fingers[0].at(t)).norm(), 1e-6) << script << " at t = " << t;
+    last_time = t;
+  }
+  EXPECT_NEAR(last_time, setup.duration, 1e-9) << script << " runs as long as the scenario";
+}
+
+TEST(ScriptSync, TheDoorAndDrawerLaunchesFollowTheirScenariosScripts)
+{
+  expectScriptFollowsScenario("door", Scenario::kDoor);
+  expectScriptFollowsScenario("drawer", Scenario::kDrawer);
+}
+}  // namespace
+}  // namespace god_finger
