@@ -939,7 +939,10 @@ GodFingerWorld::BodyCollision GodFingerWorld::bodyCollision(int body) const
   const SceneBody& scene_body = impl_->bodies.at(body);
   BodyCollision result;
   const auto add = [&result](const CollisionShape& shape)
-  { result.convex_hulls += shape.exact ? 0 : shape.convex_parts; };
+  {
+    result.convex_hulls += shape.exact ? 0 : shape.convex_parts;
+    result.hulls_as_given = result.hulls_as_given || shape.decomposition_source == DecompositionSource::kGiven;
+  };
   add(*scene_body.collision);
   for (const std::unique_ptr<CollisionShape>& part : scene_body.part_collisions)
   {

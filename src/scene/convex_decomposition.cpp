@@ -5,6 +5,9 @@
 
 #include <HACD/hacdHACD.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -108,6 +111,8 @@ const char* decompositionSourceName(DecompositionSource source)
       return "process cache";
     case DecompositionSource::kDiskCache:
       return "disk cache";
+    case DecompositionSource::kGiven:
+      return "as given";
   }
   return "?";
 }
@@ -155,8 +160,124 @@ std::mutex process_mutex;
 std::map<std::string, std::shared_ptr<const HullSet>> process_cache;
 }  // namespace
 
+namespace
+{
+// Each connected component's triangles (components joined through shared vertices).
+std::vector<std::vector<int>> componentTriangles(const TriangleMesh& mesh)
+{
+  std::vector<int> parent(mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    parent[v] = v;
+  }
+  const auto root = [&parent](int v)
+  {
+    while (parent[v] != v)
+    {
+      parent[v] = parent[parent[v]];
+      v = parent[v];
+    }
+    return v;
+  };
+  for (const Eigen::Vector3i& t : mesh.triangles())
+  {
+    parent[root(t[1])] = root(t[0]);
+    parent[root(t[2])] = root(t[0]);
+  }
+  std::map<int, std::vector<int>> by_root;
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+  {
+    by_root[root(mesh.triangles()[t][0])].push_back(t);
+  }
+  std::vector<std::vector<int>> components;
+  for (auto& entry : by_root)
+  {
+    components.push_back(std::move(entry.second));
+  }
+  return components;
+}
+
+// The corners of `triangles` when they bound a convex solid: no corner lies in front of any of
+// their planes by more than `tolerance` (m); none otherwise.
+std::optional<std::vector<Eigen::Vector3d>> convexPiece(const TriangleMesh& mesh, const std::vector<int>& triangles,
+                                                       double tolerance)
+{
+  std::vector<int> corners;
+  for (const int t : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      corners.push_back(mesh.triangles()[t][k]);
+    }
+  }
+  std::sort(corners.begin(), corners.end());
+  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  for (const int t : triangles)
+  {
+    const Eigen::Vector3d a = mesh.corner(t, 0);
+    const Eigen::Vector3d normal = (mesh.corner(t, 1) - a).cross(mesh.corner(t, 2) - a);
+    const double length = normal.norm();
+    if (length <= 0.0)
+    {
+      continue;  // a degenerate triangle has no plane
+    }
+    for (const int v : corners)
+    {
+      if ((mesh.vertices()[v] - a).dot(normal) / length > tolerance)
+      {
+        return std::nullopt;
+      }
+    }
+  }
+  std::vector<Eigen::Vector3d> points;
+  for (const int v : corners)
+  {
+    points.push_back(mesh.vertices()[v]);
+  }
+  return points;
+}
+}  // namespace
+
+std::optional<HullSet> givenConvexPieces(const TriangleMesh& mesh)
+{
+  const MeshHealth& health = mesh.health();
+  if (health.boundary_edges != 0 || health.non_manifold_edges != 0)
+  {
+    return std::nullopt;  // pieces must be closed solids
+  }
+  const std::vector<std::vector<int>> components = componentTriangles(mesh);
+  if (components.size() < 2 || components.size() > static_cast<std::size_t>(kMaxGivenPieces))
+  {
+    return std::nullopt;
+  }
+  const double tolerance = kGivenPieceTolerance * mesh.boundingBoxDiagonal();
+  HullSet pieces;
+  for (const std::vector<int>& triangles : components)
+  {
+    if (triangles.size() > static_cast<std::size_t>(kMaxGivenPieceTriangles))
+    {
+      return std::nullopt;
+    }
+    std::optional<std::vector<Eigen::Vector3d>> piece = convexPiece(mesh, triangles, tolerance);
+    if (!piece)
+    {
+      return std::nullopt;
+    }
+    pieces.push_back(std::move(*piece));
+  }
+  return pieces;
+}
+
 ConvexDecomposition cachedConvexDecomposition(const TriangleMesh& mesh, const std::string& label)
 {
+  if (std::optional<HullSet> given = givenConvexPieces(mesh))
+  {
+    ConvexDecomposition result;
+    result.input_triangles = mesh.triangleCount();
+    result.hulls = std::make_shared<const HullSet>(std::move(*given));
+    result.source = DecompositionSource::kGiven;
+    return result;
+  }
   const std::string key = decompositionKey(mesh);
   // One decomposition at a time: two bodies of one mesh then compute it once.
   std::lock_guard<std::mutex> lock(process_mutex);

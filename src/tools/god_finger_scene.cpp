@@ -212,7 +212,8 @@ int main(int argc, char** argv)
       const god_finger::GodFingerWorld::BodyCollision collision = world.bodyCollision(i);
       if (collision.convex_hulls > 0)
       {
-        std::printf(" (%d convex hull%s)", collision.convex_hulls, collision.convex_hulls == 1 ? "" : "s");
+        std::printf(" (%d convex hull%s%s)", collision.convex_hulls, collision.convex_hulls == 1 ? "" : "s",
+                    collision.hulls_as_given ? ", its own pieces as given" : "");
       }
       if (collision.fingers_touch_walk_mesh)
       {

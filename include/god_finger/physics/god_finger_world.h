@@ -131,6 +131,7 @@ class GodFingerWorld
   struct BodyCollision
   {
     int convex_hulls = 0;
+    bool hulls_as_given = false;  // the mesh's own convex pieces (convex_decomposition.h), not computed
     bool fingers_touch_walk_mesh = false;
   };
   BodyCollision bodyCollision(int body) const;

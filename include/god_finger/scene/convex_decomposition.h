@@ -13,6 +13,8 @@
 //     mesh's content (its vertices and triangles after scaling and repair) and
 //     kDecompositionVersion, so that a second run, or another scene using the same mesh, loads
 //     them in milliseconds.
+// A mesh made of convex pieces already (givenConvexPieces) is used as given: neither simplified,
+// decomposed nor cached.
 // A decomposition that will take long (a cache miss at or above 1000 triangles to decompose)
 // says so first, in one line on stderr.
 //
@@ -26,6 +28,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,11 +42,22 @@ constexpr double kSimplificationTolerance = 0.004;
 
 using HullSet = std::vector<std::vector<Eigen::Vector3d>>;
 
+// A decomposition the user made (V-HACD's hulls in one OBJ, a collision mesh of convex parts):
+// a closed mesh of at least 2 connected components, each convex (no corner of a piece in front
+// of any of its faces' planes by more than kGivenPieceTolerance times the mesh's bounding-box
+// diagonal), at most kMaxGivenPieces of at most kMaxGivenPieceTriangles triangles each. Its
+// pieces are the hulls, never decomposed again; none (nullopt) for any other mesh.
+constexpr int kMaxGivenPieces = 512;
+constexpr int kMaxGivenPieceTriangles = 4096;
+constexpr double kGivenPieceTolerance = 1e-6;
+std::optional<HullSet> givenConvexPieces(const TriangleMesh& mesh);
+
 enum class DecompositionSource
 {
   kComputed,      // simplified (if needed) and decomposed now
   kProcessCache,  // already computed in this process
   kDiskCache,     // read from the hull cache on disk
+  kGiven,         // the mesh's own convex pieces (givenConvexPieces), used as given
 };
 const char* decompositionSourceName(DecompositionSource source);
 
