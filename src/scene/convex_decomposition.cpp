@@ -200,7 +200,7 @@ std::vector<std::vector<int>> componentTriangles(const TriangleMesh& mesh)
 // The corners of `triangles` when they bound a convex solid: no corner lies in front of any of
 // their planes by more than `tolerance` (m); none otherwise.
 std::optional<std::vector<Eigen::Vector3d>> convexPiece(const TriangleMesh& mesh, const std::vector<int>& triangles,
-                                                       double tolerance)
+                                                        double tolerance)
 {
   std::vector<int> corners;
   for (const int t : triangles)
