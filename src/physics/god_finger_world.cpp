@@ -52,6 +52,10 @@ struct GodFingerWorld::Impl
   // cannot).
   std::vector<std::unique_ptr<btTypedConstraint>> joints;
   std::vector<char> jointed;
+  // The world's own fixed body, a joint's parent when it is the world (not Bullet's process-wide
+  // btTypedConstraint::getFixedBody(), which every world's constraints would share).
+  std::unique_ptr<btRigidBody> world_anchor =
+      std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0.0, nullptr, nullptr));
 
   BodyState bodyState(int body) const
   {
@@ -85,8 +89,8 @@ struct GodFingerWorld::Impl
   {
     for (const JointDescription& joint : scene.joints)
     {
-      joints.push_back(
-          makeJointConstraint(joint, joint.parent < 0 ? nullptr : &bodies[joint.parent], bodies[joint.child]));
+      joints.push_back(makeJointConstraint(joint, joint.parent < 0 ? nullptr : &bodies[joint.parent],
+                                           bodies[joint.child], world_anchor.get()));
       world->addConstraint(joints.back().get(), true);  // no contacts between a joint's two bodies
     }
   }
@@ -182,7 +186,10 @@ struct GodFingerWorld::Impl
     for (const JointDescription& joint : scene.joints)
     {
       jointed[joint.child] = 1;
-      jointed[joint.parent < 0 ? joint.child : joint.parent] = 1;
+      if (joint.parent >= 0 && !scene.bodies[joint.parent].is_static)
+      {
+        jointed[joint.parent] = 1;  // a static parent (a cabinet) is never simulated anyway
+      }
     }
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
@@ -378,6 +385,7 @@ struct GodFingerWorld::Impl
     btCollisionObject probe;
     probe.setCollisionShape(&sphere);
     probe.setWorldTransform(btTransform(btQuaternion::getIdentity(), toBullet(position)));
+    probe.setUserIndex(kKindProxy);  // tested as a finger: against a body's true surface (a cup's hollow)
     struct Deepest : btCollisionWorld::ContactResultCallback
     {
       double depth = 0.0;
@@ -392,7 +400,7 @@ struct GodFingerWorld::Impl
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
       Deepest callback;
-      world->contactPairTest(&probe, bodies[i].rigid.get(), callback);
+      contactPairTestAsCollided(world.get(), &probe, bodies[i].rigid.get(), callback);
       if (callback.depth > deepest.second)
       {
         deepest = {static_cast<int>(i), callback.depth};

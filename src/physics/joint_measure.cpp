@@ -15,7 +15,13 @@ JointState measureJoint(const JointDescription& joint, const BodyState* parent, 
   if (joint.kind == JointKind::kPrismatic)
   {
     state.position = moved.translation().dot(joint.axis);
-    const Eigen::Vector3d parent_velocity = parent != nullptr ? parent->linear_velocity : Eigen::Vector3d::Zero();
+    // The child's centre of mass relative to the parent's point under it (a turning parent
+    // carries that point along).
+    const Eigen::Vector3d parent_velocity =
+        parent != nullptr
+            ? Eigen::Vector3d(parent->linear_velocity +
+                              parent->angular_velocity.cross(child.center_of_mass - parent->center_of_mass))
+            : Eigen::Vector3d::Zero();
     state.velocity = (child.linear_velocity - parent_velocity).dot(axis_world);
     return state;
   }

@@ -82,4 +82,25 @@ void worldNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher
     }
   }
 }
+
+void contactPairTestAsCollided(btCollisionWorld* world, btCollisionObject* a, btCollisionObject* b,
+                               btCollisionWorld::ContactResultCallback& callback)
+{
+  // A stand-in object of the surface at its place for a side that touches its FingerSurface.
+  const auto stand_in = [](btCollisionObject* self, const FingerSurface* surface, btCollisionObject* object)
+  {
+    if (surface == nullptr)
+    {
+      return self;
+    }
+    object->setCollisionShape(surface->mesh->shape);
+    object->setWorldTransform(self->getWorldTransform() * surface->in_body);
+    return object;
+  };
+  btCollisionObject a_surface;
+  btCollisionObject b_surface;
+  btCollisionObject* first = stand_in(a, fingerSurfaceFor(a, b), &a_surface);
+  btCollisionObject* second = stand_in(b, fingerSurfaceFor(b, a), &b_surface);
+  world->contactPairTest(first, second, callback);
+}
 }  // namespace god_finger::internal

@@ -20,7 +20,7 @@ Eigen::Isometry3d axisFrame(const Eigen::Vector3d& axis, const Eigen::Vector3d& 
 }  // namespace
 
 std::unique_ptr<btTypedConstraint> makeJointConstraint(const JointDescription& joint, const SceneBody* parent,
-                                                       const SceneBody& child)
+                                                       const SceneBody& child, btRigidBody* world_anchor)
 {
   const bool prismatic = joint.kind == JointKind::kPrismatic;
   const Eigen::Isometry3d along =
@@ -30,7 +30,7 @@ std::unique_ptr<btTypedConstraint> makeJointConstraint(const JointDescription& j
       (parent != nullptr ? parent->com_in_link.inverse() : Eigen::Isometry3d::Identity()) * joint.joint_in_parent *
       along;
   const Eigen::Isometry3d in_child = child.com_in_link.inverse() * along;
-  btRigidBody& a = parent != nullptr ? *parent->rigid : btTypedConstraint::getFixedBody();
+  btRigidBody& a = parent != nullptr ? *parent->rigid : *world_anchor;
   btRigidBody& b = *child.rigid;
   if (prismatic)
   {
@@ -49,8 +49,10 @@ std::unique_ptr<btTypedConstraint> makeJointConstraint(const JointDescription& j
   auto hinge = std::make_unique<btHingeConstraint>(a, b, toBullet(in_parent), toBullet(in_child), true);
   if (joint.kind == JointKind::kRevolute)
   {
-    // Hard limits: no softness, the full error corrected each step.
-    hinge->setLimit(joint.lower, joint.upper, 1.0, 0.3, 1.0);
+    // Bullet's limit arguments: softness (unused by its solver), the bias (30 % of an overshoot
+    // corrected per step) and the relaxation, which its solver applies as the stop's restitution:
+    // 0, a door does not bounce off its stop.
+    hinge->setLimit(joint.lower, joint.upper, 0.9, 0.3, 0.0);
   }
   hinge->enableAngularMotor(true, 0.0, 0.0);
   return hinge;

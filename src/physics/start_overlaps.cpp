@@ -1,5 +1,7 @@
 #include "start_overlaps.h"
 
+#include "near_callback.h"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -53,7 +55,7 @@ std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vecto
         continue;
       }
       DeepestContact contact;
-      world->contactPairTest(bodies[i].rigid.get(), bodies[j].rigid.get(), contact);
+      contactPairTestAsCollided(world, bodies[i].rigid.get(), bodies[j].rigid.get(), contact);
       if (contact.depth > kStartOverlapDepth)
       {
         char line[96];

@@ -2,7 +2,8 @@
 // worth at load (an object placed into the table, two objects at one place) explodes apart on
 // the first step, and the user should know which and by how much. Internal to physics.
 //
-// Units: m, the collision shapes' (hulls for free meshes). Not real-time safe (run once, when
+// Units: m, between the shapes the steps collide (near_callback.h: a ball resting in a cup's
+// hollow touches its true surface, not the hulls that fill it). Not real-time safe (run once, when
 // the world is built); it leaves the world's own pairs and manifolds untouched, so a world
 // steps bit for bit as it would without the check.
 #pragma once

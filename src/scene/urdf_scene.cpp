@@ -546,7 +546,7 @@ class SceneParser
     const urdf::Link* at = &link;
     for (int depth = 0; at->name != root; ++depth)
     {
-      if (depth > kMaxJointDepth || !at->parent_joint)
+      if (depth >= kMaxJointDepth || !at->parent_joint)
       {
         fail(link.name, "its chain to the root is more than " + std::to_string(kMaxJointDepth) + " joints long");
       }

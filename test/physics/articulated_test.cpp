@@ -112,6 +112,39 @@ TEST(Articulated, ADoorPushedPastItsLimitStopsThere)
   EXPECT_NEAR(run.opened, scene.joints[0].upper, 0.01);
 }
 
+// Spun open by a torque (2 N m for 0.2 s: about 1.5 rad/s when it reaches the stop), with no
+// finger, the door stops at its 100-degree limit and does not bounce back off it.
+TEST(Articulated, ADoorSwungIntoItsStopStaysThere)
+{
+  const SceneDescription scene = loadUrdfScene(kScenes + "door.urdf");
+  GodFingerWorld world(scene, WorldParams());
+  const int door = scene.find("door");
+  double highest = 0.0;
+  double lowest_after = 10.0;
+  bool reached = false;
+  for (int i = 0; i < 2500; ++i)
+  {
+    if (i < 200)
+    {
+      world.applyBodyWrench(door, Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 2.0));
+    }
+    world.step();
+    const double angle = world.jointState(0).position;
+    highest = std::max(highest, angle);
+    reached = reached || angle > scene.joints[0].upper - 0.01;
+    if (reached)
+    {
+      lowest_after = std::min(lowest_after, angle);
+    }
+  }
+  std::printf("articulated: door swung into its stop: at most %.4f rad (limit %.4f), at least %.4f rad after\n",
+              highest, scene.joints[0].upper, lowest_after);
+  ASSERT_TRUE(reached);
+  EXPECT_LT(highest, scene.joints[0].upper + 0.05) << "the stop holds";
+  // A stop with restitution (Bullet's default relaxation 1.0) throws it back 0.02 rad here.
+  EXPECT_GT(lowest_after, scene.joints[0].upper - 0.005) << "no bounce off the stop";
+}
+
 // A finger presses the drawer's top with about 3 N (7.5 mm of coupling) and pulls 12 cm along
 // the runners in 2 s.
 double pullDrawer(const SceneDescription& scene, ContactModel model, double* slip)

@@ -172,5 +172,18 @@ TEST_F(HollowObject, ACubeDroppedIntoACupOrOntoAPlateRestsOnItsInnerFloor)
     EXPECT_NEAR(dish.pose.translation().z(), 0.0, 1e-3);
   }
 }
+// What the steps see is what the load-time checks see: a cube resting on the cup's floor at load
+// is not "inside" the cup (its hulls fill the hollow, its true surface does not), and a finger
+// may start in the hollow.
+TEST_F(HollowObject, ABodyOrAFingerInTheHollowIsNotInsideTheCup)
+{
+  const std::string resting =
+      "<link name='cube'><inertial><mass value='0.05'/><inertia ixx='3.3e-6' ixy='0' ixz='0' iyy='3.3e-6' iyz='0' "
+      "izz='3.3e-6'/></inertial><collision><geometry><box size='0.02 0.02 0.02'/></geometry></collision></link>"
+      "<joint name='cj' type='floating'><parent link='world'/><child link='cube'/><origin xyz='0 0 0.0226'/></joint>";
+  GodFingerWorld world(scene("cup.obj", resting), WorldParams());
+  EXPECT_TRUE(world.startWarnings().empty()) << world.startWarnings().front();
+  EXPECT_NO_THROW(world.addInterface(Eigen::Vector3d(0.02, 0.0, 0.05))) << "a finger in the hollow, over the cube";
+}
 }  // namespace
 }  // namespace god_finger
