@@ -386,24 +386,13 @@ struct GodFingerWorld::Impl
     probe.setCollisionShape(&sphere);
     probe.setWorldTransform(btTransform(btQuaternion::getIdentity(), toBullet(position)));
     probe.setUserIndex(kKindProxy);  // tested as a finger: against a body's true surface (a cup's hollow)
-    struct Deepest : btCollisionWorld::ContactResultCallback
-    {
-      double depth = 0.0;
-      btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
-                               const btCollisionObjectWrapper*, int, int) override
-      {
-        depth = std::max(depth, -static_cast<double>(point.getDistance()));
-        return 0;
-      }
-    };
     std::pair<int, double> deepest(-1, 0.0);
     for (std::size_t i = 0; i < bodies.size(); ++i)
     {
-      Deepest callback;
-      contactPairTestAsCollided(world.get(), &probe, bodies[i].rigid.get(), callback);
-      if (callback.depth > deepest.second)
+      const double depth = deepestPenetrationAsCollided(world.get(), &probe, bodies[i].rigid.get());
+      if (depth > deepest.second)
       {
-        deepest = {static_cast<int>(i), callback.depth};
+        deepest = {static_cast<int>(i), depth};
       }
     }
     return deepest;

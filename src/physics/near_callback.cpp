@@ -3,6 +3,8 @@
 #include "bullet_helpers.h"
 #include "scene_body.h"
 
+#include <algorithm>
+
 namespace god_finger::internal
 {
 namespace
@@ -83,9 +85,18 @@ void worldNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher
   }
 }
 
-void contactPairTestAsCollided(btCollisionWorld* world, btCollisionObject* a, btCollisionObject* b,
-                               btCollisionWorld::ContactResultCallback& callback)
+double deepestPenetrationAsCollided(btCollisionWorld* world, btCollisionObject* a, btCollisionObject* b)
 {
+  struct Deepest : btCollisionWorld::ContactResultCallback
+  {
+    double depth = 0.0;
+    btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
+                             const btCollisionObjectWrapper*, int, int) override
+    {
+      depth = std::max(depth, -static_cast<double>(point.getDistance()));
+      return 0;
+    }
+  };
   // A stand-in object of the surface at its place for a side that touches its FingerSurface.
   const auto stand_in = [](btCollisionObject* self, const FingerSurface* surface, btCollisionObject* object)
   {
@@ -101,6 +112,8 @@ void contactPairTestAsCollided(btCollisionWorld* world, btCollisionObject* a, bt
   btCollisionObject b_surface;
   btCollisionObject* first = stand_in(a, fingerSurfaceFor(a, b), &a_surface);
   btCollisionObject* second = stand_in(b, fingerSurfaceFor(b, a), &b_surface);
-  world->contactPairTest(first, second, callback);
+  Deepest deepest;
+  world->contactPairTest(first, second, deepest);
+  return deepest.depth;
 }
 }  // namespace god_finger::internal

@@ -18,11 +18,10 @@ namespace god_finger::internal
 {
 void worldNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher, const btDispatcherInfo& info);
 
-// Bullet's contact test between `a` and `b` (world->contactPairTest) with the shapes the near
-// callback collides for that pair: a finger (or a probe tagged kKindProxy) against a body's
-// FingerSurface. For the checks made when the world is built or a finger added (a body starting
-// inside another, a finger starting inside a body), which must see what the steps will. Not
-// real-time safe.
-void contactPairTestAsCollided(btCollisionWorld* world, btCollisionObject* a, btCollisionObject* b,
-                               btCollisionWorld::ContactResultCallback& callback);
+// How deep (m, >= 0) `a` and `b` penetrate, by Bullet's contact test (world->contactPairTest)
+// with the shapes the near callback collides for that pair: a finger (or a probe tagged
+// kKindProxy) against a body's FingerSurface. For the checks made when the world is built or a
+// finger added (a body starting inside another, a finger starting inside a body), which must see
+// what the steps will. Not real-time safe.
+double deepestPenetrationAsCollided(btCollisionWorld* world, btCollisionObject* a, btCollisionObject* b);
 }  // namespace god_finger::internal

@@ -7,20 +7,6 @@
 
 namespace god_finger::internal
 {
-namespace
-{
-// The deepest penetration Bullet reports between two objects (m, >= 0).
-struct DeepestContact : btCollisionWorld::ContactResultCallback
-{
-  double depth = 0.0;
-  btScalar addSingleResult(btManifoldPoint& point, const btCollisionObjectWrapper*, int, int,
-                           const btCollisionObjectWrapper*, int, int) override
-  {
-    depth = std::max(depth, -static_cast<double>(point.getDistance()));
-    return 0;
-  }
-};
-}  // namespace
 
 std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vector<SceneBody>& bodies,
                                        const SceneDescription& scene)
@@ -54,12 +40,11 @@ std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vecto
       {
         continue;
       }
-      DeepestContact contact;
-      contactPairTestAsCollided(world, bodies[i].rigid.get(), bodies[j].rigid.get(), contact);
-      if (contact.depth > kStartOverlapDepth)
+      const double depth = deepestPenetrationAsCollided(world, bodies[i].rigid.get(), bodies[j].rigid.get());
+      if (depth > kStartOverlapDepth)
       {
         char line[96];
-        std::snprintf(line, sizeof(line), "%.1f mm", 1e3 * contact.depth);
+        std::snprintf(line, sizeof(line), "%.1f mm", 1e3 * depth);
         warnings.push_back("bodies '" + scene.bodies[i].name + "' and '" + scene.bodies[j].name + "' start " + line +
                            " inside each other (more than " + std::to_string(int(1e3 * kStartOverlapDepth)) +
                            " mm): the first step pushes them apart; move one of them");
