@@ -7,6 +7,7 @@
 #include "god_finger/haptics/orientation_path.h"
 #include "god_finger/physics/joint_measure.h"
 #include "god_finger/scene/scene_budget.h"
+#include "god_finger/scene/scene_description.h"
 #include "god_finger/support/input_error.h"
 #include "near_callback.h"
 #include "overlap_push.h"
@@ -45,6 +46,7 @@ struct GodFingerWorld::Impl
   WorldParams params;
   Eigen::AlignedBox3d bounds;  // world_bounds.h: set by buildWorld
   SceneDescription scene;
+  std::shared_ptr<const SceneDescription> shared_scene;  // a copy of `scene` for snapshots
   std::vector<Body> bodies;
   std::vector<std::string> start_warnings;  // startWarnings()
   // The scene's joints' constraints (scene_joints.h), by joint index; jointed[body]: a joint's
@@ -582,8 +584,20 @@ struct GodFingerWorld::Impl
       const CouplingForce coupled = couplingForce(proxy.coupling, proxy.target, target_velocity, position, velocity);
       const Eigen::Vector3d& force = coupled.on_proxy;
       proxy.state.saturated = coupled.saturated;
-      proxy.rigid->applyCentralForce(toBullet(force));
       proxy.state.user_force = -force;
+      if (proxy.let_go_steps > 0)
+      {
+        // Letting go of a removed object: the proxy follows a target that reaches the hand
+        // over let_go_time, the hand feels the coupling to its own target (above).
+        const double left = double(proxy.let_go_steps--) / proxy.let_go_total;
+        const Eigen::Vector3d pull = proxy.target + left * proxy.let_go_offset;
+        proxy.rigid->applyCentralForce(
+            toBullet(couplingForce(proxy.coupling, pull, target_velocity, position, velocity).on_proxy));
+      }
+      else
+      {
+        proxy.rigid->applyCentralForce(toBullet(force));
+      }
       proxy.state.interface_position = proxy.target;
       proxy.previous_target = proxy.target;
       if (proxy.orientation.oriented)
@@ -627,6 +641,113 @@ struct GodFingerWorld::Impl
       proxy.state.proxy_velocity = toEigen(proxy.rigid->getLinearVelocity());
     }
     overlap.update(params, &proxies);
+  }
+
+  // The world around `next` (addObject, removeObject): old_of_new[i] is the body of now that
+  // becomes next's body i, or -1 for a new one (made here). Bodies and proxies keep their
+  // motion; proxies that pressed a body that goes let go (WorldParams::let_go_time). InputError
+  // before anything changes when a new body cannot be made.
+  void changeScene(SceneDescription next, const std::vector<int>& old_of_new)
+  {
+    const double max_edge = params.walk_edge_per_max_radius * params.contact.max_radius;
+    std::vector<Body> made(next.bodies.size());
+    for (std::size_t i = 0; i < next.bodies.size(); ++i)
+    {
+      if (old_of_new[i] < 0)
+      {
+        made[i] = makeSceneBody(next.bodies[i], max_edge);
+      }
+    }
+    std::vector<char> kept(bodies.size(), 0);
+    for (const int old : old_of_new)
+    {
+      if (old >= 0)
+      {
+        kept[old] = 1;
+      }
+    }
+    struct Motion
+    {
+      btTransform transform;
+      btVector3 linear;
+      btVector3 angular;
+    };
+    std::vector<Motion> motions;
+    for (const Body& body : bodies)
+    {
+      motions.push_back({body.rigid->getWorldTransform(), body.rigid->getLinearVelocity(), body.rigid->getAngularVelocity()});
+    }
+    std::vector<Proxy> saved;
+    std::vector<btVector3> proxy_velocities;
+    for (Proxy& proxy : proxies)
+    {
+      Proxy copy;
+      copy.initial = proxy.initial;
+      copy.target = proxy.target;
+      copy.previous_target = proxy.previous_target;
+      copy.orientation = proxy.orientation;
+      copy.state = proxy.state;
+      copy.let_go_offset = proxy.let_go_offset;
+      copy.let_go_steps = proxy.let_go_steps;
+      copy.let_go_total = proxy.let_go_total;
+      const Eigen::Vector3d position = toEigen(proxy.rigid->getWorldTransform().getOrigin());
+      for (int c = 0; c < proxy.state.contact_count; ++c)
+      {
+        const int body = proxy.state.contacts[c].body;
+        if (!kept[body] && params.let_go_time > 0.0)
+        {
+          copy.let_go_total = std::max(1, int(std::lround(params.let_go_time / params.time_step)));
+          copy.let_go_steps = copy.let_go_total;
+          copy.let_go_offset = position - proxy.target;
+        }
+      }
+      proxy_velocities.push_back(proxy.rigid->getLinearVelocity());
+      proxy.initial = position;  // buildWorld puts it there
+      saved.push_back(std::move(copy));
+    }
+    teardownWorld();
+    for (std::size_t i = 0; i < next.bodies.size(); ++i)
+    {
+      if (old_of_new[i] >= 0)
+      {
+        made[i] = std::move(bodies[old_of_new[i]]);
+      }
+    }
+    bodies = std::move(made);
+    scene = std::move(next);
+    shared_scene = std::make_shared<const SceneDescription>(scene);
+    buildWorld();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      if (old_of_new[i] < 0 || scene.bodies[i].is_static)
+      {
+        continue;
+      }
+      const Motion& motion = motions[old_of_new[i]];
+      btRigidBody* rigid = bodies[i].rigid.get();
+      rigid->setWorldTransform(motion.transform);
+      rigid->setInterpolationWorldTransform(motion.transform);
+      rigid->setLinearVelocity(motion.linear);
+      rigid->setAngularVelocity(motion.angular);
+      rigid->setInterpolationLinearVelocity(motion.linear);
+      rigid->setInterpolationAngularVelocity(motion.angular);
+      world->updateSingleAabb(rigid);
+    }
+    for (std::size_t i = 0; i < proxies.size(); ++i)
+    {
+      Proxy& proxy = proxies[i];
+      const Proxy& before = saved[i];
+      proxy.initial = before.initial;
+      proxy.target = before.target;
+      proxy.previous_target = before.previous_target;
+      proxy.orientation = before.orientation;
+      proxy.state = before.state;
+      proxy.let_go_offset = before.let_go_offset;
+      proxy.let_go_steps = before.let_go_steps;
+      proxy.let_go_total = before.let_go_total;
+      proxy.rigid->setLinearVelocity(proxy_velocities[i]);
+      proxy.rigid->setInterpolationLinearVelocity(proxy_velocities[i]);
+    }
   }
 
   void teardownWorld()
@@ -675,6 +796,7 @@ GodFingerWorld::GodFingerWorld(const SceneDescription& scene, const WorldParams&
   useFingerRollingFriction();
   impl_->params = params;
   impl_->scene = scene;
+  impl_->shared_scene = std::make_shared<const SceneDescription>(scene);
   impl_->buildBodies();
   impl_->buildWorld();
   impl_->start_warnings = startOverlaps(impl_->world.get(), impl_->bodies, impl_->scene);
@@ -804,6 +926,92 @@ void GodFingerWorld::resetAtInterfaces()
   reset();
 }
 
+std::vector<std::string> GodFingerWorld::addObject(const SceneDescription& object)
+{
+  Impl& impl = *impl_;
+  if (object.bodies.empty())
+  {
+    throw InputError("object '" + object.name + "' has no body");
+  }
+  SceneDescription next = impl.scene;
+  std::vector<int> old_of_new(next.bodies.size());
+  for (std::size_t i = 0; i < old_of_new.size(); ++i)
+  {
+    old_of_new[i] = static_cast<int>(i);
+  }
+  const int first = static_cast<int>(next.bodies.size());
+  for (const BodyDescription& body : object.bodies)
+  {
+    if (next.find(body.name) >= 0)
+    {
+      throw InputError("the scene has a body named '" + body.name + "' already (give the object another name)");
+    }
+    next.bodies.push_back(body);
+    old_of_new.push_back(-1);
+  }
+  for (JointDescription joint : object.joints)
+  {
+    joint.child += first;
+    joint.parent = joint.parent < 0 ? -1 : joint.parent + first;
+    next.joints.push_back(joint);
+  }
+  checkSceneFits(next, impl.params.walk_edge_per_max_radius * impl.params.contact.max_radius);
+  checkJoints(next);
+  next.warnings.insert(next.warnings.end(), object.warnings.begin(), object.warnings.end());
+  impl.changeScene(std::move(next), old_of_new);
+  std::vector<std::string> warnings;
+  for (const std::string& line : startOverlaps(impl.world.get(), impl.bodies, impl.scene))
+  {
+    for (const BodyDescription& body : object.bodies)
+    {
+      if (line.find("'" + body.name + "'") != std::string::npos)
+      {
+        warnings.push_back(line);
+        break;
+      }
+    }
+  }
+  return warnings;
+}
+
+int GodFingerWorld::removeObject(const std::string& name)
+{
+  Impl& impl = *impl_;
+  const auto named = [&name](const std::string& body)
+  { return body == name || (body.size() > name.size() && body.compare(0, name.size() + 1, name + "/") == 0); };
+  SceneDescription next;
+  next.name = impl.scene.name;
+  next.warnings = impl.scene.warnings;
+  std::vector<int> old_of_new;
+  std::vector<int> new_of_old(impl.scene.bodies.size(), -1);
+  for (std::size_t i = 0; i < impl.scene.bodies.size(); ++i)
+  {
+    if (!named(impl.scene.bodies[i].name))
+    {
+      new_of_old[i] = static_cast<int>(next.bodies.size());
+      old_of_new.push_back(static_cast<int>(i));
+      next.bodies.push_back(impl.scene.bodies[i]);
+    }
+  }
+  const int removed = static_cast<int>(impl.scene.bodies.size() - next.bodies.size());
+  if (removed == 0 || name.empty())
+  {
+    throw InputError("the scene has no body named '" + name + "'");
+  }
+  for (JointDescription joint : impl.scene.joints)
+  {
+    if (new_of_old[joint.child] < 0 || (joint.parent >= 0 && new_of_old[joint.parent] < 0))
+    {
+      continue;  // a joint holding a body that goes goes with it
+    }
+    joint.child = new_of_old[joint.child];
+    joint.parent = joint.parent < 0 ? -1 : new_of_old[joint.parent];
+    next.joints.push_back(joint);
+  }
+  impl.changeScene(std::move(next), old_of_new);
+  return removed;
+}
+
 void GodFingerWorld::setContactModel(ContactModel model)
 {
   impl_->params.model = model;
@@ -906,6 +1114,7 @@ JointState GodFingerWorld::jointState(int joint) const
 
 void GodFingerWorld::snapshot(WorldSnapshot* out) const
 {
+  out->scene = impl_->shared_scene;
   out->time = impl_->time;
   out->steps = impl_->steps;
   out->model = impl_->params.model;

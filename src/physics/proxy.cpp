@@ -39,5 +39,6 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->reference_tangents.assign(body_count, Eigen::Vector3d::Zero());
   proxy->warm_starts.assign(body_count, {});
   proxy->pads.assign(body_count, PadState());
+  proxy->let_go_steps = 0;
 }
 }  // namespace god_finger::internal

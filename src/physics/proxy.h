@@ -41,6 +41,13 @@ struct Proxy
   std::vector<std::array<WarmStart, ContactParams::kMaxSubGodObjects>> warm_starts;
   // Per touched body: its finger pad (pad_state.h).
   std::vector<PadState> pads;
+  // Letting go of a removed object (WorldParams::let_go_time): for let_go_steps more steps of
+  // let_go_total, the coupling pulls the proxy toward target + let_go_steps / let_go_total *
+  // let_go_offset (m, world: where the proxy was from the hand when its object went), while the
+  // hand feels the coupling to the target itself.
+  Eigen::Vector3d let_go_offset = Eigen::Vector3d::Zero();
+  int let_go_steps = 0;
+  int let_go_total = 0;
 };
 
 // Builds the proxy's sphere and rigid body at `proxy.initial` (index `index`, touching

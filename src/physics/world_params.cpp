@@ -114,6 +114,9 @@ const ParameterTable<WorldParams>& worldParameterTable()
         realRow<P>("world_margin", "m", openClosed(0.0, 1e6),
                    "a body whose centre of mass leaves the scene's box grown by this is put back at its start",
                    [](P& p) -> double& { return p.world_margin; }),
+        realRow<P>("let_go_time", "s", closed(0.0, 10.0),
+                   "a finger pressing an object that is deleted lets go over this time (its force ramps to zero)",
+                   [](P& p) -> double& { return p.let_go_time; }),
     };
     rows.insert(rows.end(), more.begin(), more.end());
     return rows;

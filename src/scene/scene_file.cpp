@@ -169,7 +169,6 @@ class SceneListParser
     {
       fail(where, error.what());
     }
-    scene->warnings.insert(scene->warnings.end(), parts.warnings.begin(), parts.warnings.end());
     Eigen::Isometry3d placement = Eigen::Isometry3d::Identity();
     if (object["xyz"])
     {
@@ -183,50 +182,35 @@ class SceneListParser
            Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
               .toRotationMatrix();
     }
-    const std::string name = object["name"] ? text(object["name"], where + ".name") : std::string();
-    const int first_body = static_cast<int>(scene->bodies.size());
-    std::vector<bool> jointed(parts.bodies.size(), false);  // an articulated object's moving links
-    for (JointDescription joint : parts.joints)
+    ObjectPlacement placed;
+    placed.pose = placement;
+    placed.name = object["name"] ? text(object["name"], where + ".name") : std::string();
+    if (object["fixed"])
     {
-      jointed[joint.child] = true;
-      joint.child += first_body;
-      joint.parent = joint.parent < 0 ? -1 : joint.parent + first_body;
-      joint.joint_in_parent = joint.parent < 0 ? placement * joint.joint_in_parent : joint.joint_in_parent;
-      joint.name = name.empty() ? joint.name : name + "/" + joint.name;
-      scene->joints.push_back(joint);
+      try
+      {
+        placed.fixed = object["fixed"].as<bool>();
+      }
+      catch (const YAML::Exception&)
+      {
+        fail(where + ".fixed", "must be true or false");
+      }
     }
-    for (std::size_t part = 0; part < parts.bodies.size(); ++part)
+    const std::size_t first_body = scene->bodies.size();
+    try
     {
-      BodyDescription body = parts.bodies[part];
-      body.pose = placement * body.pose;
-      if (!name.empty())
+      placeObject(parts, placed, scene);
+    }
+    catch (const InputError& error)
+    {
+      fail(where, error.what());
+    }
+    for (std::size_t i = first_body; i < scene->bodies.size(); ++i)
+    {
+      if (!names->insert(scene->bodies[i].name).second)
       {
-        body.name = parts.bodies.size() == 1 ? name : name + "/" + body.name;
+        fail(where, "the name '" + scene->bodies[i].name + "' is given twice (give each object its own 'name')");
       }
-      if (object["fixed"] && !jointed[part])  // fixed: the object's base; its jointed links still move
-      {
-        bool fixed = false;
-        try
-        {
-          fixed = object["fixed"].as<bool>();
-        }
-        catch (const YAML::Exception&)
-        {
-          fail(where + ".fixed", "must be true or false");
-        }
-        if (!fixed && body.is_static && !(body.mass > 0.0))
-        {
-          fail(where, "body '" + body.name +
-                          "' is fixed in its file and has no usable <inertial> (a positive mass, a positive-definite "
-                          "inertia): it cannot be made free");
-        }
-        body.is_static = fixed;
-      }
-      if (!names->insert(body.name).second)
-      {
-        fail(where, "the name '" + body.name + "' is given twice (give each object its own 'name')");
-      }
-      scene->bodies.push_back(body);
     }
   }
 
@@ -245,6 +229,68 @@ BodyDescription supportTable()
   table.is_static = true;
   table.material.friction = 0.6;
   return table;
+}
+
+void placeObject(const SceneDescription& object, const ObjectPlacement& placement, SceneDescription* scene)
+{
+  const int first_body = static_cast<int>(scene->bodies.size());
+  const std::string& name = placement.name;
+  std::vector<bool> jointed(object.bodies.size(), false);  // an articulated object's moving links
+  for (JointDescription joint : object.joints)
+  {
+    jointed[joint.child] = true;
+    joint.child += first_body;
+    joint.parent = joint.parent < 0 ? -1 : joint.parent + first_body;
+    joint.joint_in_parent = joint.parent < 0 ? placement.pose * joint.joint_in_parent : joint.joint_in_parent;
+    joint.name = name.empty() ? joint.name : name + "/" + joint.name;
+    scene->joints.push_back(joint);
+  }
+  for (std::size_t part = 0; part < object.bodies.size(); ++part)
+  {
+    BodyDescription body = object.bodies[part];
+    body.pose = placement.pose * body.pose;
+    if (!name.empty())
+    {
+      body.name = object.bodies.size() == 1 ? name : name + "/" + body.name;
+    }
+    if (placement.fixed && !jointed[part])  // fixed: the object's base; its jointed links still move
+    {
+      if (!*placement.fixed && body.is_static && !(body.mass > 0.0))
+      {
+        throw InputError("body '" + body.name +
+                         "' is fixed in its file and has no usable <inertial> (a positive mass, a positive-definite "
+                         "inertia): it cannot be made free");
+      }
+      body.is_static = *placement.fixed;
+    }
+    scene->bodies.push_back(body);
+  }
+  scene->warnings.insert(scene->warnings.end(), object.warnings.begin(), object.warnings.end());
+}
+
+SceneDescription loadPlacedObject(const std::string& path, const ObjectPlacement& placement,
+                                  const PackageResolver& packages)
+{
+  if (endsWith(path, ".yaml") || endsWith(path, ".yml"))
+  {
+    throw InputError("'" + path + "': a scene list is not one object (give a URDF file)");
+  }
+  if (!placement.pose.matrix().allFinite())
+  {
+    throw InputError("'" + path + "': the pose must be finite");
+  }
+  const SceneDescription object = loadUrdfScene(path, packages);
+  SceneDescription placed;
+  placed.name = placement.name.empty() ? object.name : placement.name;
+  try
+  {
+    placeObject(object, placement, &placed);
+  }
+  catch (const InputError& error)
+  {
+    throw InputError("'" + path + "': " + error.what());
+  }
+  return placed;
 }
 
 SceneDescription loadScene(const std::string& path, const PackageResolver& packages)

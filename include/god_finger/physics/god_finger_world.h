@@ -98,6 +98,22 @@ class GodFingerWorld
   // start: a hand holding a device feels no jump (the servo loop's reset).
   void resetAtInterfaces();
 
+  // Scene edits while running (the spawn_object and delete_object services): Bullet's world is
+  // rebuilt around the new scene, every other body and every proxy kept where it is and moving
+  // as it moved (contacts restart: one step without warm start; sleeping bodies wake and sleep
+  // again). The time and step count go on. Not real-time safe: it allocates and makes the new
+  // bodies' shapes.
+  //
+  // Adds `object` (scene_file.h loadPlacedObject: its joints index its own bodies, parent -1 the
+  // world) at its bodies' poses: from now on they are the scene's (a reset puts them back there).
+  // Returns one line per body it starts inside of (start_overlaps.h). InputError, the world
+  // unchanged: no body, a name the scene has already, a body or joint the world refuses.
+  std::vector<std::string> addObject(const SceneDescription& object);
+  // Removes the bodies named `name` or `name/...` (an object added with several links), and the
+  // joints that hold them. A finger pressing one lets go over WorldParams::let_go_time. Returns
+  // how many bodies went. InputError, nothing removed: no body of that name.
+  int removeObject(const std::string& name);
+
   void setContactModel(ContactModel model);
   ContactModel contactModel() const;
   // Throws InputError on invalid parameters; keeps the old ones then.
@@ -115,6 +131,8 @@ class GodFingerWorld
   // (joint_measure.h). Articulated bodies never sleep.
   int jointCount() const;
   JointState jointState(int joint) const;
+  // The scene as it is now (addObject and removeObject change it; the loop's thread only: an
+  // observer elsewhere reads WorldSnapshot::scene).
   const SceneDescription& scene() const;
   // Fills `out` with the current state. Allocates only when out's vectors are smaller than
   // the body or interface count (so a snapshot buffer filled once never allocates again).

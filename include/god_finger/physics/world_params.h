@@ -134,6 +134,11 @@ struct WorldParams
   // falling) is put back at its initial pose, at rest, and counted (BodyState::left_world): the
   // scene stays whole however long it runs. 1 m: far from anything a finger does on a table.
   double world_margin = 1.0;
+  // s: a finger pressing an object that is removed (GodFingerWorld::removeObject) lets go over
+  // this time: its proxy is pulled toward the hand through a target that starts where the proxy
+  // was and reaches the hand linearly, so the force on the hand falls to zero with it instead of
+  // in one step. 0: at once.
+  double let_go_time = 0.1;
 };
 
 // The one table of the parameters of WorldParams read by name (its rows are the list; the

@@ -6,9 +6,11 @@
 #include "god_finger/contact/contact_area.h"
 #include "god_finger/contact/contact_params.h"
 #include "god_finger/physics/contact_model.h"
+#include "god_finger/scene/scene_description.h"
 
 #include <Eigen/Geometry>
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace god_finger
@@ -83,6 +85,10 @@ struct JointState
 
 struct WorldSnapshot
 {
+  // The scene these bodies are (their names, shapes, joints), by body index: the world's scene
+  // when the snapshot was taken (it changes when objects are added or removed). Shared, never
+  // changed: an observer reads it in its own thread.
+  std::shared_ptr<const SceneDescription> scene;
   double time = 0.0;  // s, world time of the step
   long steps = 0;
   ContactModel model = ContactModel::kGodFinger;

@@ -22,11 +22,33 @@
 #include "god_finger/scene/scene_description.h"
 #include "god_finger/scene/urdf_scene.h"
 
+#include <optional>
 #include <string>
 
 namespace god_finger
 {
+// Where and how one object file goes into a scene: a scene list's entry, the spawn_object
+// service's request.
+struct ObjectPlacement
+{
+  std::string name;                                        // empty: the file's body names (several: NAME/BODY)
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();  // the file's frame in `world`
+  std::optional<bool> fixed;                               // none: the file's own
+};
+
 SceneDescription loadScene(const std::string& path, const PackageResolver& packages = PackageResolver());
+
+// Appends `object` (one URDF as loadUrdfScene gives it: its joints index its bodies, parent -1
+// the world) to `scene`, placed: bodies moved by the pose and renamed (NAME, or NAME/BODY when
+// the object has several; joints NAME/JOINT), `fixed` applied to the bodies no joint moves, the
+// object's warnings added. InputError (no file name in it) when a fixed body without mass is made
+// free. Names are not checked against the scene's.
+void placeObject(const SceneDescription& object, const ObjectPlacement& placement, SceneDescription* scene);
+// One object file (a URDF of either form) placed alone: the scene a spawn adds
+// (GodFingerWorld::addObject). InputError naming the file: a scene list, a pose that is not finite,
+// and every refusal of loadUrdfScene.
+SceneDescription loadPlacedObject(const std::string& path, const ObjectPlacement& placement,
+                                  const PackageResolver& packages = PackageResolver());
 
 // The table a scene list stands its objects on (support: table): static, 1 m x 1 m x 4 cm, its
 // top the plane z = 0, lateral friction 0.6 as the shipped scenes' tables.

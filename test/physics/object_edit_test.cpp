@@ -1,0 +1,192 @@
+// Objects added and removed while the world runs (GodFingerWorld::addObject / removeObject, the
+// spawn_object and delete_object services): an object file placed at a pose joins the scene,
+// falls and rests, and can be pressed; every other body keeps its pose and motion across the
+// change exactly; a finger pressing an object that is removed lets go over let_go_time (its
+// force falls in steps of F / (let_go_time / dt), not at once); bad edits change nothing.
+#include "god_finger/physics/god_finger_world.h"
+#include "god_finger/scene/scene_file.h"
+#include "god_finger/scene/urdf_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace god_finger
+{
+namespace
+{
+const std::string kUrdf = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/";
+
+SceneDescription block(const std::string& name, const Eigen::Vector3d& at)
+{
+  ObjectPlacement placement;
+  placement.name = name;
+  placement.pose.translation() = at;
+  return loadPlacedObject(kUrdf + "objects/block.urdf", placement);
+}
+
+void expectSameMotion(const BodyState& before, const BodyState& after)
+{
+  EXPECT_TRUE(before.pose.isApprox(after.pose, 1e-12)) << before.pose.matrix() << "\n" << after.pose.matrix();
+  EXPECT_TRUE(before.linear_velocity.isApprox(after.linear_velocity, 1e-12));
+  EXPECT_TRUE((before.angular_velocity - after.angular_velocity).norm() < 1e-12);
+}
+
+TEST(ObjectEdit, AnAddedObjectFallsRestsAndTheOthersKeepTheirMotion)
+{
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
+  const int cube = world.scene().find("cube");
+  ASSERT_GE(cube, 0);
+  for (int i = 0; i < 20; ++i)  // pushed: sliding
+  {
+    world.applyBodyWrench(cube, Eigen::Vector3d(20.0, 0.0, 0.0), Eigen::Vector3d::Zero());
+    world.step();
+  }
+  const BodyState sliding = world.bodyState(cube);
+  ASSERT_GT(sliding.linear_velocity.x(), 0.01);
+  const double time = world.time();
+  const std::vector<std::string> warnings = world.addObject(block("block", Eigen::Vector3d(0.2, 0.0, 0.05)));
+  EXPECT_TRUE(warnings.empty());
+  ASSERT_EQ(world.bodyCount(), 3);
+  EXPECT_EQ(world.scene().bodies[2].name, "block");
+  EXPECT_EQ(world.time(), time);  // the clock goes on
+  expectSameMotion(sliding, world.bodyState(cube));
+  WorldSnapshot snapshot;
+  world.snapshot(&snapshot);
+  ASSERT_TRUE(snapshot.scene != nullptr);
+  EXPECT_EQ(snapshot.scene->bodies.size(), 3u);
+  EXPECT_EQ(snapshot.scene->bodies[2].name, "block");
+  for (int i = 0; i < 1500; ++i)
+  {
+    world.step();
+  }
+  const BodyState rested = world.bodyState(2);
+  std::printf("added block: rests at z = %.5f m (its half height 0.015 m), speed %.2e m/s\n",
+              rested.pose.translation().z(), rested.linear_velocity.norm());
+  EXPECT_NEAR(rested.pose.translation().z(), 0.015, 0.001);
+  EXPECT_NEAR(rested.pose.translation().x(), 0.2, 0.001);
+  EXPECT_LT(rested.linear_velocity.norm(), 1e-3);
+  // A reset puts it back where it was added.
+  world.reset();
+  EXPECT_NEAR(world.bodyState(2).pose.translation().z(), 0.05, 1e-12);
+}
+
+// A finger pressing the added block 4 mm deep; the block is removed. Returns the largest change
+// of the force on the hand from one step to the next after the removal, and the force 0.3 s later.
+struct LetGo
+{
+  double pressed = 0.0;       // N, before the removal
+  double largest_step = 0.0;  // N
+  double after = 0.0;         // N
+};
+
+LetGo pressAndRemove(double let_go_time)
+{
+  WorldParams params;
+  params.let_go_time = let_go_time;
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), params);
+  world.addObject(block("block", Eigen::Vector3d(0.2, 0.0, 0.015)));
+  const double radius = params.coupling.proxy_radius;
+  const int finger = world.addInterface(Eigen::Vector3d(0.2, 0.0, 0.06));
+  // The hand 25 mm above the table: through the block's top (3 cm), not into the table.
+  const Eigen::Vector3d pressing(0.2, 0.0, 0.025 + radius);
+  for (int i = 1; i <= 1000; ++i)
+  {
+    world.setInterfaceTarget(finger, Eigen::Vector3d(0.2, 0.0, 0.06) + (pressing - Eigen::Vector3d(0.2, 0.0, 0.06)) *
+                                                                           std::min(1.0, i / 500.0));
+    world.step();
+  }
+  LetGo result;
+  result.pressed = world.interfaceState(finger).user_force.norm();
+  EXPECT_EQ(world.interfaceState(finger).contact_count, 1);
+  EXPECT_EQ(world.removeObject("block"), 1);
+  EXPECT_EQ(world.bodyCount(), 2);
+  Eigen::Vector3d previous = world.interfaceState(finger).user_force;
+  for (int i = 0; i < 300; ++i)
+  {
+    world.setInterfaceTarget(finger, pressing);
+    world.step();
+    const Eigen::Vector3d force = world.interfaceState(finger).user_force;
+    result.largest_step = std::max(result.largest_step, (force - previous).norm());
+    previous = force;
+  }
+  result.after = previous.norm();
+  return result;
+}
+
+TEST(ObjectEdit, AFingerPressingARemovedObjectLetsGoOverLetGoTime)
+{
+  const LetGo smooth = pressAndRemove(0.1);
+  const LetGo at_once = pressAndRemove(0.0);
+  std::printf("pressing %.3f N; removed: largest force step %.4f N over let_go_time 0.1 s, %.4f N at once; "
+              "0.3 s later %.2e N\n",
+              smooth.pressed, smooth.largest_step, at_once.largest_step, smooth.after);
+  ASSERT_GT(smooth.pressed, 1.0);
+  // A linear ramp over 100 steps: about F / 100 a step (the proxy's lag adds little).
+  EXPECT_LT(smooth.largest_step, 2.0 * smooth.pressed / 100.0);
+  // What the ramp avoids: the free proxy springs to the hand in a few steps.
+  EXPECT_GT(at_once.largest_step, 5.0 * smooth.largest_step);
+  EXPECT_LT(smooth.after, 1e-3);                           // let go: free space
+}
+
+TEST(ObjectEdit, BadEditsChangeNothing)
+{
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
+  EXPECT_THROW(world.addObject(block("cube", Eigen::Vector3d(0.2, 0, 0.05))), InputError);  // a name taken
+  EXPECT_THROW(world.removeObject("nothing"), InputError);
+  EXPECT_THROW(world.removeObject(""), InputError);
+  EXPECT_THROW(world.addObject(SceneDescription()), InputError);
+  EXPECT_EQ(world.bodyCount(), 2);
+  try
+  {
+    world.addObject(block("cube", Eigen::Vector3d(0.2, 0, 0.05)));
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("'cube' already"), std::string::npos) << error.what();
+  }
+  ObjectPlacement nan;
+  nan.pose.translation().x() = std::nan("");
+  EXPECT_THROW(loadPlacedObject(kUrdf + "objects/block.urdf", nan), InputError);
+  EXPECT_THROW(loadPlacedObject(kUrdf + "lists/table_objects.yaml", ObjectPlacement()), InputError);
+  EXPECT_THROW(loadPlacedObject(kUrdf + "objects/none.urdf", ObjectPlacement()), InputError);
+}
+
+TEST(ObjectEdit, AnObjectStartingInsideAnotherIsWarnedAbout)
+{
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
+  const std::vector<std::string> warnings = world.addObject(block("block", Eigen::Vector3d(0.0, 0.0, 0.03)));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("'block'"), std::string::npos) << warnings[0];
+  EXPECT_NE(warnings[0].find("'cube'"), std::string::npos) << warnings[0];
+}
+
+TEST(ObjectEdit, RemovingAJointedBodyRemovesItsJoint)
+{
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/door.urdf"), WorldParams());
+  ASSERT_EQ(world.jointCount(), 1);
+  const int before = world.bodyCount();
+  EXPECT_EQ(world.removeObject("door"), 1);
+  EXPECT_EQ(world.bodyCount(), before - 1);
+  EXPECT_EQ(world.jointCount(), 0);
+  for (int i = 0; i < 100; ++i)
+  {
+    world.step();
+  }
+  // An articulated object added at run time: its joint with it, relative to the world.
+  ObjectPlacement placement;
+  placement.name = "second";
+  placement.pose.translation() = Eigen::Vector3d(0.0, 0.5, 0.0);
+  const SceneDescription door = loadPlacedObject(kUrdf + "scenes/door.urdf", placement);
+  world.addObject(door);
+  EXPECT_EQ(world.jointCount(), 1);
+  for (int i = 0; i < 500; ++i)
+  {
+    world.step();
+  }
+  EXPECT_NEAR(world.jointState(0).position, 0.0, 1e-3);  // the hinge holds it where it was placed
+}
+}  // namespace
+}  // namespace god_finger
