@@ -675,7 +675,8 @@ struct GodFingerWorld::Impl
     std::vector<Motion> motions;
     for (const Body& body : bodies)
     {
-      motions.push_back({body.rigid->getWorldTransform(), body.rigid->getLinearVelocity(), body.rigid->getAngularVelocity()});
+      motions.push_back(
+          {body.rigid->getWorldTransform(), body.rigid->getLinearVelocity(), body.rigid->getAngularVelocity()});
     }
     std::vector<Proxy> saved;
     std::vector<btVector3> proxy_velocities;
@@ -960,6 +961,16 @@ std::vector<std::string> GodFingerWorld::addObject(const SceneDescription& objec
   next.warnings.insert(next.warnings.end(), object.warnings.begin(), object.warnings.end());
   impl.changeScene(std::move(next), old_of_new);
   std::vector<std::string> warnings;
+  for (std::size_t i = 0; i < impl.proxies.size(); ++i)
+  {
+    const std::pair<int, double> inside = impl.deepestOverlap(impl.proxies[i].state.proxy_position);
+    if (inside.first >= first && inside.second > kStartOverlapDepth)
+    {
+      warnings.push_back("finger " + std::to_string(i) + " starts " + std::to_string(inside.second) + " m inside '" +
+                         impl.scene.bodies[inside.first].name +
+                         "': the solver pushes its proxy out (the hand feels it)");
+    }
+  }
   for (const std::string& line : startOverlaps(impl.world.get(), impl.bodies, impl.scene))
   {
     for (const BodyDescription& body : object.bodies)

@@ -8,9 +8,9 @@
 
 #include "god_finger/contact/contact_params.h"
 #include "god_finger/haptics/virtual_coupling.h"
-#include "god_finger/physics/world_state.h"
 #include "god_finger/physics/oriented_finger.h"
 #include "god_finger/physics/world_params.h"
+#include "god_finger/physics/world_state.h"
 #include "solver/pad_state.h"
 #include "solver/warm_start.h"
 

@@ -269,12 +269,16 @@ struct PhysicsNode::Impl
       }
     }
     const ros::Time stamp = ros::Time::now();
-    const SceneDescription& scene = world->scene();
+    const SceneDescription& scene = *snapshot.scene;  // the world's may change meanwhile (spawn_object)
     contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
     marker_publisher.publish(markerMessage(scene, snapshot, proxy_radius, stamp));
     broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
     if (!scene.joints.empty())
     {
+      if (!joint_publisher)  // the first joint came with a spawned object
+      {
+        joint_publisher = nh.advertise<sensor_msgs::JointState>("joint_states", 10);
+      }
       joint_publisher.publish(jointStateMessage(scene, snapshot, stamp));
     }
     std::lock_guard<std::mutex> lock(mutex);

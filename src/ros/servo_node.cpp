@@ -61,6 +61,7 @@ struct ServoNode::Impl
     long lost_samples = 0;  // samples untracked since the last diagnostics
   };
 
+  ros::NodeHandle nh;  // the node's namespace (topics advertised late: joint_states)
   std::unique_ptr<ServoLoop> loop;
   std::vector<Interface> interfaces;
   std::vector<std::string> names;
@@ -288,12 +289,16 @@ struct ServoNode::Impl
         any = true;
         const ros::Time stamp =
             sim_time ? ros::Time(snapshot.time > 0.0 ? snapshot.time : loop->period()) : ros::Time::now();
-        const SceneDescription& scene = loop->world().scene();
+        const SceneDescription& scene = *snapshot.scene;  // the world's changes with spawn_object
         contact_publisher.publish(contactAreaMessage(scene, snapshot, names, stamp));
         marker_publisher.publish(markerMessage(scene, snapshot, loop->world().params().coupling.proxy_radius, stamp));
         broadcaster.sendTransform(bodyTransforms(scene, snapshot, stamp));
         if (!scene.joints.empty())
         {
+          if (!joint_publisher)  // the first joint came with a spawned object
+          {
+            joint_publisher = nh.advertise<sensor_msgs::JointState>("joint_states", kPublisherQueue);
+          }
           joint_publisher.publish(jointStateMessage(scene, snapshot, stamp));
         }
         left_world.update(scene, snapshot, stamp.toSec(),
@@ -323,6 +328,7 @@ struct ServoNode::Impl
 ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
 {
   Impl& impl = *impl_;
+  impl.nh = nh;
   impl.node_name = pnh.getNamespace();  // "/servo", "/physics", "/finger/haptic"
   ServoSetup setup = makeServoSetup(nh, pnh, [](const std::string& message) { ROS_WARN("%s", message.c_str()); });
   impl.loop = std::move(setup.loop);

@@ -1,6 +1,14 @@
 #include "world_services.h"
 
+#include "god_finger/scene/scene_file.h"
+#include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/input_error.h"
+
 #include <ros/console.h>
+#include <ros/package.h>
+
+#include <chrono>
+#include <future>
 
 namespace god_finger
 {
@@ -17,6 +25,141 @@ WorldServices::WorldServices(ros::NodeHandle nh, const ros::NodeHandle& pnh, con
       node);
   reset_service_ = nh.advertiseService("reset_scene", &WorldServices::onReset, this);
   model_service_ = nh.advertiseService("set_contact_model", &WorldServices::onSetModel, this);
+  spawn_service_ = nh.advertiseService("spawn_object", &WorldServices::onSpawn, this);
+  delete_service_ = nh.advertiseService("delete_object", &WorldServices::onDelete, this);
+}
+
+namespace
+{
+// How long a service waits for the world to take an edit (s): the world takes it between two
+// steps, so only a stopped loop makes it wait this long.
+constexpr double kEditDeadline = 10.0;
+
+bool startsWith(const std::string& text, const std::string& prefix)
+{
+  return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+// The request's pose: an all-zero quaternion (what a request that leaves it out carries) is no
+// rotation; others must be finite with a norm in [0.5, 2] and are normalised.
+Eigen::Isometry3d requestPose(const geometry_msgs::Pose& pose)
+{
+  const geometry_msgs::Quaternion& q = pose.orientation;
+  Eigen::Quaterniond rotation(q.w, q.x, q.y, q.z);
+  if (q.w == 0.0 && q.x == 0.0 && q.y == 0.0 && q.z == 0.0)
+  {
+    rotation = Eigen::Quaterniond::Identity();
+  }
+  if (!rotation.coeffs().allFinite() || rotation.norm() < 0.5 || rotation.norm() > 2.0)
+  {
+    throw InputError("the pose's orientation is not a usable quaternion (finite, of norm near 1)");
+  }
+  Eigen::Isometry3d result = Eigen::Isometry3d::Identity();
+  result.linear() = rotation.normalized().toRotationMatrix();
+  result.translation() = Eigen::Vector3d(pose.position.x, pose.position.y, pose.position.z);
+  if (!result.translation().allFinite())
+  {
+    throw InputError("the pose's position must be finite");
+  }
+  return result;
+}
+}  // namespace
+
+ObjectEdit::Outcome WorldServices::edit(ServoCommand::Kind kind, const std::shared_ptr<ObjectEdit>& edit)
+{
+  std::future<ObjectEdit::Outcome> done = edit->done.get_future();
+  ServoCommand command;
+  command.kind = kind;
+  command.edit = edit;
+  ObjectEdit::Outcome outcome;
+  if (!post_(command, &outcome.message))
+  {
+    return outcome;
+  }
+  if (done.wait_for(std::chrono::duration<double>(kEditDeadline)) != std::future_status::ready)
+  {
+    outcome.message = "the world did not take the edit within " + std::to_string(int(kEditDeadline)) +
+                      " s (is its loop running?); it may still take it";
+    return outcome;
+  }
+  return done.get();
+}
+
+bool WorldServices::onSpawn(god_finger::SpawnObject::Request& request, god_finger::SpawnObject::Response& response)
+{
+  auto edit = std::make_shared<ObjectEdit>();
+  try
+  {
+    if (!startsWith(request.file, "/") && !startsWith(request.file, "file://") &&
+        !startsWith(request.file, "package://"))
+    {
+      throw InputError("file '" + request.file +
+                       "': give an absolute path, file:///..., or package://PACKAGE/... (the node's folder is not "
+                       "yours)");
+    }
+    if (request.fixed > god_finger::SpawnObject::Request::FREE)
+    {
+      throw InputError("fixed must be AS_IN_FILE (0), FIXED (1) or FREE (2), not " + std::to_string(request.fixed));
+    }
+    const PackageResolver packages = [](const std::string& name) { return ros::package::getPath(name); };
+    std::string package;
+    const std::string path = resolveFileName(request.file, "", packages, &package);
+    if (path.empty())
+    {
+      throw InputError("file '" + request.file + "': ROS package '" + package + "' not found");
+    }
+    ObjectPlacement placement;
+    placement.name = request.name;
+    placement.pose = requestPose(request.pose);
+    if (request.fixed != god_finger::SpawnObject::Request::AS_IN_FILE)
+    {
+      placement.fixed = request.fixed == god_finger::SpawnObject::Request::FIXED;
+    }
+    edit->object = loadPlacedObject(path, placement, packages);
+  }
+  catch (const InputError& error)
+  {
+    response.success = false;
+    response.message = error.what();
+    ROS_WARN("%s: spawn_object refused: %s", node_.c_str(), error.what());
+    return true;
+  }
+  for (const std::string& warning : edit->object.warnings)
+  {
+    ROS_WARN("%s: spawn_object: %s", node_.c_str(), warning.c_str());
+  }
+  const ObjectEdit::Outcome outcome = this->edit(ServoCommand::Kind::kAddObject, edit);
+  response.success = outcome.success;
+  response.message = outcome.message;
+  if (outcome.success)
+  {
+    ROS_INFO("%s: spawn_object '%s' from '%s': %s", node_.c_str(), request.name.c_str(), request.file.c_str(),
+             outcome.message.c_str());
+  }
+  else
+  {
+    ROS_WARN("%s: spawn_object '%s' from '%s' refused: %s", node_.c_str(), request.name.c_str(), request.file.c_str(),
+             outcome.message.c_str());
+  }
+  return true;
+}
+
+bool WorldServices::onDelete(god_finger::DeleteObject::Request& request, god_finger::DeleteObject::Response& response)
+{
+  auto edit = std::make_shared<ObjectEdit>();
+  edit->name = request.name;
+  const ObjectEdit::Outcome outcome = this->edit(ServoCommand::Kind::kRemoveObject, edit);
+  response.success = outcome.success;
+  response.message = outcome.message;
+  if (outcome.success)
+  {
+    ROS_INFO("%s: delete_object '%s': %s", node_.c_str(), request.name.c_str(), outcome.message.c_str());
+  }
+  else
+  {
+    ROS_WARN("%s: delete_object '%s' refused: %s", node_.c_str(), request.name.c_str(), outcome.message.c_str());
+  }
+  return true;
 }
 
 void WorldServices::showModel(ContactModel model)

@@ -5,6 +5,12 @@
 // physics node applies it under its world's lock, the servo node posts it to its loop, which
 // applies it between two steps.
 //
+// spawn_object (god_finger/SpawnObject) and delete_object (god_finger/DeleteObject) edit the
+// running world as Gazebo's spawn_urdf_model and delete_model do: the file is read and its shapes
+// checked in the service's thread, the world takes the edit between two steps
+// (GodFingerWorld::addObject / removeObject), and the service answers once it did (or after
+// kEditDeadline, saying so).
+//
 // reset_scene means the same in every topology: the scene back to its initial state and time
 // 0, each proxy restarting at its interface's current target (GodFingerWorld::
 // resetAtInterfaces), so that a hand holding a device feels no jump.
@@ -12,7 +18,9 @@
 // Not real-time: called from ROS callbacks.
 #pragma once
 
+#include "god_finger/DeleteObject.h"
 #include "god_finger/SetContactModel.h"
+#include "god_finger/SpawnObject.h"
 #include "god_finger/physics/world_params.h"
 #include "god_finger/ros/reconfigure.h"
 #include "god_finger/runtime/servo_command.h"
@@ -47,6 +55,10 @@ class WorldServices
  private:
   bool onReset(std_srvs::Trigger::Request& request, std_srvs::Trigger::Response& response);
   bool onSetModel(god_finger::SetContactModel::Request& request, god_finger::SetContactModel::Response& response);
+  bool onSpawn(god_finger::SpawnObject::Request& request, god_finger::SpawnObject::Response& response);
+  bool onDelete(god_finger::DeleteObject::Request& request, god_finger::DeleteObject::Response& response);
+  // Posts an object edit and waits for the world's outcome (at most kEditDeadline).
+  ObjectEdit::Outcome edit(ServoCommand::Kind kind, const std::shared_ptr<ObjectEdit>& edit);
   bool applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error);
 
   Post post_;
@@ -57,5 +69,7 @@ class WorldServices
   std::unique_ptr<LiveReconfigure> reconfigure_;
   ros::ServiceServer reset_service_;
   ros::ServiceServer model_service_;
+  ros::ServiceServer spawn_service_;
+  ros::ServiceServer delete_service_;
 };
 }  // namespace god_finger

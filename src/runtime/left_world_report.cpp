@@ -11,16 +11,32 @@ void LeftWorldReport::update(const SceneDescription& scene, const WorldSnapshot&
   {
     start_ = stamp;
   }
-  if (seen_.size() != snapshot.bodies.size())
+  bool same_bodies = seen_.size() == snapshot.bodies.size();  // objects spawned or deleted change them
+  for (std::size_t i = 0; same_bodies && i < names_.size() && i < scene.bodies.size(); ++i)
   {
-    seen_.assign(snapshot.bodies.size(), 0);
-    at_.assign(snapshot.bodies.size(), -1.0);
-    names_.clear();
+    same_bodies = names_[i] == scene.bodies[i].name;
+  }
+  if (!same_bodies)
+  {
+    // A body that stays keeps what was reported of it (its count goes on in the world).
+    std::vector<int> seen(snapshot.bodies.size(), 0);
+    std::vector<double> at(snapshot.bodies.size(), -1.0);
+    std::vector<std::string> names(snapshot.bodies.size());
     for (std::size_t i = 0; i < snapshot.bodies.size() && i < scene.bodies.size(); ++i)
     {
-      names_.push_back(scene.bodies[i].name);
+      names[i] = scene.bodies[i].name;
+      for (std::size_t old = 0; old < names_.size(); ++old)
+      {
+        if (names_[old] == names[i])
+        {
+          seen[i] = seen_[old];
+          at[i] = at_[old];
+        }
+      }
     }
-    names_.resize(snapshot.bodies.size());
+    seen_.swap(seen);
+    at_.swap(at);
+    names_.swap(names);
   }
   for (std::size_t i = 0; i < snapshot.bodies.size(); ++i)
   {

@@ -1,12 +1,45 @@
 #include "god_finger/runtime/servo_command.h"
 
+#include "god_finger/support/input_error.h"
+
 namespace god_finger
 {
 bool isWorldCommand(ServoCommand::Kind kind)
 {
   return kind == ServoCommand::Kind::kSetContactModel || kind == ServoCommand::Kind::kSetContactParams ||
-         kind == ServoCommand::Kind::kReset || kind == ServoCommand::Kind::kSetPadSolver;
+         kind == ServoCommand::Kind::kReset || kind == ServoCommand::Kind::kSetPadSolver ||
+         kind == ServoCommand::Kind::kAddObject || kind == ServoCommand::Kind::kRemoveObject;
 }
+
+namespace
+{
+void applyObjectEdit(const ServoCommand& command, GodFingerWorld* world)
+{
+  ObjectEdit::Outcome outcome;
+  try
+  {
+    if (command.kind == ServoCommand::Kind::kAddObject)
+    {
+      const std::vector<std::string> warnings = world->addObject(command.edit->object);
+      outcome.message = "added " + std::to_string(command.edit->object.bodies.size()) + " body(ies)";
+      for (const std::string& line : warnings)
+      {
+        outcome.message += "; warning: " + line;
+      }
+    }
+    else
+    {
+      outcome.message = "deleted " + std::to_string(world->removeObject(command.edit->name)) + " body(ies)";
+    }
+    outcome.success = true;
+  }
+  catch (const InputError& error)
+  {
+    outcome.message = error.what();
+  }
+  command.edit->done.set_value(outcome);
+}
+}  // namespace
 
 bool applyWorldCommand(const ServoCommand& command, GodFingerWorld* world)
 {
@@ -24,7 +57,11 @@ bool applyWorldCommand(const ServoCommand& command, GodFingerWorld* world)
     case ServoCommand::Kind::kSetPadSolver:
       world->setPadSolver(command.pad_solver);
       return true;
-    default:  // not a world command (isWorldCommand above names the same four)
+    case ServoCommand::Kind::kAddObject:
+    case ServoCommand::Kind::kRemoveObject:
+      applyObjectEdit(command, world);
+      return true;
+    default:  // not a world command (isWorldCommand above names the same)
       return false;
   }
 }

@@ -198,6 +198,11 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
   {
     why = "pad solver " + std::to_string(static_cast<int>(command.pad_solver)) + " is not one of " + padSolverNames();
   }
+  else if ((command.kind == ServoCommand::Kind::kAddObject || command.kind == ServoCommand::Kind::kRemoveObject) &&
+           !command.edit)
+  {
+    why = "an object edit without its object";
+  }
   else if (command.kind == ServoCommand::Kind::kHandTarget &&
            (command.interface < 0 || command.interface >= static_cast<int>(interfaces_.size()) ||
             !command.hand_target.allFinite()))

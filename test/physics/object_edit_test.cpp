@@ -94,8 +94,8 @@ LetGo pressAndRemove(double let_go_time)
   const Eigen::Vector3d pressing(0.2, 0.0, 0.025 + radius);
   for (int i = 1; i <= 1000; ++i)
   {
-    world.setInterfaceTarget(finger, Eigen::Vector3d(0.2, 0.0, 0.06) + (pressing - Eigen::Vector3d(0.2, 0.0, 0.06)) *
-                                                                           std::min(1.0, i / 500.0));
+    world.setInterfaceTarget(finger, Eigen::Vector3d(0.2, 0.0, 0.06) +
+                                         (pressing - Eigen::Vector3d(0.2, 0.0, 0.06)) * std::min(1.0, i / 500.0));
     world.step();
   }
   LetGo result;
@@ -120,15 +120,16 @@ TEST(ObjectEdit, AFingerPressingARemovedObjectLetsGoOverLetGoTime)
 {
   const LetGo smooth = pressAndRemove(0.1);
   const LetGo at_once = pressAndRemove(0.0);
-  std::printf("pressing %.3f N; removed: largest force step %.4f N over let_go_time 0.1 s, %.4f N at once; "
-              "0.3 s later %.2e N\n",
-              smooth.pressed, smooth.largest_step, at_once.largest_step, smooth.after);
+  std::printf(
+      "pressing %.3f N; removed: largest force step %.4f N over let_go_time 0.1 s, %.4f N at once; "
+      "0.3 s later %.2e N\n",
+      smooth.pressed, smooth.largest_step, at_once.largest_step, smooth.after);
   ASSERT_GT(smooth.pressed, 1.0);
   // A linear ramp over 100 steps: about F / 100 a step (the proxy's lag adds little).
   EXPECT_LT(smooth.largest_step, 2.0 * smooth.pressed / 100.0);
   // What the ramp avoids: the free proxy springs to the hand in a few steps.
   EXPECT_GT(at_once.largest_step, 5.0 * smooth.largest_step);
-  EXPECT_LT(smooth.after, 1e-3);                           // let go: free space
+  EXPECT_LT(smooth.after, 1e-3);  // let go: free space
 }
 
 TEST(ObjectEdit, BadEditsChangeNothing)
@@ -161,6 +162,15 @@ TEST(ObjectEdit, AnObjectStartingInsideAnotherIsWarnedAbout)
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("'block'"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("'cube'"), std::string::npos) << warnings[0];
+}
+
+TEST(ObjectEdit, AnObjectAddedOverAFingerIsWarnedAbout)
+{
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
+  world.addInterface(Eigen::Vector3d(0.2, 0.0, 0.015));
+  const std::vector<std::string> warnings = world.addObject(block("block", Eigen::Vector3d(0.2, 0.0, 0.015)));
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("finger 0 starts"), std::string::npos) << warnings[0];
 }
 
 TEST(ObjectEdit, RemovingAJointedBodyRemovesItsJoint)

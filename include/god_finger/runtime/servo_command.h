@@ -12,9 +12,27 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <future>
+#include <memory>
+#include <string>
 
 namespace god_finger
 {
+// An object added or removed while the world runs (kAddObject, kRemoveObject: the spawn_object
+// and delete_object services), and its outcome, which the world's thread sets when it applies
+// the edit (the caller waits on `done`, with a deadline).
+struct ObjectEdit
+{
+  SceneDescription object;  // kAddObject: scene_file.h loadPlacedObject
+  std::string name;         // kRemoveObject: a body's name, or an object's (its NAME/... bodies)
+  struct Outcome
+  {
+    bool success = false;
+    std::string message;  // what was done, with the warnings (a body starting inside another); or why not
+  };
+  std::promise<Outcome> done;
+};
+
 struct ServoCommand
 {
   enum class Kind
@@ -26,6 +44,8 @@ struct ServoCommand
     kStopForce,    // every guard's output to zero at once (ForceGuard::stop), haptic side
     kResumeForce,  // force back with the soft start (ForceGuard::resume)
     kSetPadSolver,
+    kAddObject,     // `edit`: GodFingerWorld::addObject
+    kRemoveObject,  // `edit`: GodFingerWorld::removeObject
   };
   Kind kind = Kind::kReset;
   ContactModel model = ContactModel::kGodFinger;
@@ -37,13 +57,16 @@ struct ServoCommand
   // device frame, unit), else the position alone (setHandTarget).
   bool hand_oriented = false;
   Eigen::Quaterniond hand_orientation = Eigen::Quaterniond::Identity();
+  std::shared_ptr<ObjectEdit> edit;  // kAddObject, kRemoveObject (non-null, validated by post())
 };
 
-// kReset, kSetContactModel, kSetPadSolver and kSetContactParams act on the world.
+// kReset, kSetContactModel, kSetPadSolver, kSetContactParams, kAddObject and kRemoveObject act on
+// the world.
 bool isWorldCommand(ServoCommand::Kind kind);
 
 // Applies a world command to `world`; false for one that is not (the world is untouched).
 // kSetContactParams throws InputError on bad parameters (the servo loop validates them in
-// post(), the physics node passes the error to its service's caller).
+// post(), the physics node passes the error to its service's caller). An object edit never
+// throws: its outcome goes to its `done`.
 bool applyWorldCommand(const ServoCommand& command, GodFingerWorld* world);
 }  // namespace god_finger
