@@ -399,11 +399,7 @@ BENCHMARK(BM_Step)
     ->Unit(benchmark::kMicrosecond)
     ->Iterations(2000)
     ->UseManualTime();
-BENCHMARK(BM_ContactArea)
-    ->DenseRange(kMug, kScan)
-    ->ArgName("object")
-    ->Unit(benchmark::kMicrosecond)
-    ->MinTime(0.2);
+BENCHMARK(BM_ContactArea)->DenseRange(kMug, kScan)->ArgName("object")->Unit(benchmark::kMicrosecond)->MinTime(0.2);
 }  // namespace god_finger
 
 BENCHMARK_MAIN();

@@ -113,9 +113,29 @@ SceneBody makeSceneBody(const BodyDescription& description, double max_edge)
   return body;
 }
 
+void PlacedShape::coverToo(const btVector3& extra_min, const btVector3& extra_max)
+{
+  extra_ = true;
+  extra_min_ = extra_min;
+  extra_max_ = extra_max;
+}
+
+void PlacedShape::getAabb(const btTransform& transform, btVector3& min, btVector3& max) const
+{
+  btCompoundShape::getAabb(transform, min, max);
+  if (extra_)
+  {
+    btVector3 extra_min;
+    btVector3 extra_max;
+    btTransformAabb(extra_min_, extra_max_, 0.0, transform, extra_min, extra_max);
+    min.setMin(extra_min);
+    max.setMax(extra_max);
+  }
+}
+
 void buildRigidBody(const BodyDescription& description, int index, SceneBody* body)
 {
-  body->placed = std::make_unique<btCompoundShape>();
+  body->placed = std::make_unique<PlacedShape>();
   body->placed->addChildShape(toBullet(body->geometry_in_com), body->collision->shape);
   for (std::size_t i = 0; i < body->part_collisions.size(); ++i)
   {
@@ -137,6 +157,10 @@ void buildRigidBody(const BodyDescription& description, int index, SceneBody* bo
   {
     body->finger_surface->in_body = toBullet(body->geometry_in_com);
     body->rigid->setUserPointer(body->finger_surface.get());
+    btVector3 min;
+    btVector3 max;
+    body->finger_surface->mesh->shape->getAabb(body->finger_surface->in_body, min, max);
+    body->placed->coverToo(min, max);
   }
 }
 }  // namespace god_finger::internal

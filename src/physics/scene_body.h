@@ -36,6 +36,23 @@ struct FingerSurface
   btTransform in_body = btTransform::getIdentity();  // the walk mesh's frame in Bullet's body frame
 };
 
+// A body's collision shapes placed in its centre-of-mass frame (Bullet's compound), whose box
+// also covers the body's FingerSurface: a visual mesh reaching beyond the collision shapes (a
+// scanned surface over small hulls) is within the broadphase's reach of the fingers. Collision
+// between the pieces is the compound's own; only the box grows.
+class PlacedShape : public btCompoundShape
+{
+ public:
+  // `extra_min`, `extra_max`: a box in the centre-of-mass frame to cover too (the finger surface's).
+  void coverToo(const btVector3& extra_min, const btVector3& extra_max);
+  void getAabb(const btTransform& transform, btVector3& min, btVector3& max) const override;
+
+ private:
+  bool extra_ = false;
+  btVector3 extra_min_ = btVector3(0, 0, 0);
+  btVector3 extra_max_ = btVector3(0, 0, 0);
+};
+
 struct SceneBody
 {
   std::unique_ptr<TriangleMesh> walk;
@@ -49,7 +66,7 @@ struct SceneBody
   std::vector<std::unique_ptr<CollisionShape>> part_collisions;
   std::vector<Eigen::Isometry3d> part_in_geometry;
   std::unique_ptr<FingerSurface> finger_surface;  // null where the fingers touch `placed`
-  std::unique_ptr<btCompoundShape> placed;        // the collision shape(s) placed in the centre-of-mass frame
+  std::unique_ptr<PlacedShape> placed;            // the collision shape(s) placed in the centre-of-mass frame
   std::unique_ptr<btRigidBody> rigid;
   Eigen::Isometry3d com_in_link = Eigen::Isometry3d::Identity();
   Eigen::Isometry3d geometry_in_com = Eigen::Isometry3d::Identity();

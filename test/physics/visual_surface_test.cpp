@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -88,6 +89,39 @@ TEST(VisualSurface, ThePadLiesOnTheVisualMeshNotOnTheCoarseCollisionMesh)
   // The 1280-triangle icosphere's chord error at r = 4 cm is about 0.15 mm.
   EXPECT_LT(on_visual, 0.3e-3);
   EXPECT_GT(on_collision, 2e-3) << "the coarse mesh is far from the sphere: the test can tell the two apart";
+  std::filesystem::remove_all(folder);
+}
+// A visual mesh far larger than the collision shape (a scanned surface over a small core): the
+// finger meets the visual surface, 8 cm from the centre, although the collision shape's box ends
+// 1 cm from it (the body's broadphase box covers the visual mesh too).
+TEST(VisualSurface, AFingerMeetsAVisualMeshReachingFarBeyondTheCollisionShape)
+{
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / "god_finger_visual_reach";
+  std::filesystem::create_directories(folder);
+  writeTriangleSoup(makeIcosphere(0.01, 1), (folder / "coarse.obj").string());
+  writeTriangleSoup(makeIcosphere(0.08, 3), (folder / "fine.obj").string());
+  // The ball's centre 10 cm over the table: the visual sphere clears it.
+  std::string xml = sceneXml("<visual><geometry><mesh filename='fine.obj'/></geometry></visual>");
+  xml.replace(xml.find("xyz='0 0 0.05'"), 14, "xyz='0 0 0.10'");
+  const SceneDescription scene = parseUrdfScene(xml, folder.string(), "reach.urdf");
+  GodFingerWorld world(scene, WorldParams());
+  const Eigen::Vector3d centre(0.0, 0.0, 0.10);
+  const int finger = world.addInterface(centre + Eigen::Vector3d(0.0, 0.0, 0.12));
+  world.setInterfaceTarget(finger, centre + Eigen::Vector3d(0.0, 0.0, 0.06));
+  for (int i = 0; i < 1500; ++i)
+  {
+    world.step();
+  }
+  const InterfaceState& state = world.interfaceState(finger);
+  const double reach = (state.proxy_position - centre).norm();
+  std::printf(
+      "visual_surface: a finger pressing a visual sphere of 8 cm over a 1 cm core stops %.2f mm from its "
+      "centre, pressing %.2f N\n",
+      1e3 * reach, state.user_force.norm());
+  ASSERT_EQ(state.contact_count, 1);
+  EXPECT_GT(reach, 0.08);  // on the visual sphere (its chord error ~0.3 mm inward, the proxy's radius outward)
+  EXPECT_LT(reach, 0.08 + 0.004);
+  EXPECT_GT(state.user_force.norm(), 1.0);
   std::filesystem::remove_all(folder);
 }
 }  // namespace
