@@ -369,8 +369,34 @@ class SceneParser
     // An object file as PyBullet and Gazebo ship them: the root link is the body.
     const bool object_file = static_cast<bool>(root->collision);
     std::map<std::string, int> body_of_link;
+    // A link on a 'fixed' joint to another body's link (to an object file's root, or to any body
+    // of a scene but the world) is a piece of that body: the body its fixed chain leads up to,
+    // and where the link sits in that body's link frame.
+    std::map<std::string, std::pair<std::string, Eigen::Isometry3d>> owner;
     for (const urdf::LinkSharedPtr& link : links)
     {
+      Eigen::Isometry3d in_owner = Eigen::Isometry3d::Identity();
+      const urdf::Link* at = link.get();
+      for (int depth = 0; at->parent_joint && at->parent_joint->type == urdf::Joint::FIXED &&
+                          (object_file || at->parent_joint->parent_link_name != root->name);
+           ++depth)
+      {
+        const urdf::Link* parent = model->getLink(at->parent_joint->parent_link_name).get();
+        if (depth >= kMaxJointDepth || parent == nullptr)
+        {
+          fail(link->name, "its chain of fixed joints is more than " + std::to_string(kMaxJointDepth) + " long");
+        }
+        in_owner = toIsometry(at->parent_joint->parent_to_joint_origin_transform) * in_owner;
+        at = parent;
+      }
+      owner[link->name] = {at->name, in_owner};
+    }
+    for (const urdf::LinkSharedPtr& link : links)
+    {
+      if (owner.at(link->name).first != link->name)
+      {
+        continue;  // a piece of another body: merged below
+      }
       if (link->name == root->name)
       {
         if (object_file)
@@ -393,7 +419,7 @@ class SceneParser
           fail(link->name, "joint '" + joint->name + "' is '" + jointTypeName(joint->type) + "' to link '" +
                                joint->parent_link_name +
                                "': a link joined to another body moves on a 'revolute', 'continuous' or "
-                               "'prismatic' joint (merge a fixed part into its parent link as more <collision>s)");
+                               "'prismatic' joint, or is a piece of it on a 'fixed' joint");
         }
         if (joint->type != urdf::Joint::FIXED && joint->type != urdf::Joint::FLOATING)
         {
@@ -414,19 +440,33 @@ class SceneParser
     }
     for (const urdf::LinkSharedPtr& link : links)
     {
+      const auto& [body_link, in_body] = owner.at(link->name);
+      if (body_link != link->name && body_of_link.count(body_link) > 0)
+      {
+        mergePiece(*link, body_link, in_body, &scene.bodies[body_of_link.at(body_link)]);
+      }
+    }
+    for (const urdf::LinkSharedPtr& link : links)
+    {
       const urdf::JointConstSharedPtr joint = link->parent_joint;
       if (!joint || jointKind(joint->type) == nullptr)
       {
         continue;
       }
       const bool to_world = !object_file && joint->parent_link_name == root->name;
-      if (!to_world && body_of_link.count(joint->parent_link_name) == 0)
+      const auto& [parent_body, parent_in_body] = owner.at(joint->parent_link_name);
+      if (!to_world && body_of_link.count(parent_body) == 0)
       {
         fail(link->name, "joint '" + joint->name + "': its parent link '" + joint->parent_link_name +
                              "' is no body (it has no <collision>)");
       }
-      scene.joints.push_back(jointDescription(*joint, to_world ? -1 : body_of_link.at(joint->parent_link_name),
-                                              body_of_link.at(link->name)));
+      JointDescription description =
+          jointDescription(*joint, to_world ? -1 : body_of_link.at(parent_body), body_of_link.at(link->name));
+      if (!to_world)
+      {
+        description.joint_in_parent = parent_in_body * description.joint_in_parent;
+      }
+      scene.joints.push_back(description);
     }
     if (scene.bodies.empty())
     {
@@ -441,6 +481,46 @@ class SceneParser
     }
     scene.warnings = warnings_;
     return scene;
+  }
+
+  // A link on a fixed joint to `body`'s link (`in_body`: its frame in the body's link frame)
+  // becomes more pieces of the body: its <collision>s, its mass (the body's centre of mass and
+  // inertia combined by the parallel-axis theorem). The body then walks on its pieces' collision
+  // surfaces: a visual mesh stands for one link, not for the merged whole.
+  void mergePiece(const urdf::Link& link, const std::string& body_link, const Eigen::Isometry3d& in_body,
+                  BodyDescription* body) const
+  {
+    for (const urdf::CollisionSharedPtr& collision : link.collision_array)
+    {
+      body->more_parts.push_back({geometry(link.name, collision->geometry), in_body * toIsometry(collision->origin)});
+    }
+    if (body->visual_mesh)
+    {
+      warn(body_link, "link '" + link.name +
+                          "' is fixed to it: the pad walks on the collision geometry of all its pieces, not on its "
+                          "visual mesh");
+      body->visual_mesh.reset();
+    }
+    if (usableInertial(link) && (body->mass > 0.0 || !body->is_static))
+    {
+      BodyDescription piece;
+      inertial(link, &piece);
+      const double total = body->mass + piece.mass;
+      const Eigen::Isometry3d piece_com = in_body * piece.inertial_origin;
+      const Eigen::Vector3d centre =
+          (body->mass * body->inertial_origin.translation() + piece.mass * piece_com.translation()) / total;
+      const auto about_centre = [&centre](double mass, const Eigen::Isometry3d& com, const Eigen::Matrix3d& inertia)
+      {
+        const Eigen::Vector3d d = com.translation() - centre;
+        return Eigen::Matrix3d(com.linear() * inertia * com.linear().transpose() +
+                               mass * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose()));
+      };
+      body->inertia = about_centre(body->mass, body->inertial_origin, body->inertia) +
+                      about_centre(piece.mass, piece_com, piece.inertia);
+      body->mass = total;
+      body->inertial_origin = Eigen::Isometry3d::Identity();
+      body->inertial_origin.translation() = centre;
+    }
   }
 
   // A link's geometry and material (its pose and mass are the caller's).

@@ -251,14 +251,71 @@ TEST(UrdfScene, AnObjectFilesJointedLinksAreItsMovingParts)
   EXPECT_TRUE(scene.bodies[hinge.child].pose.translation().isApprox(Eigen::Vector3d(-0.05, 0, 0.055)));
 }
 
+// A link on a fixed joint is a piece of its parent's body (URDF objects built of several links,
+// as Gazebo's and PyBullet's often are): one body whose parts are both links' <collision>s,
+// whose mass is their sum, its centre of mass and inertia combined by the parallel-axis theorem.
+TEST(UrdfScene, ALinkOnAFixedJointIsAPieceOfItsParentsBody)
+{
+  const SceneDescription scene =
+      parseUrdfScene(boxWithLid("<joint name='glued' type='fixed'><parent link='baseLink'/><child link='lid'/>"
+                                "<origin xyz='0 0 0.055'/></joint>"),
+                     kScenes, "box.urdf");
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  EXPECT_TRUE(scene.joints.empty());
+  const BodyDescription& body = scene.bodies[0];
+  EXPECT_EQ(body.name, "baseLink");
+  EXPECT_FALSE(body.is_static);
+  ASSERT_EQ(body.more_parts.size(), 1u);
+  // The lid's collision: its own origin (5 cm along x) in the joint's frame (5.5 cm up).
+  EXPECT_TRUE(body.more_parts[0].origin.translation().isApprox(Eigen::Vector3d(0.05, 0.0, 0.055)));
+  EXPECT_DOUBLE_EQ(body.mass, 0.2);
+  // Two 0.1 kg masses (inertia 1e-4 each) 5.5 cm apart along z: the centre halfway, and
+  // 2 * 1e-4 + 2 * 0.1 * 0.0275^2 about x and y, 2e-4 about z.
+  EXPECT_TRUE(body.inertial_origin.translation().isApprox(Eigen::Vector3d(0.0, 0.0, 0.0275)));
+  const double across = 2e-4 + 2 * 0.1 * 0.0275 * 0.0275;
+  EXPECT_NEAR(body.inertia(0, 0), across, 1e-12);
+  EXPECT_NEAR(body.inertia(1, 1), across, 1e-12);
+  EXPECT_NEAR(body.inertia(2, 2), 2e-4, 1e-12);
+  EXPECT_NEAR(body.inertia(0, 2), 0.0, 1e-12);
+}
+
+// A hinge on a fixed piece: the joint's parent is the body the piece belongs to, its frame
+// composed through the fixed joint; the door's handle, fixed to the door, moves with it.
+TEST(UrdfScene, AJointOnAFixedPieceJoinsTheBodyItBelongsTo)
+{
+  const std::string box = "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>" + kGoodInertial;
+  const SceneDescription scene = parseUrdfScene(
+      objectFile(box, "<link name='bracket'>" + box +
+                          "</link><joint name='glued' type='fixed'><parent link='baseLink'/><child link='bracket'/>"
+                          "<origin xyz='0 0 0.1'/></joint>"
+                          "<link name='lid'>" +
+                          box +
+                          "</link><joint name='hinge' type='revolute'><parent link='bracket'/><child link='lid'/>"
+                          "<origin xyz='0.1 0 0'/><axis xyz='0 1 0'/><limit lower='-1' upper='0' effort='1' "
+                          "velocity='1'/></joint>"
+                          "<link name='knob'>" +
+                          box +
+                          "</link><joint name='knob_glued' type='fixed'><parent link='lid'/><child link='knob'/>"
+                          "<origin xyz='0 0 0.1'/></joint>"),
+      kScenes, "box.urdf");
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  ASSERT_EQ(scene.joints.size(), 1u);
+  const JointDescription& hinge = scene.joints[0];
+  EXPECT_EQ(scene.bodies[hinge.parent].name, "baseLink");
+  EXPECT_EQ(scene.bodies[hinge.child].name, "lid");
+  EXPECT_TRUE(hinge.joint_in_parent.translation().isApprox(Eigen::Vector3d(0.1, 0.0, 0.1)));
+  EXPECT_EQ(scene.bodies[hinge.child].more_parts.size(), 1u);  // the knob
+  EXPECT_TRUE(scene.bodies[hinge.child].pose.translation().isApprox(Eigen::Vector3d(0.1, 0.0, 0.1)));
+}
+
 TEST(UrdfScene, JointsThatCannotMoveABodyAreRefusedNamingThem)
 {
   const auto joint = [](const std::string& type, const std::string& more) {
     return "<joint name='hinge' type='" + type + "'><parent link='baseLink'/><child link='lid'/>" + more + "</joint>";
   };
-  const std::string fixed = errorOf(boxWithLid(joint("fixed", "")));
-  EXPECT_NE(fixed.find("link 'lid': joint 'hinge' is 'fixed' to link 'baseLink'"), std::string::npos) << fixed;
-  EXPECT_NE(fixed.find("merge a fixed part into its parent link as more <collision>s"), std::string::npos) << fixed;
+  const std::string floating = errorOf(boxWithLid(joint("floating", "")));
+  EXPECT_NE(floating.find("link 'lid': joint 'hinge' is 'floating' to link 'baseLink'"), std::string::npos) << floating;
+  EXPECT_NE(floating.find("or is a piece of it on a 'fixed' joint"), std::string::npos) << floating;
   const std::string wide =
       errorOf(boxWithLid(joint("revolute", "<limit lower='-4' upper='0' effort='1' velocity='1'/>")));
   EXPECT_NE(wide.find("link 'lid': joint 'hinge': a revolute joint's <limit> must lie within [-pi, pi] rad"),

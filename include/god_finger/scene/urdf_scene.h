@@ -11,9 +11,12 @@
 //    `revolute`, `continuous` or `prismatic` joint is a free body moving on that joint
 //    (SceneDescription::joints, with <axis>, <limit lower upper effort velocity> and <dynamics
 //    damping friction>; a revolute joint's limits within [-pi, pi]), placed with every joint
-//    at 0. A `fixed` or `floating` joint between two bodies is refused (a fixed part belongs in
-//    its parent link as more <collision>s), as are `planar` joints and chains deeper than
-//    kMaxJointDepth.
+//    at 0. A link on a `fixed` joint to another body's link (to an object file's root, or to any
+//    body of a scene) is a piece of that body: its <collision>s join the body's parts, its mass
+//    the body's (centre of mass and inertia combined by the parallel-axis theorem), a joint on it
+//    joins the body; the body then walks on its pieces' collision surfaces (a visual mesh stands
+//    for one link). A `floating` joint between two bodies is refused, as are `planar` joints and
+//    chains deeper than kMaxJointDepth.
 //  - Each body has one <collision> (box, sphere, cylinder, or mesh with scale), or several: a
 //    compound body (BodyDescription::more_parts), one rigid body colliding as all its pieces;
 //    a link's first <visual> mesh, when it is not its collision mesh, is the true surface
