@@ -40,6 +40,21 @@ namespace
 constexpr double kCoincident = 1e-7;
 }  // namespace
 
+struct PreparedObject::Impl
+{
+  SceneDescription object;
+  std::vector<SceneBody> bodies;  // by object body index; empty once added
+  double max_edge = 0.0;          // m: the walk edge the primitives were made with
+};
+
+PreparedObject::PreparedObject() : impl_(new Impl) {}
+PreparedObject::~PreparedObject() = default;
+
+const SceneDescription& PreparedObject::object() const
+{
+  return impl_->object;
+}
+
 struct GodFingerWorld::Impl
 {
   using Body = SceneBody;
@@ -647,15 +662,17 @@ struct GodFingerWorld::Impl
   // becomes next's body i, or -1 for a new one (made here). Bodies and proxies keep their
   // motion; proxies that pressed a body that goes let go (WorldParams::let_go_time). InputError
   // before anything changes when a new body cannot be made.
-  void changeScene(SceneDescription next, const std::vector<int>& old_of_new)
+  // `prepared`: the new bodies already made (in next's order), or null to make them here.
+  void changeScene(SceneDescription next, const std::vector<int>& old_of_new, std::vector<Body>* prepared = nullptr)
   {
     const double max_edge = params.walk_edge_per_max_radius * params.contact.max_radius;
     std::vector<Body> made(next.bodies.size());
+    std::size_t taken = 0;
     for (std::size_t i = 0; i < next.bodies.size(); ++i)
     {
       if (old_of_new[i] < 0)
       {
-        made[i] = makeSceneBody(next.bodies[i], max_edge);
+        made[i] = prepared != nullptr ? std::move((*prepared)[taken++]) : makeSceneBody(next.bodies[i], max_edge);
       }
     }
     std::vector<char> kept(bodies.size(), 0);
@@ -706,6 +723,7 @@ struct GodFingerWorld::Impl
       proxy.initial = position;  // buildWorld puts it there
       saved.push_back(std::move(copy));
     }
+    const OverlapPush saved_overlap = overlap;  // buildWorld restarts it; the pushes go on
     teardownWorld();
     for (std::size_t i = 0; i < next.bodies.size(); ++i)
     {
@@ -743,12 +761,15 @@ struct GodFingerWorld::Impl
       proxy.previous_target = before.previous_target;
       proxy.orientation = before.orientation;
       proxy.state = before.state;
+      // Its contacts were numbered in the old scene: none until the next step finds them.
+      proxy.state.contact_count = 0;
       proxy.let_go_offset = before.let_go_offset;
       proxy.let_go_steps = before.let_go_steps;
       proxy.let_go_total = before.let_go_total;
       proxy.rigid->setLinearVelocity(proxy_velocities[i]);
       proxy.rigid->setInterpolationLinearVelocity(proxy_velocities[i]);
     }
+    overlap = saved_overlap;
   }
 
   void teardownWorld()
@@ -927,12 +948,38 @@ void GodFingerWorld::resetAtInterfaces()
   reset();
 }
 
-std::vector<std::string> GodFingerWorld::addObject(const SceneDescription& object)
+std::unique_ptr<PreparedObject> GodFingerWorld::prepareObject(const SceneDescription& object, const WorldParams& params)
 {
-  Impl& impl = *impl_;
   if (object.bodies.empty())
   {
     throw InputError("object '" + object.name + "' has no body");
+  }
+  std::unique_ptr<PreparedObject> prepared(new PreparedObject);
+  PreparedObject::Impl& impl = *prepared->impl_;
+  impl.max_edge = params.walk_edge_per_max_radius * params.contact.max_radius;
+  checkSceneFits(object, impl.max_edge);
+  checkJoints(object);
+  impl.object = object;
+  for (const BodyDescription& body : object.bodies)
+  {
+    impl.bodies.push_back(makeSceneBody(body, impl.max_edge));
+  }
+  return prepared;
+}
+
+std::vector<std::string> GodFingerWorld::addObject(const SceneDescription& object)
+{
+  const std::unique_ptr<PreparedObject> prepared = prepareObject(object, impl_->params);
+  return addObject(prepared.get());
+}
+
+std::vector<std::string> GodFingerWorld::addObject(PreparedObject* prepared)
+{
+  Impl& impl = *impl_;
+  const SceneDescription& object = prepared->impl_->object;
+  if (object.bodies.empty() || prepared->impl_->bodies.size() != object.bodies.size())
+  {
+    throw InputError("object '" + object.name + "' has no body (or was added already)");
   }
   SceneDescription next = impl.scene;
   std::vector<int> old_of_new(next.bodies.size());
@@ -952,14 +999,25 @@ std::vector<std::string> GodFingerWorld::addObject(const SceneDescription& objec
   }
   for (JointDescription joint : object.joints)
   {
+    for (const JointDescription& existing : next.joints)
+    {
+      if (existing.name == joint.name)
+      {
+        throw InputError("the scene has a joint named '" + joint.name + "' already (give the object a name)");
+      }
+    }
     joint.child += first;
     joint.parent = joint.parent < 0 ? -1 : joint.parent + first;
     next.joints.push_back(joint);
   }
-  checkSceneFits(next, impl.params.walk_edge_per_max_radius * impl.params.contact.max_radius);
+  const double max_edge = impl.params.walk_edge_per_max_radius * impl.params.contact.max_radius;
+  checkSceneFits(next, max_edge);
   checkJoints(next);
   next.warnings.insert(next.warnings.end(), object.warnings.begin(), object.warnings.end());
-  impl.changeScene(std::move(next), old_of_new);
+  // Made for another walk edge (the contact radius changed since): made again here.
+  const bool usable = prepared->impl_->max_edge == max_edge;
+  impl.changeScene(std::move(next), old_of_new, usable ? &prepared->impl_->bodies : nullptr);
+  prepared->impl_->bodies.clear();
   std::vector<std::string> warnings;
   for (std::size_t i = 0; i < impl.proxies.size(); ++i)
   {

@@ -7,6 +7,7 @@
 #include <ros/console.h>
 #include <ros/package.h>
 
+#include <cctype>
 #include <chrono>
 #include <future>
 
@@ -25,8 +26,17 @@ WorldServices::WorldServices(ros::NodeHandle nh, const ros::NodeHandle& pnh, con
       node);
   reset_service_ = nh.advertiseService("reset_scene", &WorldServices::onReset, this);
   model_service_ = nh.advertiseService("set_contact_model", &WorldServices::onSetModel, this);
-  spawn_service_ = nh.advertiseService("spawn_object", &WorldServices::onSpawn, this);
-  delete_service_ = nh.advertiseService("delete_object", &WorldServices::onDelete, this);
+  ros::NodeHandle edit_nh(nh);
+  edit_nh.setCallbackQueue(&edit_queue_);
+  spawn_service_ = edit_nh.advertiseService("spawn_object", &WorldServices::onSpawn, this);
+  delete_service_ = edit_nh.advertiseService("delete_object", &WorldServices::onDelete, this);
+  edit_spinner_ = std::make_unique<ros::AsyncSpinner>(1, &edit_queue_);
+  edit_spinner_->start();
+}
+
+WorldServices::~WorldServices()
+{
+  edit_spinner_->stop();
 }
 
 namespace
@@ -90,12 +100,21 @@ bool WorldServices::onSpawn(god_finger::SpawnObject::Request& request, god_finge
   auto edit = std::make_shared<ObjectEdit>();
   try
   {
-    if (!startsWith(request.file, "/") && !startsWith(request.file, "file://") &&
+    if (!startsWith(request.file, "/") && !startsWith(request.file, "file:///") &&
         !startsWith(request.file, "package://"))
     {
       throw InputError("file '" + request.file +
                        "': give an absolute path, file:///..., or package://PACKAGE/... (the node's folder is not "
                        "yours)");
+    }
+    for (const char c : request.name)
+    {
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.')
+      {
+        throw InputError("name '" + request.name +
+                         "': letters, digits, '_', '-' and '.' only (it names TF frames; an object of several "
+                         "links names them NAME/LINK)");
+      }
     }
     if (request.fixed > god_finger::SpawnObject::Request::FREE)
     {
@@ -115,7 +134,13 @@ bool WorldServices::onSpawn(god_finger::SpawnObject::Request& request, god_finge
     {
       placement.fixed = request.fixed == god_finger::SpawnObject::Request::FIXED;
     }
-    edit->object = loadPlacedObject(path, placement, packages);
+    WorldParams params;
+    {
+      std::lock_guard<std::mutex> lock(params_mutex_);
+      params = params_;
+    }
+    // The costly part (reading, decomposing) here, in this service's thread.
+    edit->object = GodFingerWorld::prepareObject(loadPlacedObject(path, placement, packages), params);
   }
   catch (const InputError& error)
   {
@@ -124,7 +149,7 @@ bool WorldServices::onSpawn(god_finger::SpawnObject::Request& request, god_finge
     ROS_WARN("%s: spawn_object refused: %s", node_.c_str(), error.what());
     return true;
   }
-  for (const std::string& warning : edit->object.warnings)
+  for (const std::string& warning : edit->object->object().warnings)
   {
     ROS_WARN("%s: spawn_object: %s", node_.c_str(), warning.c_str());
   }
@@ -197,7 +222,12 @@ bool WorldServices::onSetModel(god_finger::SetContactModel::Request& request,
 bool WorldServices::applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error)
 {
   WorldParams applied;
-  if (!worldFromConfig(config, params_, &applied, error))
+  WorldParams base;
+  {
+    std::lock_guard<std::mutex> lock(params_mutex_);
+    base = params_;
+  }
+  if (!worldFromConfig(config, base, &applied, error))
   {
     return false;
   }
@@ -208,8 +238,11 @@ bool WorldServices::applyConfig(const god_finger::GodFingerConfig& config, bool 
   {
     return false;
   }
-  params_.contact = applied.contact;
-  if (applied.pad_solver != params_.pad_solver)
+  {
+    std::lock_guard<std::mutex> lock(params_mutex_);
+    params_.contact = applied.contact;
+  }
+  if (applied.pad_solver != base.pad_solver)
   {
     ServoCommand solver;
     solver.kind = ServoCommand::Kind::kSetPadSolver;
@@ -218,6 +251,7 @@ bool WorldServices::applyConfig(const god_finger::GodFingerConfig& config, bool 
     {
       return false;
     }
+    std::lock_guard<std::mutex> lock(params_mutex_);
     params_.pad_solver = applied.pad_solver;
   }
   if (model_changed)

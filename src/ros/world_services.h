@@ -25,12 +25,15 @@
 #include "god_finger/ros/reconfigure.h"
 #include "god_finger/runtime/servo_command.h"
 
+#include <ros/callback_queue.h>
 #include <ros/node_handle.h>
 #include <ros/service_server.h>
+#include <ros/spinner.h>
 #include <std_srvs/Trigger.h>
 
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <string>
 
 namespace god_finger
@@ -46,6 +49,7 @@ class WorldServices
   // services on `nh` and the reconfiguration server on `pnh`.
   WorldServices(ros::NodeHandle nh, const ros::NodeHandle& pnh, const WorldParams& initial, Post post,
                 const std::string& node);
+  ~WorldServices();
   WorldServices(const WorldServices&) = delete;
   WorldServices& operator=(const WorldServices&) = delete;
 
@@ -64,12 +68,20 @@ class WorldServices
   Post post_;
   std::string node_;
   // The base of a reconfiguration: the initial parameters with the contact parameters in
-  // force. Reconfiguration callbacks only (LiveReconfigure serialises them).
+  // force. Written by reconfiguration callbacks (LiveReconfigure serialises them), read by
+  // spawn_object's thread too: under params_mutex_.
   WorldParams params_;
+  std::mutex params_mutex_;
   std::unique_ptr<LiveReconfigure> reconfigure_;
   ros::ServiceServer reset_service_;
   ros::ServiceServer model_service_;
+  // spawn_object and delete_object wait for the world (a first load decomposes a mesh; the loop
+  // takes the edit between two steps): on a queue and thread of their own, so that they never
+  // hold up the node's other callbacks (poses, /stop_force). Destroyed in reverse: the thread
+  // stops, then the services go, then the queue.
+  ros::CallbackQueue edit_queue_;
   ros::ServiceServer spawn_service_;
   ros::ServiceServer delete_service_;
+  std::unique_ptr<ros::AsyncSpinner> edit_spinner_;
 };
 }  // namespace god_finger

@@ -41,8 +41,9 @@ void LeftWorldReport::update(const SceneDescription& scene, const WorldSnapshot&
   for (std::size_t i = 0; i < snapshot.bodies.size(); ++i)
   {
     const int count = snapshot.bodies[i].left_world;
-    if (count == seen_[i])
+    if (count <= seen_[i])
     {
+      seen_[i] = count;  // a body spawned again under a name that had left: nothing new
       continue;
     }
     seen_[i] = count;

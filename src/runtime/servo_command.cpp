@@ -16,12 +16,22 @@ namespace
 void applyObjectEdit(const ServoCommand& command, GodFingerWorld* world)
 {
   ObjectEdit::Outcome outcome;
+  if (!command.edit)
+  {
+    return;  // nobody to answer (ServoLoop::post refuses it)
+  }
+  if (command.kind == ServoCommand::Kind::kAddObject && !command.edit->object)
+  {
+    outcome.message = "an object edit without its object";
+    command.edit->done.set_value(outcome);
+    return;
+  }
   try
   {
     if (command.kind == ServoCommand::Kind::kAddObject)
     {
-      const std::vector<std::string> warnings = world->addObject(command.edit->object);
-      outcome.message = "added " + std::to_string(command.edit->object.bodies.size()) + " body(ies)";
+      const std::vector<std::string> warnings = world->addObject(command.edit->object.get());
+      outcome.message = "added " + std::to_string(command.edit->object->object().bodies.size()) + " body(ies)";
       for (const std::string& line : warnings)
       {
         outcome.message += "; warning: " + line;
@@ -36,6 +46,12 @@ void applyObjectEdit(const ServoCommand& command, GodFingerWorld* world)
   catch (const InputError& error)
   {
     outcome.message = error.what();
+  }
+  catch (const std::exception& error)  // out of memory: the caller hears of it, the world's thread stops
+  {
+    outcome.message = std::string("failed: ") + error.what();
+    command.edit->done.set_value(outcome);
+    throw;
   }
   command.edit->done.set_value(outcome);
 }

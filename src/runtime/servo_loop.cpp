@@ -199,7 +199,7 @@ bool ServoLoop::post(const ServoCommand& command, std::string* error)
     why = "pad solver " + std::to_string(static_cast<int>(command.pad_solver)) + " is not one of " + padSolverNames();
   }
   else if ((command.kind == ServoCommand::Kind::kAddObject || command.kind == ServoCommand::Kind::kRemoveObject) &&
-           !command.edit)
+           (!command.edit || (command.kind == ServoCommand::Kind::kAddObject && !command.edit->object)))
   {
     why = "an object edit without its object";
   }

@@ -494,7 +494,7 @@ class SceneParser
     {
       body->more_parts.push_back({geometry(link.name, collision->geometry), in_body * toIsometry(collision->origin)});
     }
-    if (body->visual_mesh)
+    if (body->visual_mesh && !link.collision_array.empty())  // a frame without geometry changes no surface
     {
       warn(body_link, "link '" + link.name +
                           "' is fixed to it: the pad walks on the collision geometry of all its pieces, not on its "

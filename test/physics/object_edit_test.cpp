@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <thread>
 
 namespace god_finger
 {
@@ -130,6 +131,55 @@ TEST(ObjectEdit, AFingerPressingARemovedObjectLetsGoOverLetGoTime)
   // What the ramp avoids: the free proxy springs to the hand in a few steps.
   EXPECT_GT(at_once.largest_step, 5.0 * smooth.largest_step);
   EXPECT_LT(smooth.after, 1e-3);  // let go: free space
+}
+
+// Two edits between two steps (two service calls, queued commands): the second sees no contact
+// numbered in the scene before the first (the finger pressed the last body, which is gone).
+TEST(ObjectEdit, EditsBetweenTwoStepsSeeNoStaleContacts)
+{
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
+  world.addObject(block("block", Eigen::Vector3d(0.2, 0.0, 0.015)));
+  const double radius = world.params().coupling.proxy_radius;
+  const int finger = world.addInterface(Eigen::Vector3d(0.2, 0.0, 0.05));
+  world.setInterfaceTarget(finger, Eigen::Vector3d(0.2, 0.0, 0.026 + radius));
+  for (int i = 0; i < 500; ++i)
+  {
+    world.step();
+  }
+  ASSERT_EQ(world.interfaceState(finger).contact_count, 1);
+  ASSERT_EQ(world.interfaceState(finger).contacts[0].body, 2);
+  world.removeObject("block");
+  WorldSnapshot snapshot;
+  world.snapshot(&snapshot);
+  EXPECT_EQ(snapshot.interfaces[0].contact_count, 0);  // none numbered in the old scene
+  EXPECT_EQ(snapshot.scene->bodies.size(), 2u);
+  world.removeObject("cube");
+  world.addObject(block("block", Eigen::Vector3d(-0.2, 0.0, 0.015)));
+  for (int i = 0; i < 200; ++i)
+  {
+    world.step();
+  }
+  EXPECT_EQ(world.bodyCount(), 2);
+  EXPECT_EQ(world.interfaceState(finger).contact_count, 0);  // let go: over the table, in the air
+}
+
+// The costly part of an add (the shapes, trees and hulls) in another thread, as the services do;
+// a prepared object is added once.
+TEST(ObjectEdit, AnObjectPreparedInAnotherThreadIsAddedOnce)
+{
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
+  std::unique_ptr<PreparedObject> prepared;
+  std::thread service(
+      [&prepared, &world]
+      { prepared = GodFingerWorld::prepareObject(block("block", Eigen::Vector3d(0.2, 0, 0.05)), world.params()); });
+  service.join();
+  ASSERT_TRUE(prepared != nullptr);
+  EXPECT_EQ(prepared->object().bodies.size(), 1u);
+  world.addObject(prepared.get());
+  EXPECT_EQ(world.bodyCount(), 3);
+  EXPECT_THROW(world.addObject(prepared.get()), InputError);
+  EXPECT_EQ(world.bodyCount(), 3);
+  EXPECT_THROW(GodFingerWorld::prepareObject(SceneDescription(), WorldParams()), InputError);
 }
 
 TEST(ObjectEdit, BadEditsChangeNothing)

@@ -279,6 +279,23 @@ TEST(UrdfScene, ALinkOnAFixedJointIsAPieceOfItsParentsBody)
   EXPECT_NEAR(body.inertia(0, 2), 0.0, 1e-12);
 }
 
+// A frame without geometry fixed to a body (a tool or camera frame) adds nothing: the body keeps
+// its visual mesh as its surface.
+TEST(UrdfScene, AnEmptyFrameFixedToABodyKeepsItsVisualSurface)
+{
+  const SceneDescription scene =
+      parseUrdfScene(objectFile("<visual><geometry><mesh filename='../meshes/sphere.obj'/></geometry></visual>"
+                                "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>" +
+                                    kGoodInertial,
+                                "<link name='camera_frame'/><joint name='mount' type='fixed'><parent link='baseLink'/>"
+                                "<child link='camera_frame'/><origin xyz='0 0 0.1'/></joint>"),
+                     kScenes, "box.urdf");
+  ASSERT_EQ(scene.bodies.size(), 1u);
+  EXPECT_TRUE(scene.bodies[0].visual_mesh.has_value());
+  EXPECT_TRUE(scene.bodies[0].more_parts.empty());
+  EXPECT_DOUBLE_EQ(scene.bodies[0].mass, 0.1);
+}
+
 // A hinge on a fixed piece: the joint's parent is the body the piece belongs to, its frame
 // composed through the fixed joint; the door's handle, fixed to the door, moves with it.
 TEST(UrdfScene, AJointOnAFixedPieceJoinsTheBodyItBelongsTo)

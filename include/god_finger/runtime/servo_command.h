@@ -23,8 +23,10 @@ namespace god_finger
 // the edit (the caller waits on `done`, with a deadline).
 struct ObjectEdit
 {
-  SceneDescription object;  // kAddObject: scene_file.h loadPlacedObject
-  std::string name;         // kRemoveObject: a body's name, or an object's (its NAME/... bodies)
+  // kAddObject: scene_file.h loadPlacedObject's, its bodies made beforehand in the caller's thread
+  // (GodFingerWorld::prepareObject): the world's thread only rebuilds Bullet's world.
+  std::unique_ptr<PreparedObject> object;
+  std::string name;  // kRemoveObject: a body's name, or an object's (its NAME/... bodies)
   struct Outcome
   {
     bool success = false;
