@@ -87,6 +87,9 @@ class SpawnObject_(RosTestSupport, unittest.TestCase):
         bad = spawn(name="ball", file="package://god_finger/urdf/objects/block.urdf")  # the scene's ball
         self.assertFalse(bad.success)
         self.assertIn("'ball' already", bad.message)
+        bad = spawn(name="a/b", file="package://god_finger/urdf/objects/block.urdf")  # not a TF-safe name
+        self.assertFalse(bad.success)
+        self.assertIn("letters, digits", bad.message)
         missing = delete(name="nothing")
         self.assertFalse(missing.success)
         self.assertIn("no body named 'nothing'", missing.message)
