@@ -5,10 +5,12 @@
 // fingers side by side on one face of a free bar, pinched against a third on the opposite face,
 // are not pushed even at the largest stiffness, and the bar stays held.
 #include "god_finger/contact/area_overlap.h"
-#include "god_finger/support/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
+
+#include <cstdio>
 
 #include <cmath>
 
@@ -92,6 +94,32 @@ TEST(OverlapPush, SideBySideFingersArePushedApartByTheirLens)
   world.setInterfaceTarget(1, Eigen::Vector3d(0.005, 0.0, -0.001));
   world.step();
   EXPECT_EQ(world.interfaceState(0).overlap_push, Eigen::Vector3d::Zero());
+}
+
+// An object added or removed elsewhere while two fingers overlap (the spawn_object service): the
+// push goes on from where it was, changing by no more than its rate allows in a step, instead of
+// restarting from zero.
+TEST(OverlapPush, ThePushGoesOnAcrossAnObjectAddedElsewhere)
+{
+  WorldParams params;
+  TwoFingers fingers(0.01, params);
+  GodFingerWorld& world = fingers.world;
+  for (int step = 0; step < 300; ++step)
+  {
+    world.step();
+  }
+  const Eigen::Vector3d before = world.interfaceState(0).overlap_push;
+  ASSERT_GT(before.norm(), 0.01);
+  world.addObject(SceneDescription{
+      "far", {boxBody("far", Eigen::Vector3d::Constant(0.02), 0.0, Eigen::Vector3d(0.2, 0.2, 0.01))}, {}, {}});
+  world.step();
+  const Eigen::Vector3d after = world.interfaceState(0).overlap_push;
+  std::printf("overlap push across an edit: %.4f N before, %.4f N after one step\n", before.norm(), after.norm());
+  EXPECT_LE((after - before).norm(), params.overlap.force_rate * params.time_step + 1e-12);
+  world.removeObject("far");
+  world.step();
+  EXPECT_LE((world.interfaceState(0).overlap_push - after).norm(),
+            params.overlap.force_rate * params.time_step + 1e-12);
 }
 
 TEST(OverlapPush, WithoutOverlapOrStiffnessThereIsNoPush)
