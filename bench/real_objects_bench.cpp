@@ -29,6 +29,7 @@
 #include "god_finger/mesh_io/mesh_writer.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/convex_decomposition.h"
+#include "god_finger/scene/scene_file.h"
 
 #include <benchmark/benchmark.h>
 
@@ -151,13 +152,7 @@ SceneDescription objectScene(Object object)
 {
   SceneDescription scene;
   scene.name = kNames[object];
-  BodyDescription table;
-  table.name = "table";
-  table.is_static = true;
-  table.geometry.size = Eigen::Vector3d(1.0, 1.0, 0.04);
-  table.pose.translation().z() = -0.02;
-  table.material.friction = 0.6;
-  scene.bodies.push_back(table);
+  scene.bodies.push_back(supportTable());  // the scene lists' table: 1 m x 1 m, its top z = 0
   if (object == kBox)
   {
     scene.bodies.push_back(boxBody("box", Eigen::Vector3d::Constant(0.04), 0.1, Eigen::Vector3d(0, 0, 0.0205)));
