@@ -29,15 +29,32 @@ double hullVolume(const std::vector<btScalar>& coordinates)
   return volume;
 }
 
+// A convex hull whose box reaches kHullPairReach (collision_shape.h) beyond its points and margin.
+class ReachingHull : public btConvexHullShape
+{
+ public:
+  void getAabb(const btTransform& transform, btVector3& min, btVector3& max) const override
+  {
+    btConvexHullShape::getAabb(transform, min, max);
+    const btVector3 reach(kHullPairReach, kHullPairReach, kHullPairReach);
+    min -= reach;
+    max += reach;
+  }
+};
+
 std::unique_ptr<btConvexHullShape> hullShape(const std::vector<Eigen::Vector3d>& points, double margin)
 {
-  auto shape = std::make_unique<btConvexHullShape>();
+  auto shape = std::make_unique<ReachingHull>();
   for (const Eigen::Vector3d& p : points)
   {
     shape->addPoint(btVector3(p.x(), p.y(), p.z()), false);
   }
-  shape->recalcLocalAabb();
+  // The margin first: the cached local box is the points' plus the margin of the moment, and
+  // getAabb adds the margin again. Set after, the box kept Bullet's default 0.04 m margin, so
+  // every hull's box was 4 cm too wide on each side (a stud 1 cm over the table collided with it
+  // by GJK each step).
   shape->setMargin(margin);
+  shape->recalcLocalAabb();
   return shape;
 }
 }  // namespace

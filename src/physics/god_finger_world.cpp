@@ -22,6 +22,7 @@
 #include "solver/finger_contact_friction.h"
 #include "solver/pad_constraints.h"
 #include "solver/sub_god_object_injection.h"
+#include "sphere_mesh_algorithm.h"
 #include "start_overlaps.h"
 #include "world_bounds.h"
 
@@ -181,6 +182,7 @@ struct GodFingerWorld::Impl
     configuration = std::make_unique<btDefaultCollisionConfiguration>();
     dispatcher = std::make_unique<btCollisionDispatcher>(configuration.get());
     dispatcher->setNearCallback(&worldNearCallback);
+    registerSphereMeshAlgorithm(dispatcher.get());
     broadphase = std::make_unique<btDbvtBroadphase>();
     solver = std::make_unique<ContactSolver>(params.support_passes, &pads);
     world = std::make_unique<HookedWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get());
