@@ -1,6 +1,7 @@
 #include "god_finger/scene/urdf_scene.h"
 
 #include "god_finger/scene/scene_budget.h"
+#include "god_finger/scene/xacro.h"
 #include "god_finger/support/input_error.h"
 #include "god_finger/support/memory_budget.h"
 
@@ -751,6 +752,8 @@ SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolv
   }
   std::stringstream content;
   content << stream.rdbuf();
-  return parseUrdfScene(content.str(), directoryOf(urdf_path), urdf_path, packages);
+  const std::string xml = content.str();
+  return parseUrdfScene(isXacro(urdf_path, xml) ? expandXacro(xml, urdf_path, packages) : xml, directoryOf(urdf_path),
+                        urdf_path, packages);
 }
 }  // namespace god_finger

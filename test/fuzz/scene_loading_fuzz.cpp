@@ -1,8 +1,8 @@
 // libFuzzer target: scene files from arbitrary bytes, through the one loader the physics uses
-// (scene/scene_file.h). The first byte picks the form (a URDF, or a scene list in YAML); the
-// rest is the file. A bad file must give InputError, never a crash, a hang or a sanitizer
-// report; a file that loads must give bodies with finite poses and sizes in the scene's range.
-// Run by scripts/fuzz (scripts/test: a fixed seed).
+// (scene/scene_file.h). The first byte picks the form (modulo 3: a URDF, a scene list in YAML,
+// or a xacro file, scene/xacro.h); the rest is the file. A bad file must give InputError, never a crash, a hang or a
+// sanitizer report; a file that loads must give bodies with finite poses and sizes in the scene's range. Run by
+// scripts/fuzz (scripts/test: a fixed seed).
 #include "god_finger/scene/scene_budget.h"
 #include "god_finger/scene/scene_file.h"
 #include "god_finger/support/input_error.h"
@@ -20,8 +20,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   {
     return 0;
   }
-  const std::string path =
-      "/tmp/god_finger_fuzz_" + std::to_string(getpid()) + (data[0] % 2 == 0 ? ".urdf" : ".yaml");
+  const char* const forms[] = {".urdf", ".yaml", ".urdf.xacro"};
+  const std::string path = "/tmp/god_finger_fuzz_" + std::to_string(getpid()) + forms[data[0] % 3];
   FILE* file = std::fopen(path.c_str(), "wb");
   if (file == nullptr)
   {
@@ -35,8 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     for (const god_finger::BodyDescription& body : scene.bodies)
     {
       const bool primitive = body.geometry.kind != god_finger::GeometryKind::kMesh;
-      const double largest = body.geometry.kind == god_finger::GeometryKind::kBox ? body.geometry.size.maxCoeff()
-                                                                                   : body.geometry.radius;
+      const double largest =
+          body.geometry.kind == god_finger::GeometryKind::kBox ? body.geometry.size.maxCoeff() : body.geometry.radius;
       if (!body.pose.matrix().allFinite() || !body.collision_origin.matrix().allFinite() ||
           (primitive && largest > god_finger::kMaxBodySize) || (!body.is_static && !(body.mass > 0.0)))
       {
