@@ -69,14 +69,15 @@ SurfaceLocation locationFromBarycentric(const TriangleMesh& mesh, int face, cons
   return location;
 }
 
-SurfaceLocation locateOnFace(const TriangleMesh& mesh, int face, const Eigen::Vector3d& query, double feature_tolerance)
+Eigen::Vector3d closestBarycentric(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                   const Eigen::Vector3d& query)
 {
   // The projection's barycentrics are signed sub-areas, each the cross product of two vectors
   // from the query to the corners: no difference of large products, so needle triangles keep
   // full precision (the region test of Ericson 5.1.5 that this replaced put a point lying on a
   // 33 m x 6 cm needle 0.2 mm off it; found by test/fuzz/walk_fuzz). Outside the triangle the
   // closest point is on the nearest of its three edges.
-  const Eigen::Vector3d* corners[3] = {&mesh.corner(face, 0), &mesh.corner(face, 1), &mesh.corner(face, 2)};
+  const Eigen::Vector3d* corners[3] = {&a, &b, &c};
   const Eigen::Vector3d normal = (*corners[1] - *corners[0]).cross(*corners[2] - *corners[0]);
   const double twice_area_squared = normal.squaredNorm();
   Eigen::Vector3d lambda(-1.0, -1.0, -1.0);
@@ -106,6 +107,13 @@ SurfaceLocation locateOnFace(const TriangleMesh& mesh, int face, const Eigen::Ve
       }
     }
   }
+  return lambda;
+}
+
+SurfaceLocation locateOnFace(const TriangleMesh& mesh, int face, const Eigen::Vector3d& query, double feature_tolerance)
+{
+  const Eigen::Vector3d lambda =
+      closestBarycentric(mesh.corner(face, 0), mesh.corner(face, 1), mesh.corner(face, 2), query);
   SurfaceLocation location = locationFromBarycentric(mesh, face, lambda, feature_tolerance);
   location.distance = (query - location.point).norm();
   return location;

@@ -1,6 +1,7 @@
 #include "god_finger/scene/urdf_scene.h"
 
 #include "god_finger/scene/scene_budget.h"
+#include "god_finger/scene/deformable_object.h"
 #include "god_finger/scene/xacro.h"
 #include "god_finger/support/input_error.h"
 #include "god_finger/support/memory_budget.h"
@@ -352,6 +353,16 @@ class SceneParser
   SceneDescription parse(const std::string& xml) const
   {
     checkNumbers(xml);
+    if (hasDeformables(xml))
+    {
+      // Read it (its own errors first), then say what holds it today.
+      const std::vector<DeformableDescription> soft = parseDeformables(xml, base_directory_, source_, packages_);
+      if (!soft.empty())
+      {
+        fail("", "deformable '" + soft.front().name +
+                     "' loads (god_finger_soft presses it), but the physics world holds no soft bodies yet");
+      }
+    }
     const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
     if (!model)
     {

@@ -42,6 +42,13 @@ std::string jsonNumber(double value)
   return buffer;
 }
 
+std::string roundedNumber(double value)
+{
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.3g", value);
+  return buffer;
+}
+
 double percentile(std::vector<double> values, double fraction)
 {
   if (values.empty())

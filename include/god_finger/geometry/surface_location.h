@@ -42,6 +42,11 @@ struct SurfaceLocation
 SurfaceLocation locateOnFace(const TriangleMesh& mesh, int face, const Eigen::Vector3d& query,
                              double feature_tolerance = kDefaultFeatureTolerance);
 
+// Barycentric coordinates (of a, b, c) of the point of triangle abc closest to `query`, each in
+// [0, 1], summing to 1 (a degenerate triangle: its closest edge point).
+Eigen::Vector3d closestBarycentric(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                   const Eigen::Vector3d& query);
+
 // Classifies (and snaps to exact zeros) barycentric coordinates already known on a face.
 SurfaceLocation locationFromBarycentric(const TriangleMesh& mesh, int face, const Eigen::Vector3d& barycentric,
                                         double feature_tolerance = kDefaultFeatureTolerance);

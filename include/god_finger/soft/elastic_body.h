@@ -1,0 +1,117 @@
+// A soft body as linear finite elements: linear tetrahedra (constant strain), isotropic linear
+// elasticity, lumped mass, Rayleigh damping, integrated by implicit (backward) Euler with a
+// fixed step. The step's matrix A = M + dt C + dt^2 K never changes, so it is factored once
+// (sparse LDL^T, CHOLMOD's fill-reducing ordering) at construction and each step is one K u product and
+// one pair of triangular solves: O(fill) per step, no iteration, unconditionally stable.
+//
+// Units: SI; vectors are 3 per node (node i's x y z at 3i..3i+2), in the body's rest frame.
+// Invariants: fixed nodes (glued to the world) never move: their displacement and velocity stay
+// 0 and forces on them are taken by the support. The state (displacement u, velocity v) changes
+// only in step() and reset(). Linear elasticity is exact for small strains and rotations; a body
+// turned far from rest grows (the known artefact that corotated elements remove).
+// Real-time safety: step() allocates nothing after construction; construction and
+// staticDisplacement() do (factorisation).
+#pragma once
+
+#include "god_finger/soft/soft_material.h"
+#include "god_finger/soft/tet_mesh.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <vector>
+
+namespace god_finger
+{
+class SparseFactor;
+
+class ElasticBody
+{
+ public:
+  // `mesh` checked (checkedTetMesh), `material` checked (checkSoftMaterial), `time_step` > 0
+  // (s), `fixed_nodes` indices into mesh.nodes, `fixed_dofs` single degrees of freedom held as
+  // well (3 node + axis: rollers), `gravity` (m/s^2) in the body's frame. Throws InputError when
+  // nothing can move (every node fixed) or a fixed node or axis is not the body's.
+  ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::vector<int>& fixed_nodes, double time_step,
+              const Eigen::Vector3d& gravity, const std::vector<int>& fixed_dofs = {});
+  ~ElasticBody();
+
+  const TetMesh& restMesh() const
+  {
+    return mesh_;
+  }
+  const std::vector<std::array<int, 3>>& surface() const
+  {
+    return surface_;
+  }
+  int nodeCount() const
+  {
+    return static_cast<int>(mesh_.nodes.size());
+  }
+  double timeStep() const
+  {
+    return time_step_;
+  }
+  double mass() const;    // kg
+  double volume() const;  // m^3, at rest
+  bool isFixed(int node) const
+  {
+    return free_index_[3 * node] < 0 && free_index_[3 * node + 1] < 0 && free_index_[3 * node + 2] < 0;
+  }
+
+  // One step under `external_forces` (N, 3 per node; gravity is added here). RT-safe.
+  void step(const Eigen::VectorXd& external_forces);
+  // Back to rest: u = v = 0.
+  void reset();
+
+  // The equilibrium displacement K u = f + gravity's load (factors K on first use; not RT-safe).
+  Eigen::VectorXd staticDisplacement(const Eigen::VectorXd& external_forces);
+
+  const Eigen::VectorXd& displacement() const
+  {
+    return displacement_;
+  }
+  const Eigen::VectorXd& velocity() const
+  {
+    return velocity_;
+  }
+  Eigen::Vector3d position(int node) const
+  {
+    return mesh_.nodes[node] + displacement_.segment<3>(3 * node);
+  }
+  // Every node's current position (for the surface, the markers and the contact).
+  void positions(std::vector<Eigen::Vector3d>* out) const;
+
+  double elasticEnergy() const;  // 1/2 u^T K u (J)
+  double kineticEnergy() const;  // 1/2 v^T M v (J)
+  // The stiffness matrix over every degree of freedom (fixed ones included), for tests.
+  const Eigen::SparseMatrix<double>& stiffness() const
+  {
+    return stiffness_;
+  }
+  // Nonzeros of the step's factor (what a step's solve costs).
+  long factorNonZeros() const;
+
+ private:
+  TetMesh mesh_;
+  std::vector<std::array<int, 3>> surface_;
+  SoftMaterial material_;
+  double time_step_;
+  Eigen::Vector3d gravity_;
+  std::vector<int> free_index_;                 // per degree of freedom: its index among the free ones, or -1
+  std::vector<int> free_dofs_;                  // the free ones' degrees of freedom
+  Eigen::SparseMatrix<double> stiffness_;       // K, every degree of freedom
+  Eigen::SparseMatrix<double> free_stiffness_;  // K over the free ones
+  Eigen::VectorXd lumped_mass_;                 // per degree of freedom (kg)
+  Eigen::VectorXd gravity_load_;                // per degree of freedom (N)
+  std::unique_ptr<SparseFactor> step_factor_;
+  std::unique_ptr<SparseFactor> static_factor_;
+  Eigen::VectorXd displacement_;
+  Eigen::VectorXd velocity_;
+  // Step scratch, over the free degrees of freedom.
+  Eigen::VectorXd free_u_;
+  Eigen::VectorXd free_v_;
+  Eigen::VectorXd free_rhs_;
+  Eigen::VectorXd free_ku_;
+};
+}  // namespace god_finger

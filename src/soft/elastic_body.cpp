@@ -1,0 +1,251 @@
+#include "god_finger/soft/elastic_body.h"
+
+#include "god_finger/support/input_error.h"
+#include "sparse_factor.h"
+
+#include <Eigen/Dense>
+
+namespace god_finger
+{
+namespace
+{
+// The element stiffness of one linear tetrahedron, 3x3 block (a, b):
+// V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g the shape functions' gradients.
+void addElementStiffness(const std::vector<Eigen::Vector3d>& nodes, const std::array<int, 4>& tet, double mu,
+                         double lambda, std::vector<Eigen::Triplet<double>>* triplets, double* volume)
+{
+  Eigen::Matrix3d edges;
+  edges << nodes[tet[1]] - nodes[tet[0]], nodes[tet[2]] - nodes[tet[0]], nodes[tet[3]] - nodes[tet[0]];
+  const Eigen::Matrix3d inverse = edges.inverse();
+  *volume = edges.determinant() / 6.0;
+  Eigen::Vector3d gradients[4];
+  for (int k = 1; k < 4; ++k)
+  {
+    gradients[k] = inverse.row(k - 1).transpose();
+  }
+  gradients[0] = -(gradients[1] + gradients[2] + gradients[3]);
+  for (int a = 0; a < 4; ++a)
+  {
+    for (int b = 0; b < 4; ++b)
+    {
+      const Eigen::Matrix3d block =
+          *volume * (lambda * gradients[a] * gradients[b].transpose() + mu * gradients[b] * gradients[a].transpose() +
+                     mu * gradients[a].dot(gradients[b]) * Eigen::Matrix3d::Identity());
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          triplets->emplace_back(3 * tet[a] + i, 3 * tet[b] + j, block(i, j));
+        }
+      }
+    }
+  }
+}
+
+// The rows and columns of `matrix` that `free_index` keeps (-1: dropped).
+Eigen::SparseMatrix<double> freeBlock(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& free_index,
+                                      int free_count)
+{
+  std::vector<Eigen::Triplet<double>> kept;
+  kept.reserve(static_cast<std::size_t>(matrix.nonZeros()));
+  for (int column = 0; column < matrix.outerSize(); ++column)
+  {
+    if (free_index[column] < 0)
+    {
+      continue;
+    }
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, column); it; ++it)
+    {
+      if (free_index[it.row()] >= 0)
+      {
+        kept.emplace_back(free_index[it.row()], free_index[column], it.value());
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> block(free_count, free_count);
+  block.setFromTriplets(kept.begin(), kept.end());
+  return block;
+}
+}  // namespace
+
+ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::vector<int>& fixed_nodes,
+                         double time_step, const Eigen::Vector3d& gravity, const std::vector<int>& fixed_dofs)
+    : mesh_(std::move(mesh)), material_(material), time_step_(time_step), gravity_(gravity)
+{
+  surface_ = surfaceTriangles(mesh_);
+  const int dofs = 3 * nodeCount();
+  free_index_.assign(static_cast<std::size_t>(dofs), 0);
+  for (int node : fixed_nodes)
+  {
+    if (node < 0 || node >= nodeCount())
+    {
+      throw InputError("soft body: fixed node " + std::to_string(node) + " is not one of its " +
+                       std::to_string(nodeCount()) + " nodes");
+    }
+    for (int i = 0; i < 3; ++i)
+    {
+      free_index_[static_cast<std::size_t>(3 * node + i)] = -1;
+    }
+  }
+  for (int dof : fixed_dofs)
+  {
+    if (dof < 0 || dof >= dofs)
+    {
+      throw InputError("soft body: fixed degree of freedom " + std::to_string(dof) + " is not one of its " +
+                       std::to_string(dofs));
+    }
+    free_index_[static_cast<std::size_t>(dof)] = -1;
+  }
+  for (int dof = 0; dof < dofs; ++dof)
+  {
+    if (free_index_[dof] >= 0)
+    {
+      free_index_[dof] = static_cast<int>(free_dofs_.size());
+      free_dofs_.push_back(dof);
+    }
+  }
+  if (free_dofs_.empty())
+  {
+    throw InputError("soft body: every node is fixed: nothing can move");
+  }
+
+  const double mu = material_.shearModulus();
+  const double lambda = material_.lameLambda();
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(mesh_.tets.size() * 144);
+  lumped_mass_ = Eigen::VectorXd::Zero(dofs);
+  for (const std::array<int, 4>& tet : mesh_.tets)
+  {
+    double tet_volume = 0.0;
+    addElementStiffness(mesh_.nodes, tet, mu, lambda, &triplets, &tet_volume);
+    for (int node : tet)
+    {
+      lumped_mass_.segment<3>(3 * node).array() += material_.density * tet_volume / 4.0;
+    }
+  }
+  stiffness_.resize(dofs, dofs);
+  stiffness_.setFromTriplets(triplets.begin(), triplets.end());
+  gravity_load_.resize(dofs);
+  for (int node = 0; node < nodeCount(); ++node)
+  {
+    gravity_load_.segment<3>(3 * node) = lumped_mass_(3 * node) * gravity_;
+  }
+
+  const int free_count = static_cast<int>(free_dofs_.size());
+  free_stiffness_ = freeBlock(stiffness_, free_index_, free_count);
+  // A = (1 + dt alpha) M + (dt beta + dt^2) K over the free degrees of freedom.
+  Eigen::SparseMatrix<double> step_matrix =
+      (time_step_ * material_.stiffness_damping + time_step_ * time_step_) * free_stiffness_;
+  for (int i = 0; i < free_count; ++i)
+  {
+    step_matrix.coeffRef(i, i) += (1.0 + time_step_ * material_.mass_damping) * lumped_mass_(free_dofs_[i]);
+  }
+  step_factor_ = std::make_unique<SparseFactor>(step_matrix);
+  if (!step_factor_->ok())
+  {
+    throw InputError("soft body: its step matrix cannot be factored (a node is not part of any volume?)");
+  }
+  displacement_ = Eigen::VectorXd::Zero(dofs);
+  velocity_ = Eigen::VectorXd::Zero(dofs);
+  free_u_ = Eigen::VectorXd::Zero(free_count);
+  free_v_ = Eigen::VectorXd::Zero(free_count);
+  free_rhs_ = Eigen::VectorXd::Zero(free_count);
+  free_ku_ = Eigen::VectorXd::Zero(free_count);
+}
+
+ElasticBody::~ElasticBody() = default;
+
+double ElasticBody::mass() const
+{
+  return lumped_mass_.sum() / 3.0;
+}
+
+double ElasticBody::volume() const
+{
+  double total = 0.0;
+  for (const std::array<int, 4>& tet : mesh_.tets)
+  {
+    total += signedTetVolume(mesh_.nodes, tet);
+  }
+  return total;
+}
+
+void ElasticBody::step(const Eigen::VectorXd& external_forces)
+{
+  const int free_count = static_cast<int>(free_dofs_.size());
+  for (int i = 0; i < free_count; ++i)
+  {
+    free_u_(i) = displacement_(free_dofs_[i]);
+  }
+  free_ku_.noalias() = free_stiffness_ * free_u_;
+  for (int i = 0; i < free_count; ++i)
+  {
+    const int dof = free_dofs_[i];
+    free_rhs_(i) =
+        lumped_mass_(dof) * velocity_(dof) + time_step_ * (external_forces(dof) + gravity_load_(dof) - free_ku_(i));
+  }
+  step_factor_->solve(free_rhs_, &free_v_);
+  for (int i = 0; i < free_count; ++i)
+  {
+    const int dof = free_dofs_[i];
+    velocity_(dof) = free_v_(i);
+    displacement_(dof) += time_step_ * free_v_(i);
+  }
+}
+
+void ElasticBody::reset()
+{
+  displacement_.setZero();
+  velocity_.setZero();
+}
+
+Eigen::VectorXd ElasticBody::staticDisplacement(const Eigen::VectorXd& external_forces)
+{
+  if (!static_factor_)
+  {
+    static_factor_ = std::make_unique<SparseFactor>(free_stiffness_);
+    if (!static_factor_->ok())
+    {
+      throw InputError("soft body: free to move as a whole (fix a node to hold it), no equilibrium");
+    }
+  }
+  const int free_count = static_cast<int>(free_dofs_.size());
+  Eigen::VectorXd load(free_count);
+  for (int i = 0; i < free_count; ++i)
+  {
+    load(i) = external_forces(free_dofs_[i]) + gravity_load_(free_dofs_[i]);
+  }
+  Eigen::VectorXd free_solution(free_count);
+  static_factor_->solve(load, &free_solution);
+  Eigen::VectorXd solution = Eigen::VectorXd::Zero(3 * nodeCount());
+  for (int i = 0; i < free_count; ++i)
+  {
+    solution(free_dofs_[i]) = free_solution(i);
+  }
+  return solution;
+}
+
+void ElasticBody::positions(std::vector<Eigen::Vector3d>* out) const
+{
+  out->resize(mesh_.nodes.size());
+  for (int node = 0; node < nodeCount(); ++node)
+  {
+    (*out)[node] = position(node);
+  }
+}
+
+double ElasticBody::elasticEnergy() const
+{
+  return 0.5 * displacement_.dot(stiffness_ * displacement_);
+}
+
+double ElasticBody::kineticEnergy() const
+{
+  return 0.5 * velocity_.dot(lumped_mass_.cwiseProduct(velocity_));
+}
+
+long ElasticBody::factorNonZeros() const
+{
+  return step_factor_->factorNonZeros();
+}
+}  // namespace god_finger
