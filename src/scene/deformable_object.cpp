@@ -1,6 +1,5 @@
 #include "god_finger/scene/deformable_object.h"
 
-#include "god_finger/scene/xacro.h"
 #include "god_finger/soft/vtk_tet_reader.h"
 #include "god_finger/support/input_error.h"
 #include "god_finger/support/text_numbers.h"
@@ -10,8 +9,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 namespace god_finger
 {
@@ -232,14 +229,6 @@ std::vector<DeformableDescription> parseDeformables(const std::string& xml, cons
 
 std::vector<DeformableDescription> loadDeformables(const std::string& path, const PackageResolver& packages)
 {
-  std::ifstream stream(path);
-  if (!stream.good())
-  {
-    throw InputError("URDF '" + path + "': no such file or not readable");
-  }
-  std::stringstream content;
-  content << stream.rdbuf();
-  const std::string xml = content.str();
-  return parseDeformables(isXacro(path, xml) ? expandXacro(xml, path, packages) : xml, folderOf(path), path, packages);
+  return parseDeformables(readUrdfText(path, packages), folderOf(path), path, packages);
 }
 }  // namespace god_finger

@@ -1,7 +1,7 @@
 #include "god_finger/scene/urdf_scene.h"
 
-#include "god_finger/scene/scene_budget.h"
 #include "god_finger/scene/deformable_object.h"
+#include "god_finger/scene/scene_budget.h"
 #include "god_finger/scene/xacro.h"
 #include "god_finger/support/input_error.h"
 #include "god_finger/support/memory_budget.h"
@@ -754,7 +754,7 @@ SceneDescription parseUrdfScene(const std::string& urdf_xml, const std::string& 
   return SceneParser(source_name, base_directory, packages).parse(urdf_xml);
 }
 
-SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolver& packages)
+std::string readUrdfText(const std::string& urdf_path, const PackageResolver& packages)
 {
   std::ifstream stream(urdf_path);
   if (!stream.good())
@@ -764,7 +764,11 @@ SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolv
   std::stringstream content;
   content << stream.rdbuf();
   const std::string xml = content.str();
-  return parseUrdfScene(isXacro(urdf_path, xml) ? expandXacro(xml, urdf_path, packages) : xml, directoryOf(urdf_path),
-                        urdf_path, packages);
+  return isXacro(urdf_path, xml) ? expandXacro(xml, urdf_path, packages) : xml;
+}
+
+SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolver& packages)
+{
+  return parseUrdfScene(readUrdfText(urdf_path, packages), directoryOf(urdf_path), urdf_path, packages);
 }
 }  // namespace god_finger

@@ -151,6 +151,7 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
   free_v_ = Eigen::VectorXd::Zero(free_count);
   free_rhs_ = Eigen::VectorXd::Zero(free_count);
   free_ku_ = Eigen::VectorXd::Zero(free_count);
+  last_forces_ = Eigen::VectorXd::Zero(dofs);
 }
 
 ElasticBody::~ElasticBody() = default;
@@ -172,6 +173,18 @@ double ElasticBody::volume() const
 
 void ElasticBody::step(const Eigen::VectorXd& external_forces)
 {
+  const bool same_forces = (external_forces.array() == last_forces_.array()).all();
+  if (sleeping_ && same_forces)
+  {
+    return;
+  }
+  sleeping_ = false;
+  if (!same_forces)
+  {
+    last_forces_ = external_forces;
+    quiet_steps_ = 0;
+  }
+  ++solved_steps_;
   const int free_count = static_cast<int>(free_dofs_.size());
   for (int i = 0; i < free_count; ++i)
   {
@@ -191,12 +204,21 @@ void ElasticBody::step(const Eigen::VectorXd& external_forces)
     velocity_(dof) = free_v_(i);
     displacement_(dof) += time_step_ * free_v_(i);
   }
+  quiet_steps_ = velocity_.lpNorm<Eigen::Infinity>() < kSoftSleepSpeed ? quiet_steps_ + 1 : 0;
+  if (quiet_steps_ >= kSoftSleepSteps)
+  {
+    sleeping_ = true;
+    velocity_.setZero();
+  }
 }
 
 void ElasticBody::reset()
 {
   displacement_.setZero();
   velocity_.setZero();
+  last_forces_.setZero();
+  quiet_steps_ = 0;
+  sleeping_ = false;
 }
 
 Eigen::VectorXd ElasticBody::staticDisplacement(const Eigen::VectorXd& external_forces)

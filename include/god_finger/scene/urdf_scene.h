@@ -55,6 +55,10 @@ std::string resolveFileName(const std::string& filename, const std::string& base
 // The folder a file is in ("." for a bare name).
 std::string folderOf(const std::string& path);
 
+// The text of the URDF file at `urdf_path`, xacro expanded (xacro.h) when it is xacro. Throws
+// InputError when it cannot be read.
+std::string readUrdfText(const std::string& urdf_path, const PackageResolver& packages = PackageResolver());
+
 SceneDescription loadUrdfScene(const std::string& urdf_path, const PackageResolver& packages = PackageResolver());
 // Same, from a string; relative mesh paths are resolved against `base_directory`.
 SceneDescription parseUrdfScene(const std::string& urdf_xml, const std::string& base_directory,
