@@ -219,6 +219,18 @@ class Expression
     return comparison();
   }
 
+  // `a op b` for op one of == != < > <= >= (Python compares strings and numbers alike).
+  template <typename T>
+  static bool compare(const std::string& op, const T& a, const T& b)
+  {
+    return op == "=="   ? a == b
+           : op == "!=" ? a != b
+           : op == "<"  ? a < b
+           : op == ">"  ? a > b
+           : op == "<=" ? a <= b
+                        : a >= b;
+  }
+
   Value comparison()
   {
     Value left = sum();
@@ -238,29 +250,9 @@ class Expression
         return left;
       }
       const Value right = sum();
-      bool result = false;
-      if (left.kind == Value::Kind::kText || right.kind == Value::Kind::kText)
-      {
-        const std::string a = toText(left);
-        const std::string b = toText(right);
-        result = op == "=="   ? a == b
-                 : op == "!=" ? a != b
-                 : op == "<"  ? a < b
-                 : op == ">"  ? a > b
-                 : op == "<=" ? a <= b
-                              : a >= b;
-      }
-      else
-      {
-        const double a = numberOf(left);
-        const double b = numberOf(right);
-        result = op == "=="   ? a == b
-                 : op == "!=" ? a != b
-                 : op == "<"  ? a < b
-                 : op == ">"  ? a > b
-                 : op == "<=" ? a <= b
-                              : a >= b;
-      }
+      const bool as_text = left.kind == Value::Kind::kText || right.kind == Value::Kind::kText;
+      const bool result =
+          as_text ? compare(op, toText(left), toText(right)) : compare(op, numberOf(left), numberOf(right));
       left = Value::ofBool(result);
     }
   }
