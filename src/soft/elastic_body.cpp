@@ -1,6 +1,7 @@
 #include "god_finger/soft/elastic_body.h"
 
 #include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
 #include "sparse_factor.h"
 
 #include <Eigen/Dense>
@@ -9,6 +10,9 @@ namespace god_finger
 {
 namespace
 {
+// Below this reciprocal condition number the static stiffness is singular but for rounding.
+constexpr double kMinStaticCondition = 1e-9;
+
 // The element stiffness of one linear tetrahedron, 3x3 block (a, b):
 // V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g the shape functions' gradients.
 void addElementStiffness(const std::vector<Eigen::Vector3d>& nodes, const std::array<int, 4>& tet, double mu,
@@ -226,9 +230,15 @@ Eigen::VectorXd ElasticBody::staticDisplacement(const Eigen::VectorXd& external_
   if (!static_factor_)
   {
     static_factor_ = std::make_unique<SparseFactor>(free_stiffness_);
-    if (!static_factor_->ok())
+    // A body held against no or too few of its rigid motions has no equilibrium: its factor's
+    // smallest pivot is rounding (1e-15-1e-13 of the largest, measured on PyBullet's ball, torus,
+    // bread and banana held by one or two nodes) where a held body's is 1e-3-1e-1 of it.
+    const double condition = static_factor_->ok() ? static_factor_->reciprocalCondition() : 0.0;
+    if (!(condition >= kMinStaticCondition))
     {
-      throw InputError("soft body: free to move as a whole (fix a node to hold it), no equilibrium");
+      static_factor_.reset();
+      throw InputError("soft body: its fixed nodes do not hold it (it can still turn or slide: reciprocal condition " +
+                       roundedNumber(condition) + "); fix at least three nodes not on one line");
     }
   }
   const int free_count = static_cast<int>(free_dofs_.size());

@@ -12,7 +12,7 @@ namespace
 const SoftMaterialRange kRanges[] = {
     {"young_modulus", &SoftMaterial::young_modulus, 1.0, 1e10, "Pa"},
     {"poisson_ratio", &SoftMaterial::poisson_ratio, 0.0, 0.49, ""},
-    {"density", &SoftMaterial::density, 1.0, 1e5, "kg/m^3"},
+    {"density", &SoftMaterial::density, 1e-3, 1e5, "kg/m^3"},
     {"stiffness_damping", &SoftMaterial::stiffness_damping, 0.0, 1.0, "s"},
     {"mass_damping", &SoftMaterial::mass_damping, 0.0, 1000.0, "1/s"},
 };

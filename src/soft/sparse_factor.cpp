@@ -67,6 +67,11 @@ void SparseFactor::solve(const Eigen::VectorXd& b, Eigen::VectorXd* x)
   std::memcpy(x->data(), cholmod_->solution->x, sizeof(double) * static_cast<std::size_t>(x->size()));
 }
 
+double SparseFactor::reciprocalCondition()
+{
+  return cholmod_->factor != nullptr ? cholmod_rcond(cholmod_->factor, &cholmod_->common) : 0.0;
+}
+
 long SparseFactor::factorNonZeros() const
 {
   if (cholmod_->factor == nullptr || cholmod_->factor->nz == nullptr)

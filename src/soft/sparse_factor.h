@@ -29,6 +29,10 @@ class SparseFactor
   void solve(const Eigen::VectorXd& b, Eigen::VectorXd* x);
   // Nonzeros of the factor L.
   long factorNonZeros() const;
+  // CHOLMOD's estimate of the reciprocal condition number (the smallest pivot over the largest):
+  // near rounding (below 1e-12) when the matrix is singular in all but rounding, as the stiffness
+  // of a body free to turn about its one held node is.
+  double reciprocalCondition();
 
  private:
   struct Cholmod;

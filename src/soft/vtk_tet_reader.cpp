@@ -193,7 +193,11 @@ TetMesh parseVtkTetMesh(const std::string& text, const std::string& source, TetM
 {
   const std::size_t third = lineStart(text, 2);
   const std::size_t fourth = lineStart(text, 3);
-  if (text.rfind("# vtk DataFile Version", 0) != 0 || third == std::string::npos)
+  // "# vtk DataFile Version 2.0", as VTK writes it; PyBullet's own files also write "#vtk".
+  const std::size_t second = lineStart(text, 1);
+  const std::string first_line =
+      upper(trimmed(text, text.empty() ? 0 : 1, second == std::string::npos ? text.size() : second));
+  if (text.empty() || text[0] != '#' || first_line.rfind("VTK DATAFILE", 0) != 0 || third == std::string::npos)
   {
     throw InputError(source + ": not a legacy VTK file (its first line must be '# vtk DataFile Version ...')");
   }
@@ -218,7 +222,7 @@ TetMesh parseVtkTetMesh(const std::string& text, const std::string& source, TetM
   bool have_points = false;
   bool have_cells = false;
   bool have_types = false;
-  std::vector<long long> types;
+  std::vector<long long> types;  // empty: none given
   while (!have_types && !cursor.atEnd())
   {
     const std::string section = upper(cursor.word());
@@ -294,10 +298,16 @@ TetMesh parseVtkTetMesh(const std::string& text, const std::string& source, TetM
     else if (section == "CELL_TYPES")
     {
       const long long count = cursor.count("the cell-type count", std::min(kMaxVtkCells, text_size / 2));
-      types.resize(static_cast<std::size_t>(count));
-      for (long long& type : types)
+      // Bullet's reduced-deformable files end with a bare "CELL_TYPES 10" (Bullet's reader never
+      // reads the types): no types at all reads as none given (below); some, then the end, is
+      // a truncated file.
+      if (!cursor.atEnd())
       {
-        type = cursor.integer("a cell type");
+        types.resize(static_cast<std::size_t>(count));
+        for (long long& type : types)
+        {
+          type = cursor.integer("a cell type");
+        }
       }
       have_types = true;
     }
@@ -310,15 +320,27 @@ TetMesh parseVtkTetMesh(const std::string& text, const std::string& source, TetM
       cursor.fail("unknown section '" + section.substr(0, 24) + "' (POINTS, CELLS and CELL_TYPES make a volume)");
     }
   }
-  if (!have_points || !have_cells || !have_types)
+  if (!have_points || !have_cells)
   {
-    throw InputError(source + ": no " +
-                     std::string(!have_points  ? "POINTS"
-                                 : !have_cells ? "CELLS"
-                                               : "CELL_TYPES") +
-                     " section (a volume needs POINTS, CELLS and CELL_TYPES)");
+    throw InputError(source + ": no " + std::string(!have_points ? "POINTS" : "CELLS") +
+                     " section (a volume needs POINTS and CELLS)");
   }
   const std::size_t cells = offsets.size() - 1;
+  if (types.empty())
+  {
+    // No cell types given (no CELL_TYPES, or a bare one): cells of 4 nodes are tetrahedra, as
+    // Bullet's own reader takes every cell to be.
+    for (std::size_t c = 0; c < cells; ++c)
+    {
+      if (offsets[c + 1] - offsets[c] != 4)
+      {
+        throw InputError(source + ": cell " + std::to_string(c) + " has " +
+                         std::to_string(offsets[c + 1] - offsets[c]) +
+                         " nodes and the file gives no CELL_TYPES (without them, every cell must be a tetrahedron)");
+      }
+    }
+    types.assign(cells, kVtkTetra);
+  }
   if (types.size() != cells)
   {
     throw InputError(source + ": CELL_TYPES lists " + std::to_string(types.size()) + " types for " +

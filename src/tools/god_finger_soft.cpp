@@ -6,8 +6,9 @@
 //
 // FILE: a URDF (or xacro) holding PyBullet-style <deformable> elements (scene/deformable_object.h).
 // Prints each body: nodes, tetrahedra, surface triangles, volume, mass, E, nu, damping. With
-// --press, the first body, glued to the table by its lowest nodes (within 0.1 mm of its lowest
-// point), is pressed at the top of its bounding box's centre, straight down: by a pad of radius
+// --press, the first body, glued to the table by its lowest nodes (those within 2 % of its height
+// of its lowest point, at least 0.1 mm; too few to hold it is refused), is pressed at the top of its bounding box's
+// centre, straight down: by a pad of radius
 // --radius (default 0.01 m) as a uniform pressure, or with --point at one point; the static
 // equilibrium is solved (K u = f) and the sink under the centre printed, with Boussinesq's w0 of
 // the same pad on a half-space of the body's material for comparison (its finite size and the
@@ -23,6 +24,7 @@
 #include "god_finger/support/input_error.h"
 #include "god_finger/support/text_numbers.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -158,7 +160,9 @@ void press(const god_finger::DeformableDescription& body, const Options& options
     lower = lower.cwiseMin(node);
     upper = upper.cwiseMax(node);
   }
-  const std::vector<int> glued = god_finger::nodesAtHeight(body.mesh, lower.z(), 1e-4);
+  // Glued where it rests: the nodes within 2 % of its height of its lowest point (at least 0.1 mm).
+  const std::vector<int> glued =
+      god_finger::nodesAtHeight(body.mesh, lower.z(), std::max(1e-4, 0.02 * (upper.z() - lower.z())));
   god_finger::ElasticBody soft(body.mesh, body.material, glued, 1e-3, Eigen::Vector3d::Zero());
   const Eigen::Vector3d top(0.5 * (lower.x() + upper.x()), 0.5 * (lower.y() + upper.y()), upper.z());
   Eigen::VectorXd forces = Eigen::VectorXd::Zero(3 * soft.nodeCount());

@@ -178,6 +178,25 @@ TEST(ElasticBody, RefusesWhatCannotMove)
   {
     EXPECT_STREQ(error.what(), "soft body: every node is fixed: nothing can move");
   }
+  // Held by one node (or two), it can still turn: no equilibrium, said so, not a number.
+  for (const std::vector<int>& held : {std::vector<int>{0}, std::vector<int>{0, 7}})
+  {
+    ElasticBody loose(cube(3), rubber(), held, 1e-3, Eigen::Vector3d(0, 0, -9.81));
+    try
+    {
+      loose.staticDisplacement(Eigen::VectorXd::Zero(3 * loose.nodeCount()));
+      FAIL() << "no error";
+    }
+    catch (const InputError& error)
+    {
+      const std::string message = error.what();
+      EXPECT_EQ(message.substr(0, 92),
+                "soft body: its fixed nodes do not hold it (it can still turn or slide: reciprocal "
+                "condition ")
+          << message;
+      EXPECT_NE(message.find("); fix at least three nodes not on one line"), std::string::npos) << message;
+    }
+  }
   try
   {
     ElasticBody body(mesh, rubber(), {8}, 1e-3, Eigen::Vector3d::Zero());

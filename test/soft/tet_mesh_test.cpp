@@ -61,6 +61,19 @@ TEST(VtkTetReader, SkipsGmshsBoundaryCellsAndUnusedPointsAndReorientsANegativeMe
   }
 }
 
+TEST(VtkTetReader, ReadsFilesWithoutCellTypesAsBulletDoes)
+{
+  // Bullet's reduced-deformable meshes: "#vtk", CELLS' size without the counts, a bare
+  // "CELL_TYPES 10" at the end.
+  const std::string text =
+      "#vtk DataFile Version 2.0\nI don't think this matters\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
+      "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\nCELLS 2 8\n4 0 1 2 3\n4 1 4 2 3\nCELL_TYPES 10\n";
+  const TetMesh mesh = parseVtkTetMesh(text, "cube_mesh.vtk");
+  EXPECT_EQ(mesh.tets.size(), 2u);
+  // Without any CELL_TYPES at all, the same.
+  EXPECT_EQ(parseVtkTetMesh(text.substr(0, text.find("CELL_TYPES")), "no_types.vtk").tets.size(), 2u);
+}
+
 TEST(VtkTetReader, ReadsTheVersion5Layout)
 {
   const std::string text =
@@ -101,8 +114,10 @@ TEST(VtkTetReader, EachBadFileGetsItsOneLineError)
       {head + "POINTS 4 double\n0 0 0\n1 0 zero\n", "soft.vtk: line 7: 'zero' is not a number (a point's z)"},
       {head + "POINTS 4 double\n0 0 0\n1 0\n", "soft.vtk: line 8: the file ends where a point's z should be"},
       {head + "POINTS 9000000000 double\n", "soft.vtk: line 5: the point count 9000000000 is out of range [0, 14]"},
-      {head + points + "CELLS 1 5\n4 0 1 2 3\n",
-       "soft.vtk: no CELL_TYPES section (a volume needs POINTS, CELLS and CELL_TYPES)"},
+      {head + points, "soft.vtk: no CELLS section (a volume needs POINTS and CELLS)"},
+      {head + points + "CELLS 2 9\n4 0 1 2 3\n3 0 1 2\n",
+       "soft.vtk: cell 1 has 3 nodes and the file gives no CELL_TYPES (without them, every cell must be a "
+       "tetrahedron)"},
       {head + points + "POLYGONS 1 5\n",
        "soft.vtk: line 10: unknown section 'POLYGONS' (POINTS, CELLS and CELL_TYPES make a volume)"},
       {head + points + "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 2\n10\n10\n",

@@ -83,6 +83,7 @@ class ElasticBody
   }
 
   // The equilibrium displacement K u = f + gravity's load (factors K on first use; not RT-safe).
+  // Throws InputError when the fixed nodes do not hold the body against every rigid motion.
   Eigen::VectorXd staticDisplacement(const Eigen::VectorXd& external_forces);
 
   const Eigen::VectorXd& displacement() const

@@ -1,10 +1,11 @@
 // Tetrahedral volume meshes from legacy VTK files (.vtk), as PyBullet's deformables, Gmsh
-// (`gmsh -format vtk`) and meshio write them: ASCII, DATASET UNSTRUCTURED_GRID, POINTS, then
-// CELLS + CELL_TYPES in the version 2 layout (each cell "k i0 .. ik-1") or the version 5 one
-// (OFFSETS and CONNECTIVITY arrays). Tetrahedra (cell type 10) make the volume; vertices, lines,
-// triangles and quads (types 1-9, Gmsh's boundary cells) are skipped; any other volume cell is
-// refused. CELLS' size field is not trusted (PyBullet's own files get it wrong). Everything after
-// CELL_TYPES (POINT_DATA, CELL_DATA, FIELD) is ignored.
+// (`gmsh -format vtk`) and meshio write them ("# vtk DataFile ..." or PyBullet's "#vtk ..."): ASCII, DATASET
+// UNSTRUCTURED_GRID, POINTS, then CELLS + CELL_TYPES in the version 2 layout (each cell "k i0 .. ik-1") or the version
+// 5 one (OFFSETS and CONNECTIVITY arrays). Tetrahedra (cell type 10) make the volume; vertices, lines, triangles and
+// quads (types 1-9, Gmsh's boundary cells) are skipped; any other volume cell is refused. CELLS' size field is not
+// trusted (PyBullet's own files get it wrong); a file without cell types (no CELL_TYPES, or Bullet's reduced-deformable
+// files' bare "CELL_TYPES 10") is read as Bullet reads it: every cell of 4 nodes a tetrahedron, any other refused.
+// Everything after CELL_TYPES (POINT_DATA, CELL_DATA, FIELD) is ignored.
 //
 // Errors: InputError, one line naming the file, the line and the problem: a BINARY file, a
 // missing or unknown section, a bad or missing number, a count over the limits below, a cell
