@@ -1,41 +1,16 @@
 #include "god_finger/scenarios/soft_press_fidelity.h"
 
-#include "god_finger/geometry/surface_location.h"
 #include "god_finger/soft/block_mesh.h"
 #include "god_finger/soft/elastic_body.h"
 #include "god_finger/soft/surface_load.h"
 #include "god_finger/support/text_numbers.h"
 
 #include <cmath>
-#include <limits>
 
 namespace god_finger
 {
 namespace
 {
-// The displacement (3) at the surface point closest to `point` of the body's rest surface.
-Eigen::Vector3d surfaceDisplacementAt(const ElasticBody& body, const Eigen::VectorXd& displacement,
-                                      const Eigen::Vector3d& point)
-{
-  const std::vector<Eigen::Vector3d>& nodes = body.restMesh().nodes;
-  double best = std::numeric_limits<double>::infinity();
-  Eigen::Vector3d result = Eigen::Vector3d::Zero();
-  for (const std::array<int, 3>& face : body.surface())
-  {
-    const Eigen::Vector3d weights = closestBarycentric(nodes[face[0]], nodes[face[1]], nodes[face[2]], point);
-    const Eigen::Vector3d closest =
-        weights[0] * nodes[face[0]] + weights[1] * nodes[face[1]] + weights[2] * nodes[face[2]];
-    const double distance = (closest - point).squaredNorm();
-    if (distance < best)
-    {
-      best = distance;
-      result = weights[0] * displacement.segment<3>(3 * face[0]) + weights[1] * displacement.segment<3>(3 * face[1]) +
-               weights[2] * displacement.segment<3>(3 * face[2]);
-    }
-  }
-  return result;
-}
-
 SoftMaterial material(const SoftPressSetup& setup)
 {
   SoftMaterial result;
@@ -60,9 +35,7 @@ SoftPressResult pressSoftBlock(const SoftPressSetup& setup)
   SoftPressResult result;
   result.nodes = static_cast<int>(mesh.nodes.size());
   result.tets = static_cast<int>(mesh.tets.size());
-  const double pressure = setup.force / (M_PI * setup.pad_radius * setup.pad_radius);
-  result.boussinesq =
-      2.0 * (1.0 - setup.poisson_ratio * setup.poisson_ratio) * pressure * setup.pad_radius / setup.young_modulus;
+  result.boussinesq = boussinesqCentreSink(setup.force, setup.pad_radius, setup.young_modulus, setup.poisson_ratio);
 
   ElasticBody body(mesh, material(setup), bottom, 1e-3, Eigen::Vector3d::Zero());
   result.factor_nonzeros = body.factorNonZeros();
@@ -72,10 +45,12 @@ SoftPressResult pressSoftBlock(const SoftPressSetup& setup)
   pad.centre = top_centre;
   pad.radius = setup.pad_radius;
   result.covered_area = addPadPressure(body.restMesh().nodes, body.surface(), pad, down, &forces);
-  result.pad_centre = -surfaceDisplacementAt(body, body.staticDisplacement(forces), top_centre).z();
+  result.pad_centre =
+      -surfaceDisplacementAt(body.restMesh().nodes, body.surface(), body.staticDisplacement(forces), top_centre).z();
   forces.setZero();
   addPointForce(body.restMesh().nodes, body.surface(), top_centre, down, &forces);
-  result.point_centre = -surfaceDisplacementAt(body, body.staticDisplacement(forces), top_centre).z();
+  result.point_centre =
+      -surfaceDisplacementAt(body.restMesh().nodes, body.surface(), body.staticDisplacement(forces), top_centre).z();
 
   // The plate: the bottom on rollers (every bottom node held in z; its first corner in x and y,
   // the next corner along x in y: no rigid motion, free lateral expansion), the top face loaded

@@ -3,6 +3,7 @@
 #include "god_finger/geometry/surface_location.h"
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <limits>
 
 namespace god_finger
@@ -128,5 +129,34 @@ Eigen::Vector3d addPointForce(const std::vector<Eigen::Vector3d>& positions,
     forces->segment<3>(3 * surface[best_face][k]) += best_weights[k] * force;
   }
   return best_point;
+}
+
+Eigen::Vector3d surfaceDisplacementAt(const std::vector<Eigen::Vector3d>& rest_nodes,
+                                      const std::vector<std::array<int, 3>>& surface,
+                                      const Eigen::VectorXd& displacement, const Eigen::Vector3d& point)
+{
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d result = Eigen::Vector3d::Zero();
+  for (const std::array<int, 3>& face : surface)
+  {
+    const Eigen::Vector3d& a = rest_nodes[face[0]];
+    const Eigen::Vector3d& b = rest_nodes[face[1]];
+    const Eigen::Vector3d& c = rest_nodes[face[2]];
+    const Eigen::Vector3d weights = closestBarycentric(a, b, c, point);
+    const double distance = (weights[0] * a + weights[1] * b + weights[2] * c - point).squaredNorm();
+    if (distance < best)
+    {
+      best = distance;
+      result = weights[0] * displacement.segment<3>(3 * face[0]) + weights[1] * displacement.segment<3>(3 * face[1]) +
+               weights[2] * displacement.segment<3>(3 * face[2]);
+    }
+  }
+  return result;
+}
+
+double boussinesqCentreSink(double force, double radius, double young_modulus, double poisson_ratio)
+{
+  const double pressure = force / (M_PI * radius * radius);
+  return 2.0 * (1.0 - poisson_ratio * poisson_ratio) * pressure * radius / young_modulus;
 }
 }  // namespace god_finger

@@ -15,7 +15,6 @@
 // mesh make the difference: docs/soft_bodies.md). --block writes a cube of side SIDE (m) with
 // about N nodes graded toward its top centre (soft/block_mesh.h) as a VTK file.
 // Exit codes: 0 success, 2 bad options or input (one line on stderr naming it).
-#include "god_finger/geometry/surface_location.h"
 #include "god_finger/scene/deformable_object.h"
 #include "god_finger/soft/block_mesh.h"
 #include "god_finger/soft/elastic_body.h"
@@ -186,24 +185,9 @@ void press(const god_finger::DeformableDescription& body, const Options& options
   }
   const Eigen::VectorXd u = soft.staticDisplacement(forces);
   // The sink under the centre: the displacement of the surface point there, by its face's weights.
-  double sink = 0.0;
-  double best = std::numeric_limits<double>::infinity();
-  for (const auto& face : soft.surface())
-  {
-    const Eigen::Vector3d& a = body.mesh.nodes[face[0]];
-    const Eigen::Vector3d& b = body.mesh.nodes[face[1]];
-    const Eigen::Vector3d& c = body.mesh.nodes[face[2]];
-    const Eigen::Vector3d w = god_finger::closestBarycentric(a, b, c, at);
-    const double distance = (w[0] * a + w[1] * b + w[2] * c - at).squaredNorm();
-    if (distance < best)
-    {
-      best = distance;
-      sink = -(w[0] * u(3 * face[0] + 2) + w[1] * u(3 * face[1] + 2) + w[2] * u(3 * face[2] + 2));
-    }
-  }
-  const double nu = body.material.poisson_ratio;
-  const double w0 = 2.0 * (1.0 - nu * nu) * (options.press / (M_PI * options.radius * options.radius)) *
-                    options.radius / body.material.young_modulus;
+  const double sink = -god_finger::surfaceDisplacementAt(body.mesh.nodes, soft.surface(), u, at).z();
+  const double w0 = god_finger::boussinesqCentreSink(options.press, options.radius, body.material.young_modulus,
+                                                     body.material.poisson_ratio);
   std::printf("press '%s': %zu nodes glued at z = %.4g m; %.4g N down at (%.4g, %.4g, %.4g) m\n", body.name.c_str(),
               glued.size(), lower.z(), options.press, at.x(), at.y(), at.z());
   if (options.point)

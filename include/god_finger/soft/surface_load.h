@@ -40,4 +40,14 @@ double addPadPressure(const std::vector<Eigen::Vector3d>& positions, const std::
 Eigen::Vector3d addPointForce(const std::vector<Eigen::Vector3d>& positions,
                               const std::vector<std::array<int, 3>>& surface, const Eigen::Vector3d& point,
                               const Eigen::Vector3d& force, Eigen::VectorXd* forces);
+
+// The displacement (m, 3) of the rest surface's point closest to `point`: its face's nodes'
+// displacements weighted by its barycentric coordinates (where a dimple's depth is read).
+Eigen::Vector3d surfaceDisplacementAt(const std::vector<Eigen::Vector3d>& rest_nodes,
+                                      const std::vector<std::array<int, 3>>& surface,
+                                      const Eigen::VectorXd& displacement, const Eigen::Vector3d& point);
+
+// Boussinesq's sink (m) of the centre of a uniform pressure `force` / (pi radius^2) over a disk on
+// an elastic half-space: w0 = 2 (1 - nu^2) p a / E.
+double boussinesqCentreSink(double force, double radius, double young_modulus, double poisson_ratio);
 }  // namespace god_finger
