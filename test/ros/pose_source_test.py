@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """rostest: a hand tracker publishes three fingertips (thumb, index, middle) on /hand/poses,
 each 5 mm into the table: every finger presses (its feedback, the coupling's reaction, above
-1 N). Then the tracker drops the middle finger from its arrays: within its pose_timeout (0.1 s)
-plus the diagnostics' period the servo reports `finger hand/middle` as let go (WARN, on
+1 N). Then the tracker drops the middle finger from its arrays: within its pose_timeout (1 s here, see
+pose_source.test) plus the diagnostics' period the servo reports `finger hand/middle` as let go (WARN, on
 /diagnostics), its feedback falls to zero, and the thumb and index go on pressing. The tracker
 publishes at 100 Hz; the test waits on conditions with deadlines, never sleeps to synchronise."""
 import math

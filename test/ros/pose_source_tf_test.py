@@ -4,7 +4,8 @@ middle_tip in world; the pose_source's `frames`), each 5 mm into the table: ever
 presses (its feedback above 1 N) and its interface pose (NAME/pose, the mapped target, world)
 is the frame's position within 1 mm. The frames move 2 cm along y: every finger follows.
 Then middle_tip stops being broadcast: TF keeps its last transform, whose stamp ages past
-pose_timeout (0.1 s), so the servo lets the middle finger go (feedback under 0.01 N, a WARN
+pose_timeout (1 s here, see
+pose_source_tf.test), so the servo lets the middle finger go (feedback under 0.01 N, a WARN
 `finger hand/middle` on /diagnostics) while the thumb and index go on pressing where their
 frames are. Broadcast at 100 Hz; the test waits on conditions with deadlines, never sleeps to
 synchronise."""
