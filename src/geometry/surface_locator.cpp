@@ -76,6 +76,33 @@ void SurfaceLocator::buildNode(int index, int begin, int end, const std::vector<
   buildNode(left + 1, middle, end, centroids, level + 1);
 }
 
+void SurfaceLocator::refit()
+{
+  // Children come after their parent (buildNode appends them): a reverse sweep is bottom-up.
+  for (int index = static_cast<int>(nodes_.size()) - 1; index >= 0; --index)
+  {
+    Node& node = nodes_[index];
+    if (node.count > 0)
+    {
+      node.lower = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+      node.upper = -node.lower;
+      for (int i = node.first; i < node.first + node.count; ++i)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          node.lower = node.lower.cwiseMin(mesh_->corner(order_[i], j));
+          node.upper = node.upper.cwiseMax(mesh_->corner(order_[i], j));
+        }
+      }
+    }
+    else
+    {
+      node.lower = nodes_[node.first].lower.cwiseMin(nodes_[node.first + 1].lower);
+      node.upper = nodes_[node.first].upper.cwiseMax(nodes_[node.first + 1].upper);
+    }
+  }
+}
+
 SurfaceLocation SurfaceLocator::closest(const Eigen::Vector3d& query, double feature_tolerance) const
 {
   int stack[kMaxStack];

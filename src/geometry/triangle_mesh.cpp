@@ -478,22 +478,10 @@ void TriangleMesh::buildTables()
 {
   const int n = static_cast<int>(triangles_.size());
   normals_.resize(n);
-  for (int t = 0; t < n; ++t)
-  {
-    const Eigen::Vector3d& a = vertices_[triangles_[t][0]];
-    normals_[t] = (vertices_[triangles_[t][1]] - a).cross(vertices_[triangles_[t][2]] - a).normalized();
-  }
   gradients_.resize(n);
   for (int t = 0; t < n; ++t)
   {
-    const Eigen::Vector3d& n_t = normals_[t];
-    const Eigen::Vector3d& a = corner(t, 0);
-    const Eigen::Vector3d& b = corner(t, 1);
-    const Eigen::Vector3d& c = corner(t, 2);
-    const double twice_area = (b - a).cross(c - a).dot(n_t);
-    // The gradient of lambda_j is normal x (edge opposite j, from j+1 to j+2) / (2 area).
-    gradients_[t].first = n_t.cross(c - b) / twice_area;
-    gradients_[t].second = n_t.cross(a - c) / twice_area;
+    updateTriangleFrame(t);  // build() dropped triangles of no area
   }
   const int used_vertices = static_cast<int>(vertices_.size());
   vertex_face_offsets_.assign(used_vertices + 1, 0);
@@ -517,6 +505,51 @@ void TriangleMesh::buildTables()
       vertex_faces_[fill[triangles_[t][k]]++] = t;
     }
   }
+}
+
+bool TriangleMesh::updateTriangleFrame(int t)
+{
+  const Eigen::Vector3d& a = corner(t, 0);
+  const Eigen::Vector3d& b = corner(t, 1);
+  const Eigen::Vector3d& c = corner(t, 2);
+  const Eigen::Vector3d area_normal = (b - a).cross(c - a);
+  if (!(area_normal.squaredNorm() > 0.0))
+  {
+    return false;
+  }
+  const Eigen::Vector3d n_t = area_normal.normalized();  // build()'s arithmetic, bit for bit
+  const double twice_area = area_normal.dot(n_t);
+  normals_[t] = n_t;
+  // The gradient of lambda_j is normal x (edge opposite j, from j+1 to j+2) / (2 area).
+  gradients_[t].first = n_t.cross(c - b) / twice_area;
+  gradients_[t].second = n_t.cross(a - c) / twice_area;
+  return true;
+}
+
+void TriangleMesh::moveVertices(const std::vector<Eigen::Vector3d>& positions)
+{
+  if (positions.size() != vertices_.size())
+  {
+    throw InputError("moveVertices: " + std::to_string(positions.size()) + " positions for a mesh of " +
+                     std::to_string(vertices_.size()) + " vertices");
+  }
+  Eigen::Vector3d lower = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d upper = -lower;
+  for (const Eigen::Vector3d& p : positions)
+  {
+    if (!p.allFinite())
+    {
+      throw InputError("moveVertices: a position is not finite");
+    }
+    lower = lower.cwiseMin(p);
+    upper = upper.cwiseMax(p);
+  }
+  std::copy(positions.begin(), positions.end(), vertices_.begin());
+  for (int t = 0; t < triangleCount(); ++t)
+  {
+    updateTriangleFrame(t);
+  }
+  bounding_box_diagonal_ = (upper - lower).norm();
 }
 
 std::size_t TriangleMesh::memoryBytes() const

@@ -85,7 +85,8 @@ struct GodFingerWorld::Impl
     state.linear_velocity = toEigen(b.rigid->getLinearVelocity());
     state.angular_velocity = toEigen(b.rigid->getAngularVelocity());
     state.net_force = b.net_force;
-    state.asleep = dormant.dormant(body) || b.rigid->getActivationState() == ISLAND_SLEEPING;
+    state.asleep = b.soft ? b.soft->elastic->sleeping()
+                          : dormant.dormant(body) || b.rigid->getActivationState() == ISLAND_SLEEPING;
     state.left_world = b.left_world;
     state.left_world_at = b.left_world_at;
     return state;
@@ -163,6 +164,12 @@ struct GodFingerWorld::Impl
   ProxyTouches touches;
   // The push apart of fingers whose areas overlap (overlap_push.h), one per proxy.
   OverlapPush overlap;
+  // The soft bodies (soft_body.h), by scene index; per proxy, its velocity (m/s) and the force
+  // applied to it (N) before this step's solve: what the solver did to it is the rest of its
+  // change of momentum, the soft bodies feel the opposite.
+  std::vector<int> soft_bodies;
+  std::vector<Eigen::Vector3d> proxy_velocity_before;
+  std::vector<Eigen::Vector3d> proxy_force_before;
   double time = 0.0;
   double deepest_penetration = 0.0;
   long steps = 0;
@@ -214,6 +221,10 @@ struct GodFingerWorld::Impl
     {
       Body& body = bodies[i];
       buildRigidBody(scene.bodies[i], static_cast<int>(i), &body);
+      if (body.soft)
+      {
+        makeSoftVolume(scene.bodies[i], params.time_step, params.gravity, &body);
+      }
       prepareSleep(body.rigid.get());
       world->addRigidBody(body.rigid.get(), kBodyGroup, btBroadphaseProxy::AllFilter);
       body.previous_velocity = Eigen::Vector3d::Zero();
@@ -243,6 +254,16 @@ struct GodFingerWorld::Impl
         awake.push_back(static_cast<int>(i));
       }
     }
+    soft_bodies.clear();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      if (bodies[i].soft)
+      {
+        soft_bodies.push_back(static_cast<int>(i));
+      }
+    }
+    proxy_velocity_before.assign(proxies.size(), Eigen::Vector3d::Zero());
+    proxy_force_before.assign(proxies.size(), Eigen::Vector3d::Zero());
     group_of_tag.assign(bodies.size() + proxies.size(), -1);
     slept_contacts.reset(static_cast<int>(bodies.size()));
     falling_asleep.assign(bodies.size(), 0);
@@ -391,6 +412,16 @@ struct GodFingerWorld::Impl
     buildProxyBody(params.coupling, params.pad, index, static_cast<int>(bodies.size()), &proxy);
     world->addRigidBody(proxy.rigid.get(), kProxyGroup, kBodyGroup);
     proxy.rigid->setGravity(btVector3(0, 0, 0));
+    soft_bodies.clear();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      if (bodies[i].soft)
+      {
+        soft_bodies.push_back(static_cast<int>(i));
+      }
+    }
+    proxy_velocity_before.assign(proxies.size(), Eigen::Vector3d::Zero());
+    proxy_force_before.assign(proxies.size(), Eigen::Vector3d::Zero());
     group_of_tag.assign(bodies.size() + proxies.size(), -1);
     response->configureProxy(params, proxy.rigid.get());
     overlap.resize(static_cast<int>(proxies.size()));
@@ -639,6 +670,14 @@ struct GodFingerWorld::Impl
     }
     resistJoints();
     solver->resetCounts();
+    if (!soft_bodies.empty())
+    {
+      for (std::size_t i = 0; i < proxies.size(); ++i)
+      {
+        proxy_velocity_before[i] = toEigen(proxies[i].rigid->getLinearVelocity());
+        proxy_force_before[i] = toEigen(proxies[i].rigid->getTotalForce());
+      }
+    }
     world->stepSimulation(dt, 0);
     injector->recordImpulses(&proxies, steps);
     pads.recordImpulses(steps);
@@ -650,6 +689,7 @@ struct GodFingerWorld::Impl
       body.net_force =
           scene.bodies[index].mass * (toEigen(body.rigid->getLinearVelocity()) - body.previous_velocity) / dt;
     }
+    stepSoftBodies();
     removeSleepers();
     catchEscapees();
     for (Proxy& proxy : proxies)
@@ -658,6 +698,69 @@ struct GodFingerWorld::Impl
       proxy.state.proxy_velocity = toEigen(proxy.rigid->getLinearVelocity());
     }
     overlap.update(params, &proxies);
+  }
+
+  // After the solve: each finger's contact force loads the soft bodies it touches, and they step.
+  // The force the solver put on proxy i is m dv/dt minus what was applied to it; a finger touching
+  // one body gives it all (reversed), one touching several gives each soft body the part along
+  // that contact's normal that presses into it.
+  void stepSoftBodies()
+  {
+    if (soft_bodies.empty())
+    {
+      return;
+    }
+    const double dt = params.time_step;
+    const bool as_pad = params.model != ContactModel::kGodObject;
+    for (std::size_t i = 0; i < proxies.size(); ++i)
+    {
+      const Proxy& proxy = proxies[i];
+      const InterfaceState& state = proxy.state;
+      const Eigen::Vector3d on_proxy =
+          params.coupling.proxy_mass * (toEigen(proxy.rigid->getLinearVelocity()) - proxy_velocity_before[i]) / dt -
+          proxy_force_before[i];
+      for (int c = 0; c < state.contact_count; ++c)
+      {
+        const WorldContactArea& area = state.contacts[c];
+        SoftVolume* volume = bodies[area.body].soft.get();
+        if (volume == nullptr)
+        {
+          continue;
+        }
+        const double pressing = on_proxy.dot(area.normal);  // > 0: the body pushes the proxy out
+        const Eigen::Vector3d on_body =
+            state.contact_count == 1 ? Eigen::Vector3d(-on_proxy) : Eigen::Vector3d(-std::max(0.0, pressing) * area.normal);
+        if (on_body.allFinite() && !on_body.isZero(0.0))
+        {
+          addSoftContactLoad(area, on_body, as_pad, volume);
+        }
+      }
+    }
+    bool moved = false;
+    for (const int index : soft_bodies)
+    {
+      moved = stepSoftVolume(world.get(), &bodies[index]) || moved;
+    }
+    if (!moved)
+    {
+      return;
+    }
+    // A manifold keeps its points where they were found on a body that does not move, refreshed
+    // by the bodies' transforms only: on a moved surface they would be points of the old one (a
+    // rim that holds the proxy above the dimple). The next detection finds them again.
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m)
+    {
+      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      const btCollisionObject* pair[] = {manifold->getBody0(), manifold->getBody1()};
+      for (const btCollisionObject* object : pair)
+      {
+        if (object->getUserIndex() == kKindBody && bodies[object->getUserIndex2()].soft)
+        {
+          manifold->clearManifold();
+          break;
+        }
+      }
+    }
   }
 
   // The world around `next` (addObject, removeObject): old_of_new[i] is the body of now that
@@ -937,6 +1040,10 @@ void GodFingerWorld::reset()
   impl_->teardownWorld();
   impl_->time = 0.0;
   impl_->steps = 0;
+  for (const int index : impl_->soft_bodies)
+  {
+    resetSoftVolume(nullptr, &impl_->bodies[index]);
+  }
   impl_->buildWorld();
 }
 
@@ -1198,6 +1305,12 @@ void GodFingerWorld::snapshot(WorldSnapshot* out) const
   for (std::size_t i = 0; i < impl_->proxies.size(); ++i)
   {
     out->interfaces[i] = impl_->proxies[i].state;
+  }
+  out->soft_surfaces.resize(impl_->soft_bodies.size());
+  for (std::size_t i = 0; i < impl_->soft_bodies.size(); ++i)
+  {
+    const int index = impl_->soft_bodies[i];
+    snapshotSoftSurface(impl_->bodies[index], index, &out->soft_surfaces[i]);
   }
 }
 

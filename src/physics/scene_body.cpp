@@ -55,6 +55,17 @@ TriangleSoup soupOf(const TriangleMesh& mesh, const Eigen::Isometry3d& place)
 SceneBody makeSceneBody(const BodyDescription& description, double max_edge)
 {
   SceneBody body;
+  if (description.soft)
+  {
+    // A soft body: static, its surface its walk mesh and its own Bullet triangle mesh, both moved
+    // as it deforms (soft_body.h; the world makes its volume).
+    body.soft = std::make_unique<SoftVolume>();
+    body.walk = makeSoftWalkMesh(description, &body.soft->node_of_vertex);
+    body.locator = std::make_unique<SurfaceLocator>(*body.walk);
+    body.collision = makeTriangleMeshShape(*body.walk);
+    body.geometry_in_com = description.collision_origin;
+    return body;
+  }
   const TriangleMesh first = makeWalkMesh(description.geometry, max_edge);
   body.collision = makeCollisionShape(description.geometry, first, description.is_static);
   TriangleSoup pieces = soupOf(first, Eigen::Isometry3d::Identity());  // a compound's surfaces, united

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "collision_shape.h"
+#include "soft_body.h"
 
 #include "god_finger/contact/primitive_walk.h"
 #include "god_finger/geometry/surface_locator.h"
@@ -73,6 +74,8 @@ struct SceneBody
   btVector3 principal_inertia = btVector3(0, 0, 0);
   Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d net_force = Eigen::Vector3d::Zero();
+  // A soft body's volume (soft_body.h; null otherwise, and until the world makes it).
+  std::unique_ptr<SoftVolume> soft;
   int left_world = 0;           // BodyState::left_world (kept across resets)
   double left_world_at = -1.0;  // s, world time
 };

@@ -1,5 +1,6 @@
 #include "markers.h"
 
+#include <algorithm>
 #include <cctype>
 
 #include "god_finger/ros/conversions.h"
@@ -116,6 +117,44 @@ visualization_msgs::Marker geometryMarker(const Geometry& geometry, const Eigen:
   m.color.a = colour.a;
   return m;
 }
+// A soft body's surface as it is now: one triangle list whose vertices darken toward
+// a deep red (0.75, 0.2, 0.25) as they sink, fully at kSoftSinkShown (m) from where they rest
+// untouched.
+constexpr float kSoftSinkShown = 0.005f;
+visualization_msgs::Marker softSurfaceMarker(const SoftSurfaceState& surface, int id, const BodyColour& colour,
+                                             const ros::Time& stamp)
+{
+  visualization_msgs::Marker m = marker("bodies", id, visualization_msgs::Marker::TRIANGLE_LIST, stamp);
+  setPose(&m, Eigen::Isometry3d::Identity());
+  m.scale.x = m.scale.y = m.scale.z = 1.0;
+  m.color.r = colour.r;
+  m.color.g = colour.g;
+  m.color.b = colour.b;
+  m.color.a = colour.a;
+  const std::vector<Eigen::Vector3i>& triangles = *surface.triangles;
+  m.points.reserve(3 * triangles.size());
+  m.colors.reserve(3 * triangles.size());
+  for (const Eigen::Vector3i& triangle : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector3d& p = surface.vertices[triangle[k]];
+      geometry_msgs::Point point;
+      point.x = p.x();
+      point.y = p.y();
+      point.z = p.z();
+      m.points.push_back(point);
+      const float depth = std::min(1.0f, surface.sink[triangle[k]] / kSoftSinkShown);
+      std_msgs::ColorRGBA c;
+      c.r = colour.r + depth * (0.75f - colour.r);
+      c.g = colour.g + depth * (0.2f - colour.g);
+      c.b = colour.b + depth * (0.25f - colour.b);
+      c.a = colour.a;
+      m.colors.push_back(c);
+    }
+  }
+  return m;
+}
 }  // namespace
 
 void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world, const ros::Time& stamp,
@@ -129,6 +168,17 @@ void appendBodyMarkers(const SceneDescription& scene, const WorldSnapshot& world
     const BodyDescription& body = scene.bodies[i];
     const BodyColour colour = bodyColour(body, moving_index);
     moving_index += body.is_static ? 0 : 1;
+    if (body.soft)  // its surface as it is now (without the snapshot's surface: nothing to draw)
+    {
+      for (const SoftSurfaceState& surface : world.soft_surfaces)
+      {
+        if (surface.body == static_cast<int>(i) && surface.triangles)
+        {
+          markers->markers.push_back(softSurfaceMarker(surface, static_cast<int>(i), colour, stamp));
+        }
+      }
+      continue;
+    }
     if (body.visual_mesh)  // the true surface, over collision pieces that may be coarse hulls
     {
       markers->markers.push_back(geometryMarker(body.visual_mesh->geometry,
@@ -175,6 +225,10 @@ bool isSupport(const BodyDescription& body)
 
 BodyColour bodyColour(const BodyDescription& body, int moving_index)
 {
+  if (body.soft)
+  {
+    return {0.93f, 0.72f, 0.62f, 1.0f};  // flesh: a soft body, its dimple red (softSurfaceMarker)
+  }
   if (isSupport(body))
   {
     return {0.55f, 0.45f, 0.35f, 1.0f};  // wood

@@ -16,7 +16,7 @@ namespace
 {
 const char* const kKnownElements[] = {"inertial",       "collision_margin", "friction",  "neohookean",
                                       "corotated",      "visual",           "collision", "repulsion_stiffness",
-                                      "gravity_factor", "cache_barycenter", "spring"};
+                                      "gravity_factor", "cache_barycenter", "spring",           "origin"};
 
 class DeformableParser
 {
@@ -64,6 +64,48 @@ class DeformableParser
     return value;
   }
 
+  // Three finite numbers separated by spaces (URDF's xyz and rpy), default `fallback` when absent.
+  Eigen::Vector3d triple(const std::string& name, const tinyxml2::XMLElement& element, const char* attribute) const
+  {
+    const char* text = element.Attribute(attribute);
+    Eigen::Vector3d value = Eigen::Vector3d::Zero();
+    if (text == nullptr)
+    {
+      return value;
+    }
+    std::string rest = text;
+    for (int i = 0; i < 3; ++i)
+    {
+      const std::size_t begin = rest.find_first_not_of(" \t\n\r");
+      const std::size_t end = begin == std::string::npos ? begin : rest.find_first_of(" \t\n\r", begin);
+      if (begin == std::string::npos || !parseDouble(rest.substr(begin, end - begin), &value[i]) ||
+          !std::isfinite(value[i]))
+      {
+        fail(name, element, std::string("<origin ") + attribute + "> '" + text + "' is not three finite numbers");
+      }
+      rest = end == std::string::npos ? "" : rest.substr(end);
+    }
+    if (rest.find_first_not_of(" \t\n\r") != std::string::npos)
+    {
+      fail(name, element, std::string("<origin ") + attribute + "> '" + text + "' is not three finite numbers");
+    }
+    return value;
+  }
+
+  // <origin xyz rpy>: where the body's frame (its volume file's) goes in the file's frame.
+  Eigen::Isometry3d origin(const std::string& name, const tinyxml2::XMLElement& element) const
+  {
+    const Eigen::Vector3d xyz = triple(name, element, "xyz");
+    const Eigen::Vector3d rpy = triple(name, element, "rpy");
+    Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+    pose.translation() = xyz;
+    pose.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                     Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                        .toRotationMatrix();
+    return pose;
+  }
+
   DeformableDescription deformable(const tinyxml2::XMLElement& element) const
   {
     DeformableDescription body;
@@ -91,7 +133,7 @@ class DeformableParser
         fail(body.name, *child,
              "unknown element <" + tag +
                  "> (a deformable has inertial, neohookean or corotated, collision, visual, friction, "
-                 "collision_margin)");
+                 "collision_margin, origin)");
       }
       if (tag == "inertial")
       {
@@ -129,6 +171,10 @@ class DeformableParser
       else if (tag == "spring")
       {
         has_spring = true;
+      }
+      else if (tag == "origin")
+      {
+        body.origin = origin(body.name, *child);
       }
     }
     if (material == nullptr)

@@ -255,6 +255,12 @@ void placeObject(const SceneDescription& object, const ObjectPlacement& placemen
     }
     if (placement.fixed && !jointed[part])  // fixed: the object's base; its jointed links still move
     {
+      if (!*placement.fixed && body.soft)
+      {
+        throw InputError("body '" + body.name +
+                         "' is a soft body: it is glued by its lowest nodes to what it rests on, and cannot be made "
+                         "free (fixed: false)");
+      }
       if (!*placement.fixed && body.is_static && !(body.mass > 0.0))
       {
         throw InputError("body '" + body.name +

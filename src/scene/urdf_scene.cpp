@@ -353,15 +353,21 @@ class SceneParser
   SceneDescription parse(const std::string& xml) const
   {
     checkNumbers(xml);
+    // Soft bodies (<deformable>, PyBullet's form): static mesh bodies of the rigid world whose
+    // surface deforms (BodyDescription::soft). A file of deformables only (PyBullet's object
+    // files) has no link for urdfdom to read.
+    std::vector<DeformableDescription> deformables;
     if (hasDeformables(xml))
     {
-      // Read it (its own errors first), then say what holds it today.
-      const std::vector<DeformableDescription> soft = parseDeformables(xml, base_directory_, source_, packages_);
-      if (!soft.empty())
-      {
-        fail("", "deformable '" + soft.front().name +
-                     "' loads (god_finger_soft presses it), but the physics world holds no soft bodies yet");
-      }
+      deformables = parseDeformables(xml, base_directory_, source_, packages_);
+    }
+    if (!deformables.empty() && !hasLinks(xml))
+    {
+      SceneDescription scene;
+      scene.name = robotName(xml);
+      appendSoftBodies(deformables, &scene);
+      scene.warnings = warnings_;
+      return scene;
     }
     const urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(xml);
     if (!model)
@@ -480,6 +486,7 @@ class SceneParser
       }
       scene.joints.push_back(description);
     }
+    appendSoftBodies(deformables, &scene);
     if (scene.bodies.empty())
     {
       fail("",
@@ -493,6 +500,40 @@ class SceneParser
     }
     scene.warnings = warnings_;
     return scene;
+  }
+
+  static bool hasLinks(const std::string& xml)
+  {
+    tinyxml2::XMLDocument document;
+    const tinyxml2::XMLElement* robot =
+        document.Parse(xml.c_str(), xml.size()) == tinyxml2::XML_SUCCESS ? document.FirstChildElement("robot") : nullptr;
+    return robot != nullptr && robot->FirstChildElement("link") != nullptr;
+  }
+
+  static std::string robotName(const std::string& xml)
+  {
+    tinyxml2::XMLDocument document;
+    const tinyxml2::XMLElement* robot =
+        document.Parse(xml.c_str(), xml.size()) == tinyxml2::XML_SUCCESS ? document.FirstChildElement("robot") : nullptr;
+    const char* name = robot != nullptr ? robot->Attribute("name") : nullptr;
+    return name != nullptr ? name : "";
+  }
+
+  // Each deformable as a static body at its <origin>, its volume named by its mesh geometry.
+  static void appendSoftBodies(const std::vector<DeformableDescription>& deformables, SceneDescription* scene)
+  {
+    for (const DeformableDescription& deformable : deformables)
+    {
+      BodyDescription body;
+      body.name = deformable.name;
+      body.geometry.kind = GeometryKind::kMesh;
+      body.geometry.mesh_path = deformable.volume_file;
+      body.pose = deformable.origin;
+      body.is_static = true;
+      body.material.friction = deformable.friction;
+      body.soft = std::make_shared<const DeformableDescription>(deformable);
+      scene->bodies.push_back(body);
+    }
   }
 
   // A link on a fixed joint to `body`'s link (`in_body`: its frame in the body's link frame)

@@ -225,6 +225,15 @@ void ElasticBody::reset()
   sleeping_ = false;
 }
 
+void ElasticBody::restAt(const Eigen::VectorXd& displacement)
+{
+  reset();
+  for (const int dof : free_dofs_)
+  {
+    displacement_(dof) = displacement(dof);
+  }
+}
+
 Eigen::VectorXd ElasticBody::staticDisplacement(const Eigen::VectorXd& external_forces)
 {
   if (!static_factor_)

@@ -18,6 +18,7 @@
 #include "god_finger/scene/deformable_object.h"
 #include "god_finger/soft/block_mesh.h"
 #include "god_finger/soft/elastic_body.h"
+#include "god_finger/soft/soft_surface.h"
 #include "god_finger/soft/surface_load.h"
 #include "god_finger/soft/vtk_tet_reader.h"
 #include "god_finger/support/input_error.h"
@@ -159,9 +160,8 @@ void press(const god_finger::DeformableDescription& body, const Options& options
     lower = lower.cwiseMin(node);
     upper = upper.cwiseMax(node);
   }
-  // Glued where it rests: the nodes within 2 % of its height of its lowest point (at least 0.1 mm).
-  const std::vector<int> glued =
-      god_finger::nodesAtHeight(body.mesh, lower.z(), std::max(1e-4, 0.02 * (upper.z() - lower.z())));
+  // Glued where it rests, as the physics world glues it (soft/soft_surface.h).
+  const std::vector<int> glued = god_finger::nodesGluedToSupport(body.mesh, Eigen::Isometry3d::Identity());
   god_finger::ElasticBody soft(body.mesh, body.material, glued, 1e-3, Eigen::Vector3d::Zero());
   const Eigen::Vector3d top(0.5 * (lower.x() + upper.x()), 0.5 * (lower.y() + upper.y()), upper.z());
   Eigen::VectorXd forces = Eigen::VectorXd::Zero(3 * soft.nodeCount());

@@ -1,6 +1,6 @@
 // PyBullet-style <deformable> URDFs (deformable_object.h): the shipped soft block and a
 // PyBullet-like torus load with their material; every bad file gets its one-line error; the
-// rigid scene loader says where a soft body goes today.
+// scene loaders (URDF scene, object file, scene list) make each a static soft body.
 #include "god_finger/scene/deformable_object.h"
 #include "god_finger/scene/scene_file.h"
 #include "god_finger/support/input_error.h"
@@ -107,7 +107,13 @@ TEST_F(DeformableTest, EachBadFileGetsItsOneLineError)
   const std::map<std::string, std::string> cases = {
       {mass + "<neohooken mu=\"1000\" lambda=\"4000\"/>\n" + volume,
        "deformable 'd' (line 4): unknown element <neohooken> (a deformable has inertial, neohookean or corotated, "
-       "collision, visual, friction, collision_margin)"},
+       "collision, visual, friction, collision_margin, origin)"},
+      {mass + material + volume + "<origin xyz=\"0 0\"/>\n",
+       "deformable 'd' (line 6): <origin xyz> '0 0' is not three finite numbers"},
+      {mass + material + volume + "<origin xyz=\"0 0 0\" rpy=\"0 inf 0\"/>\n",
+       "deformable 'd' (line 6): <origin rpy> '0 inf 0' is not three finite numbers"},
+      {mass + material + volume + "<origin xyz=\"0 0 0 1\"/>\n",
+       "deformable 'd' (line 6): <origin xyz> '0 0 0 1' is not three finite numbers"},
       {mass + "<spring elastic_stiffness=\"1\"/>\n" + volume,
        "deformable 'd' (line 2): mass-spring deformables (<spring> alone) are not modelled: give <neohookean mu "
        "lambda> or <corotated mu lambda>"},
@@ -138,20 +144,54 @@ TEST_F(DeformableTest, EachBadFileGetsItsOneLineError)
             "soft body file '" + folder_ + "/missing.vtk' does not exist or is not a regular file");
 }
 
-TEST_F(DeformableTest, TheRigidSceneLoaderSaysWhereASoftBodyGoesToday)
+TEST_F(DeformableTest, ScenesHoldSoftBodiesWhereTheirOriginAndPlacementPutThem)
 {
+  // PyBullet's object file alone: one static body, its volume named, its friction kept.
+  const SceneDescription object = loadScene(kObjects + "/soft_block.urdf");
+  ASSERT_EQ(object.bodies.size(), 1u);
+  const BodyDescription& block = object.bodies.front();
+  EXPECT_EQ(block.name, "soft_block");
+  ASSERT_TRUE(block.soft);
+  EXPECT_TRUE(block.is_static);
+  EXPECT_EQ(block.geometry.kind, GeometryKind::kMesh);
+  EXPECT_EQ(block.geometry.mesh_path, kObjects + "/soft_block.vtk");
+  EXPECT_EQ(block.material.friction, 0.8);
+  EXPECT_TRUE(block.pose.isApprox(Eigen::Isometry3d::Identity(), 0.0));
+  // A scene URDF: a table link and a deformable at its <origin>.
+  const std::string scene_path = write(
+      "scene.urdf",
+      "<robot name=\"s\"><link name=\"world\"/>\n"
+      "<link name=\"table\"><collision><geometry><box size=\"1 1 0.04\"/></geometry></collision></link>\n"
+      "<joint name=\"j\" type=\"fixed\"><parent link=\"world\"/><child link=\"table\"/>"
+      "<origin xyz=\"0 0 -0.02\"/></joint>\n"
+      "<deformable name=\"pad\"><inertial><mass value=\"0.1\"/></inertial>"
+      "<neohookean mu=\"1000\" lambda=\"4000\"/><collision filename=\"tet.vtk\"/>"
+      "<origin xyz=\"0.1 0.2 0\" rpy=\"0 0 1.5707963267948966\"/></deformable>\n</robot>\n");
+  const SceneDescription scene = loadScene(scene_path);
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  EXPECT_EQ(scene.bodies[0].name, "table");
+  EXPECT_FALSE(scene.bodies[0].soft);
+  EXPECT_EQ(scene.bodies[1].name, "pad");
+  ASSERT_TRUE(scene.bodies[1].soft);
+  EXPECT_TRUE(scene.bodies[1].pose.translation().isApprox(Eigen::Vector3d(0.1, 0.2, 0.0), 1e-15));
+  EXPECT_NEAR((scene.bodies[1].pose * Eigen::Vector3d::UnitX()).y(), 0.2 + 1.0, 1e-12);
+  // A scene list places it; it cannot be made free.
+  const std::string list = write("list.yaml", "objects:\n  - file: " + kObjects + "/soft_block.urdf\n    xyz: [0.0, 0.0, 0.0]\n");
+  const SceneDescription listed = loadScene(list);
+  ASSERT_EQ(listed.bodies.size(), 2u);  // the table, the block
+  EXPECT_TRUE(listed.bodies[1].soft);
+  const std::string freed = write("free.yaml", "objects:\n  - file: " + kObjects + "/soft_block.urdf\n    fixed: false\n");
   try
   {
-    loadScene(kObjects + "/soft_block.urdf");
+    loadScene(freed);
     FAIL() << "no error";
   }
   catch (const InputError& error)
   {
-    EXPECT_EQ(
-        std::string(error.what()),
-        "URDF '" + kObjects +
-            "/soft_block.urdf': deformable 'soft_block' loads (god_finger_soft presses it), but the physics world "
-            "holds no soft bodies yet");
+    EXPECT_NE(std::string(error.what()).find("body 'soft_block' is a soft body: it is glued by its lowest nodes to what it "
+                                             "rests on, and cannot be made free (fixed: false)"),
+              std::string::npos)
+        << error.what();
   }
 }
 }  // namespace

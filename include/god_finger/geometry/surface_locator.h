@@ -5,7 +5,7 @@
 // this query runs inside the 1 kHz loop; this one uses a fixed stack and never allocates
 // after construction. Bullet's trees are not available to `core` (Eigen only).
 //
-// Invariants: built once from a mesh that must outlive the locator; leaves hold at most
+// Invariants: built once from a mesh that must outlive the locator (refit() after it deforms); leaves hold at most
 // kLeafSize triangles; node boxes enclose their triangles exactly (double precision).
 #pragma once
 
@@ -26,6 +26,11 @@ class SurfaceLocator
   // Closest point of the whole mesh to `query`. Ties go to the lowest triangle index met
   // first. Never allocates.
   SurfaceLocation closest(const Eigen::Vector3d& query, double feature_tolerance = kDefaultFeatureTolerance) const;
+
+  // The boxes again after the mesh's vertices moved (TriangleMesh::moveVertices: same
+  // triangles): O(n), the tree's shape kept (a deformed soft body's surface, each step). A tree
+  // refitted after large motion stays correct, only slower to search. Never allocates.
+  void refit();
 
   const TriangleMesh& mesh() const
   {

@@ -63,6 +63,13 @@ class TriangleMesh
   // range, or when no triangle is left.
   static TriangleMesh build(const TriangleSoup& soup, const MeshBuildOptions& options = MeshBuildOptions());
 
+  // Moves every vertex to `positions` (same count and order: a deformed soft body's surface),
+  // the triangles and neighbours kept; normals, barycentric gradients and the bounding box
+  // follow. A triangle squashed to no area keeps its last normal and gradients (the walk stays
+  // finite). Real-time safe: allocates nothing. InputError on a count that is not
+  // vertexCount() or a non-finite position (the mesh unchanged).
+  void moveVertices(const std::vector<Eigen::Vector3d>& positions);
+
   const std::vector<Eigen::Vector3d>& vertices() const
   {
     return vertices_;
@@ -134,6 +141,9 @@ class TriangleMesh
   // build()'s last stage: normals, barycentric gradients and the vertex -> faces table, from
   // vertices_ and triangles_.
   void buildTables();
+  // Triangle t's normal and barycentric gradients from vertices_; false (nothing changed) for a
+  // triangle of no area.
+  bool updateTriangleFrame(int t);
   std::vector<Eigen::Vector3d> vertices_;
   std::vector<Eigen::Vector3i> triangles_;
   std::vector<Eigen::Vector3d> normals_;

@@ -64,7 +64,7 @@ struct BodyState
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world
   Eigen::Vector3d net_force =
       Eigen::Vector3d::Zero();  // N on the centre of mass, m dv/dt over the last step (gravity included)
-  bool asleep = false;          // sleeping (WorldParams::sleep): not simulated until woken
+  bool asleep = false;          // sleeping (WorldParams::sleep; a soft body: its volume at rest, soft/elastic_body.h)
   // Times it left the world's bounds (WorldParams::world_margin) and was put back at its initial
   // pose, at rest, since the world was made (a reset does not clear them); the world time (s)
   // of the last, -1 if never.
@@ -83,6 +83,16 @@ struct JointState
   double velocity = 0.0;
 };
 
+// A soft body's surface as it is now (BodyDescription::soft: its walk mesh, deformed), for
+// markers and recordings.
+struct SoftSurfaceState
+{
+  int body = -1;                                                  // scene body index
+  std::shared_ptr<const std::vector<Eigen::Vector3i>> triangles;  // into vertices, outward; never changes
+  std::vector<Eigen::Vector3d> vertices;                          // m, world
+  std::vector<float> sink;  // m, by vertex: how far it is from where it rests untouched
+};
+
 struct WorldSnapshot
 {
   // The scene these bodies are (their names, shapes, joints), by body index: the world's scene
@@ -94,6 +104,7 @@ struct WorldSnapshot
   ContactModel model = ContactModel::kGodFinger;
   std::vector<BodyState> bodies;           // by scene body index
   std::vector<InterfaceState> interfaces;  // by interface index
+  std::vector<SoftSurfaceState> soft_surfaces;  // one per soft body, in scene order
 };
 
 }  // namespace god_finger

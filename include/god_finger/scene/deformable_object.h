@@ -12,6 +12,7 @@
 // coefficient (s), the density as the mass over the mesh's volume. <spring> (mass-spring
 // cloth) is not modelled: a body that has only a spring is refused. <repulsion_stiffness>,
 // <gravity_factor> and <cache_barycenter> tune Bullet's solver and are accepted and ignored.
+// <origin xyz rpy> places the body (ours: where PyBullet's loadSoftBody takes a base pose).
 // Any other element in <deformable> is refused (a misspelt <neohooken> would otherwise lose its
 // material silently).
 //
@@ -40,6 +41,9 @@ struct DeformableDescription
   double mass = 0.0;        // kg
   double friction = ContactMaterial().friction;
   double collision_margin = 0.0;  // m
+  // <origin xyz rpy> (this package's own, PyBullet places a body when it loads it): the body's
+  // frame in the file's (a scene URDF's world, an object file's frame); identity when absent.
+  Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();
 };
 
 // Whether the URDF text holds a <deformable> element.

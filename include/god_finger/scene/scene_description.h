@@ -5,12 +5,15 @@
 #pragma once
 
 #include <Eigen/Geometry>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace god_finger
 {
+struct DeformableDescription;  // scene/deformable_object.h
+
 enum class GeometryKind
 {
   kBox,       // size = full extents (m)
@@ -65,6 +68,11 @@ struct BodyDescription
   // scanned or modelled surface over coarse collision hulls): the pad walks on it and rviz shows
   // it; the <collision>s are for collision only.
   std::optional<BodyPart> visual_mesh;
+  // A soft body (a URDF <deformable>, issue 28): its volume, material and mass. It is static in
+  // the rigid world and glued to what it rests on by its lowest nodes; its surface deforms under
+  // the fingers (physics/soft_body.h). geometry is then kMesh naming its .vtk volume, for names
+  // only. Shared and never changed: scenes are copied freely.
+  std::shared_ptr<const DeformableDescription> soft;
 };
 
 // A joint between two bodies of an articulated object (URDF's revolute, continuous and

@@ -72,6 +72,10 @@ class ElasticBody
   void step(const Eigen::VectorXd& external_forces);
   // Back to rest: u = v = 0, awake.
   void reset();
+  // At displacement u, velocity 0, awake, as if its last forces were zero (a body settled under
+  // gravity by staticDisplacement, the start a world resets it to). `u` has 3 per node; fixed
+  // degrees of freedom keep 0. RT-safe (copies).
+  void restAt(const Eigen::VectorXd& displacement);
   bool sleeping() const
   {
     return sleeping_;

@@ -1,0 +1,152 @@
+#include "soft_body.h"
+
+#include "bullet_helpers.h"
+#include "scene_body.h"
+
+#include "god_finger/scene/deformable_object.h"
+#include "god_finger/soft/soft_surface.h"
+#include "god_finger/soft/surface_load.h"
+#include "god_finger/support/input_error.h"
+
+#include <btBulletCollisionCommon.h>
+
+namespace god_finger::internal
+{
+namespace
+{
+// The Bullet tree's quantisation box reaches this far beyond the surface (m), so a refit after a
+// small motion keeps its precision.
+constexpr double kTreeBoxReach = 0.005;
+
+// The surface at the volume's nodes now: walk mesh, locator, Bullet's mesh and box.
+void moveSurface(btCollisionWorld* world, SceneBody* body)
+{
+  SoftVolume& volume = *body->soft;
+  volume.elastic->positions(&volume.nodes);
+  for (std::size_t v = 0; v < volume.vertices.size(); ++v)
+  {
+    volume.vertices[v] = volume.nodes[volume.node_of_vertex[v]];
+  }
+  body->walk->moveVertices(volume.vertices);
+  body->locator->refit();
+  btScalar* coordinates = body->collision->vertices.data();
+  Eigen::Vector3d lower = volume.vertices.front();
+  Eigen::Vector3d upper = lower;
+  for (std::size_t v = 0; v < volume.vertices.size(); ++v)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      coordinates[3 * v + k] = volume.vertices[v][k];
+    }
+    lower = lower.cwiseMin(volume.vertices[v]);
+    upper = upper.cwiseMax(volume.vertices[v]);
+  }
+  auto* mesh = static_cast<btBvhTriangleMeshShape*>(body->collision->shape);
+  mesh->refitTree(toBullet(lower) - btVector3(kTreeBoxReach, kTreeBoxReach, kTreeBoxReach),
+                  toBullet(upper) + btVector3(kTreeBoxReach, kTreeBoxReach, kTreeBoxReach));
+  if (body->placed)
+  {
+    body->placed->updateChildTransform(0, body->placed->getChildTransform(0), true);
+  }
+  if (world != nullptr && body->rigid)
+  {
+    world->updateSingleAabb(body->rigid.get());
+  }
+}
+}  // namespace
+
+std::unique_ptr<TriangleMesh> makeSoftWalkMesh(const BodyDescription& description, std::vector<int>* node_of_vertex)
+{
+  SoftSurfaceMesh surface = makeSoftSurfaceMesh(description.soft->mesh, description.soft->volume_file);
+  *node_of_vertex = std::move(surface.node_of_vertex);
+  return std::make_unique<TriangleMesh>(std::move(surface.mesh));
+}
+
+void makeSoftVolume(const BodyDescription& description, double time_step, const Eigen::Vector3d& gravity,
+                    SceneBody* body)
+{
+  SoftVolume& volume = *body->soft;
+  if (volume.elastic && volume.elastic->timeStep() == time_step)
+  {
+    return;  // made already (a scene change rebuilds the world around it)
+  }
+  const DeformableDescription& soft = *description.soft;
+  volume.body_in_world = description.pose * description.collision_origin;
+  const Eigen::Vector3d gravity_in_body = volume.body_in_world.linear().transpose() * gravity;
+  try
+  {
+    volume.elastic =
+        std::make_unique<ElasticBody>(soft.mesh, soft.material, nodesGluedToSupport(soft.mesh, volume.body_in_world),
+                                      time_step, gravity_in_body);
+    volume.settled = volume.elastic->staticDisplacement(Eigen::VectorXd::Zero(3 * volume.elastic->nodeCount()));
+  }
+  catch (const InputError& error)
+  {
+    throw InputError("soft body '" + description.name + "': " + error.what());
+  }
+  volume.elastic->restAt(volume.settled);
+  volume.loads = Eigen::VectorXd::Zero(3 * volume.elastic->nodeCount());
+  volume.nodes.resize(volume.elastic->nodeCount());
+  volume.vertices.resize(volume.node_of_vertex.size());
+  auto triangles = std::make_shared<std::vector<Eigen::Vector3i>>(body->walk->triangles());
+  volume.triangles = std::move(triangles);
+  moveSurface(nullptr, body);
+}
+
+void addSoftContactLoad(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, bool as_pad,
+                        SoftVolume* volume)
+{
+  const Eigen::Isometry3d to_body = volume->body_in_world.inverse();
+  const Eigen::Vector3d force = to_body.linear() * force_on_body;
+  const Eigen::Vector3d point = to_body * area.point;
+  if (as_pad && area.radius > 0.0)
+  {
+    PadDisk pad;
+    pad.centre = point;
+    pad.normal = to_body.linear() * area.normal;
+    pad.radius = area.radius;
+    if (addPadPressure(volume->nodes, volume->elastic->surface(), pad, force, &volume->loads) > 0.0)
+    {
+      return;
+    }
+  }
+  addPointForce(volume->nodes, volume->elastic->surface(), point, force, &volume->loads);
+}
+
+bool stepSoftVolume(btCollisionWorld* world, SceneBody* body)
+{
+  SoftVolume& volume = *body->soft;
+  const long solved = volume.elastic->solvedSteps();
+  volume.elastic->step(volume.loads);
+  volume.loads.setZero();
+  if (volume.elastic->solvedSteps() == solved)
+  {
+    return false;  // asleep under the same (no) loads: nothing moved
+  }
+  moveSurface(world, body);
+  return true;
+}
+
+void resetSoftVolume(btCollisionWorld* world, SceneBody* body)
+{
+  body->soft->elastic->restAt(body->soft->settled);
+  body->soft->loads.setZero();
+  moveSurface(world, body);
+}
+
+void snapshotSoftSurface(const SceneBody& body, int index, SoftSurfaceState* out)
+{
+  const SoftVolume& volume = *body.soft;
+  out->body = index;
+  out->triangles = volume.triangles;
+  out->vertices.resize(volume.vertices.size());
+  out->sink.resize(volume.vertices.size());
+  const Eigen::VectorXd& displacement = volume.elastic->displacement();
+  for (std::size_t v = 0; v < volume.vertices.size(); ++v)
+  {
+    out->vertices[v] = volume.body_in_world * volume.vertices[v];
+    const int node = volume.node_of_vertex[v];
+    out->sink[v] = static_cast<float>((displacement.segment<3>(3 * node) - volume.settled.segment<3>(3 * node)).norm());
+  }
+}
+}  // namespace god_finger::internal

@@ -1,0 +1,73 @@
+// A soft body in the rigid world (BodyDescription::soft, issue 28): a static Bullet body whose
+// triangle mesh is the elastic volume's surface, moved after every elastic step. Internal to
+// physics.
+//
+// Each world step: the fingers' contact forces on it (the reaction of what the solver did to each
+// proxy) load its surface: god_finger and soft_finger as a uniform pressure over the pad's disk
+// (soft/surface_load.h addPadPressure), god_object as a point force; the volume steps
+// (soft/elastic_body.h, implicit Euler at the world's time step, glued by its lowest nodes:
+// soft/soft_surface.h); the walk mesh, its locator and the Bullet mesh follow the surface, so the
+// next step's proxies collide with and walk on the deformed surface.
+//
+// Frames: the body is static, its geometry frame is its link frame at BodyDescription::pose; the
+// volume's nodes, the walk mesh and the Bullet mesh are in that frame. Units SI.
+// Invariants: the walk mesh's vertex v is the volume's node node_of_vertex[v], displaced; the
+// start (and a reset) is the volume at rest under gravity (staticDisplacement), so a scene
+// starts still and its soft bodies sleep until touched. A body asleep moves nothing.
+// Real-time safety: makeSoftVolume is not (factorises); the rest allocates nothing.
+#pragma once
+
+#include "god_finger/physics/world_state.h"
+#include "god_finger/scene/scene_description.h"
+#include "god_finger/soft/elastic_body.h"
+
+#include <Eigen/Geometry>
+#include <array>
+#include <memory>
+#include <vector>
+
+class btCollisionObject;
+class btCollisionWorld;
+
+namespace god_finger::internal
+{
+struct SceneBody;
+
+struct SoftVolume
+{
+  std::unique_ptr<ElasticBody> elastic;
+  std::vector<int> node_of_vertex;  // by walk-mesh vertex: the volume's node
+  Eigen::VectorXd settled;          // m, 3 per node: at rest under gravity, the start
+  Eigen::VectorXd loads;            // N, 3 per node, body frame: this step's finger loads
+  std::vector<Eigen::Vector3d> nodes;     // m, body frame: where the nodes are now
+  std::vector<Eigen::Vector3d> vertices;  // m, body frame: the walk mesh's, now
+  Eigen::Isometry3d body_in_world = Eigen::Isometry3d::Identity();
+  // The surface's triangles in walk-mesh vertices, for observers (WorldSnapshot::soft_surfaces).
+  std::shared_ptr<const std::vector<Eigen::Vector3i>> triangles;
+};
+
+// The walk mesh of a soft body (its volume's surface at rest, body frame) and the map of its
+// vertices to the volume's nodes.
+std::unique_ptr<TriangleMesh> makeSoftWalkMesh(const BodyDescription& description, std::vector<int>* node_of_vertex);
+
+// The volume of `body` (made by makeSceneBody from `description`), glued where it rests, settled
+// under `gravity` (m/s^2, world), stepping at `time_step` (s); its surface moved to the settled
+// shape. InputError naming the body when its glued nodes do not hold it.
+void makeSoftVolume(const BodyDescription& description, double time_step, const Eigen::Vector3d& gravity,
+                    SceneBody* body);
+
+// A finger's contact force on the body (N, world) at `area`: spread as a pressure over its pad
+// (as_pad), or at its point.
+void addSoftContactLoad(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, bool as_pad,
+                        SoftVolume* volume);
+
+// One elastic step under the loads added since the last (then cleared); the surface follows
+// (walk mesh, locator, Bullet mesh and its box in `world`). Returns whether it moved.
+bool stepSoftVolume(btCollisionWorld* world, SceneBody* body);
+
+// Back to the settled start, the surface with it.
+void resetSoftVolume(btCollisionWorld* world, SceneBody* body);
+
+// The surface now, in world, into `out` (allocates only when out's vectors are smaller).
+void snapshotSoftSurface(const SceneBody& body, int index, SoftSurfaceState* out);
+}  // namespace god_finger::internal

@@ -1,0 +1,215 @@
+// A soft block on a table in the physics world (physics/soft_body.h): it starts settled under
+// gravity and sleeps; a finger pressing it makes a dimple the proxy rides on (on the deformed
+// surface, not sunk into the rest one); the dimple under the pad is the static elastic solution
+// of the pad's pressure (checked against an ElasticBody of its own); a point contact (god_object)
+// digs deeper than the pad under the same coupling; released, the block springs back and sleeps;
+// a reset brings the settled surface back bit for bit.
+#include "god_finger/geometry/surface_locator.h"
+#include "god_finger/physics/god_finger_world.h"
+#include "god_finger/scene/deformable_object.h"
+#include "god_finger/scene/scene_file.h"
+#include "god_finger/soft/block_mesh.h"
+#include "god_finger/soft/elastic_body.h"
+#include "god_finger/soft/soft_surface.h"
+#include "god_finger/soft/surface_load.h"
+#include "god_finger/soft/vtk_tet_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace god_finger
+{
+namespace
+{
+constexpr double kSide = 0.06;  // m: the block's side, resting on the table at z = 0
+
+class SoftBodyWorld : public ::testing::Test
+{
+ protected:
+  SoftBodyWorld()
+  {
+    std::string pattern = (std::filesystem::temp_directory_path() / "god_finger_soft_world_XXXXXX").string();
+    folder_ = mkdtemp(pattern.data());
+    BlockMeshSpec spec;
+    spec.size = Eigen::Vector3d::Constant(kSide);
+    spec.cells = {6, 6, 6};
+    spec.grading = 1.5;
+    std::ofstream(folder_ + "/block.vtk") << vtkTetMeshText(blockTetMesh(spec), "soft world test block");
+    // E 20 kPa, nu 0.4 (mu, lambda its Lame parameters), 0.2 kg.
+    std::ofstream(folder_ + "/scene.urdf")
+        << "<robot name=\"soft\"><link name=\"world\"/>\n"
+           "<link name=\"table\"><collision><geometry><box size=\"1 1 0.04\"/></geometry></collision></link>\n"
+           "<joint name=\"j\" type=\"fixed\"><parent link=\"world\"/><child link=\"table\"/>"
+           "<origin xyz=\"0 0 -0.02\"/></joint>\n"
+           "<deformable name=\"block\"><inertial><mass value=\"0.2\"/></inertial><friction value=\"0.8\"/>"
+           "<neohookean mu=\"7142.857142857143\" lambda=\"28571.428571428572\" damping=\"0.01\"/>"
+           "<collision filename=\"block.vtk\"/></deformable>\n</robot>\n";
+    scene_ = loadScene(folder_ + "/scene.urdf");
+  }
+  ~SoftBodyWorld() override
+  {
+    std::filesystem::remove_all(folder_);
+  }
+
+  // The soft body's surface now (world), from a snapshot.
+  static SoftSurfaceState surface(const GodFingerWorld& world)
+  {
+    WorldSnapshot snapshot;
+    world.snapshot(&snapshot);
+    EXPECT_EQ(snapshot.soft_surfaces.size(), 1u);
+    return snapshot.soft_surfaces.front();
+  }
+  static double deepestSink(const SoftSurfaceState& state)
+  {
+    double deepest = 0.0;
+    for (const float sink : state.sink)
+    {
+      deepest = std::max(deepest, double(sink));
+    }
+    return deepest;
+  }
+  // The surface's height (m) right under (x, y): the highest vertex within 2 mm of that line.
+  static double topAt(const SoftSurfaceState& state, double x, double y)
+  {
+    double top = -1.0;
+    for (const Eigen::Vector3d& v : state.vertices)
+    {
+      if (std::hypot(v.x() - x, v.y() - y) < 2e-3)
+      {
+        top = std::max(top, v.z());
+      }
+    }
+    return top;
+  }
+
+  std::string folder_;
+  SceneDescription scene_;
+};
+
+TEST_F(SoftBodyWorld, StartsSettledAndSleeps)
+{
+  GodFingerWorld world(scene_, WorldParams());
+  ASSERT_EQ(world.bodyCount(), 2);
+  EXPECT_EQ(world.walkMesh(1).vertexCount(), static_cast<int>(surface(world).vertices.size()));
+  // Settled under its weight (the top sank a little from the file's 6 cm), so nothing moves.
+  const double settled_top = topAt(surface(world), 0.0, 0.0);
+  EXPECT_LT(settled_top, kSide);
+  EXPECT_GT(settled_top, kSide - 1e-3);
+  for (int i = 0; i < 150; ++i)
+  {
+    world.step();
+  }
+  EXPECT_TRUE(world.bodyState(1).asleep);
+  EXPECT_LT(deepestSink(surface(world)), 1e-9);
+}
+
+// Presses the top centre with the coupling's target `depth` below the settled top; returns the
+// world after `steps` steps.
+std::unique_ptr<GodFingerWorld> press(const SceneDescription& scene, ContactModel model, double depth, int steps)
+{
+  WorldParams params;
+  params.model = model;
+  auto world = std::make_unique<GodFingerWorld>(scene, params);
+  const int finger = world->addInterface(Eigen::Vector3d(0.0, 0.0, kSide + 0.01));
+  world->setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, kSide - depth));
+  for (int i = 0; i < steps; ++i)
+  {
+    world->step();
+  }
+  return world;
+}
+
+TEST_F(SoftBodyWorld, APadPressMakesADimpleTheProxyRidesOnWithTheStaticSolutionsDepth)
+{
+  const std::unique_ptr<GodFingerWorld> world = press(scene_, ContactModel::kGodFinger, 0.012, 3000);
+  const InterfaceState& finger = world->interfaceState(0);
+  ASSERT_EQ(finger.contact_count, 1);
+  EXPECT_EQ(finger.contacts[0].body, 1);
+  const double force = finger.user_force.norm();
+  const double radius = finger.contacts[0].radius;
+  const SoftSurfaceState dimple = surface(*world);
+  const double sink = deepestSink(dimple);
+  const double top = topAt(dimple, 0.0, 0.0);
+  const double proxy_radius = world->params().coupling.proxy_radius;
+  std::printf("pad press: %.3f N on the hand, area radius %.2f mm, dimple %.3f mm, surface's top centre %.3f mm\n",
+              force, 1e3 * radius, 1e3 * sink, 1e3 * top);
+  // The hand feels the block: the coupling stretched, at rest.
+  EXPECT_GT(force, 1.0);
+  EXPECT_LT(finger.proxy_velocity.norm(), 1e-3);
+  EXPECT_NEAR(force, world->params().coupling.stiffness * (finger.proxy_position - finger.interface_position).norm(),
+              1e-6 * force + 1e-3);
+  // A dimple of millimetres, and the proxy on it: its sphere touches the deformed surface (within
+  // the contact's 0.3 mm), far below where the settled top was.
+  EXPECT_GT(sink, 1e-3);
+  const SurfaceLocator deformed(world->walkMesh(1));  // the body's frame is the world's here
+  const double gap = deformed.closest(finger.proxy_position).distance - proxy_radius;
+  std::printf("proxy sphere %.3f mm from the deformed surface\n", 1e3 * gap);
+  EXPECT_NEAR(gap, 0.0, 3e-4);
+  EXPECT_LT(finger.proxy_position.z() - proxy_radius, kSide - 1e-3);
+  // The static solution of the same pad pressure on the same block, glued the same way: the
+  // dimple's centre within 10 % (the world loads the deformed surface, the static solve the rest one).
+  const DeformableDescription& soft = *scene_.bodies[1].soft;
+  ElasticBody alone(soft.mesh, soft.material, nodesGluedToSupport(soft.mesh, Eigen::Isometry3d::Identity()), 1e-3,
+                    Eigen::Vector3d::Zero());
+  Eigen::VectorXd loads = Eigen::VectorXd::Zero(3 * alone.nodeCount());
+  PadDisk pad;
+  pad.centre = Eigen::Vector3d(0.0, 0.0, kSide);
+  pad.radius = radius;
+  ASSERT_GT(addPadPressure(soft.mesh.nodes, alone.surface(), pad, Eigen::Vector3d(0.0, 0.0, -force), &loads), 0.0);
+  const Eigen::VectorXd u = alone.staticDisplacement(loads);
+  const double expected = -surfaceDisplacementAt(soft.mesh.nodes, alone.surface(), u, pad.centre).z();
+  std::printf("static solution of the same pad: %.3f mm\n", 1e3 * expected);
+  EXPECT_NEAR(sink, expected, 0.1 * expected);
+}
+
+TEST_F(SoftBodyWorld, APointDigsDeeperThanThePadUnderTheSameCoupling)
+{
+  const std::unique_ptr<GodFingerWorld> pad = press(scene_, ContactModel::kGodFinger, 0.012, 3000);
+  const std::unique_ptr<GodFingerWorld> point = press(scene_, ContactModel::kGodObject, 0.012, 3000);
+  const double pad_sink = deepestSink(surface(*pad));
+  const double point_sink = deepestSink(surface(*point));
+  const double proxy_radius = point->params().coupling.proxy_radius;
+  const SurfaceLocator deformed(point->walkMesh(1));
+  const double gap = deformed.closest(point->interfaceState(0).proxy_position).distance - proxy_radius;
+  std::printf("dimple: pad %.3f mm, point %.3f mm; the point's proxy %.3f mm from the surface\n", 1e3 * pad_sink,
+              1e3 * point_sink, 1e3 * gap);
+  EXPECT_GT(point_sink, 1.2 * pad_sink);
+  EXPECT_NEAR(gap, 0.0, 3e-4);  // the point's proxy on the deformed surface too
+}
+
+TEST_F(SoftBodyWorld, ReleasedItSpringsBackAndSleepsAndAResetRestoresItBitForBit)
+{
+  WorldParams params;
+  GodFingerWorld world(scene_, params);
+  const std::vector<Eigen::Vector3d> settled = world.walkMesh(1).vertices();
+  const int finger = world.addInterface(Eigen::Vector3d(0.0, 0.0, kSide + 0.01));
+  world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, kSide - 0.01));
+  for (int i = 0; i < 1000; ++i)
+  {
+    world.step();
+  }
+  ASSERT_GT(deepestSink(surface(world)), 1e-3);
+  EXPECT_FALSE(world.bodyState(1).asleep);
+  world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, kSide + 0.03));
+  int steps = 0;
+  while (!world.bodyState(1).asleep && steps < 5000)
+  {
+    world.step();
+    ++steps;
+  }
+  std::printf("asleep %d steps after the release, deepest sink %.2e m\n", steps, deepestSink(surface(world)));
+  EXPECT_TRUE(world.bodyState(1).asleep);
+  EXPECT_LT(deepestSink(surface(world)), 2e-5);
+  world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, kSide - 0.01));
+  for (int i = 0; i < 300; ++i)
+  {
+    world.step();
+  }
+  EXPECT_FALSE(world.bodyState(1).asleep);  // touched again: awake
+  world.reset();
+  EXPECT_EQ(world.walkMesh(1).vertices(), settled);
+}
+}  // namespace
+}  // namespace god_finger
