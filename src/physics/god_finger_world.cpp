@@ -728,8 +728,9 @@ struct GodFingerWorld::Impl
           continue;
         }
         const double pressing = on_proxy.dot(area.normal);  // > 0: the body pushes the proxy out
-        const Eigen::Vector3d on_body =
-            state.contact_count == 1 ? Eigen::Vector3d(-on_proxy) : Eigen::Vector3d(-std::max(0.0, pressing) * area.normal);
+        const Eigen::Vector3d on_body = state.contact_count == 1
+                                            ? Eigen::Vector3d(-on_proxy)
+                                            : Eigen::Vector3d(-std::max(0.0, pressing) * area.normal);
         if (on_body.allFinite() && !on_body.isZero(0.0))
         {
           addSoftContactLoad(area, on_body, as_pad, volume);

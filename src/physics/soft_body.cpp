@@ -75,9 +75,8 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
   const Eigen::Vector3d gravity_in_body = volume.body_in_world.linear().transpose() * gravity;
   try
   {
-    volume.elastic =
-        std::make_unique<ElasticBody>(soft.mesh, soft.material, nodesGluedToSupport(soft.mesh, volume.body_in_world),
-                                      time_step, gravity_in_body);
+    volume.elastic = std::make_unique<ElasticBody>(
+        soft.mesh, soft.material, nodesGluedToSupport(soft.mesh, volume.body_in_world), time_step, gravity_in_body);
     volume.settled = volume.elastic->staticDisplacement(Eigen::VectorXd::Zero(3 * volume.elastic->nodeCount()));
   }
   catch (const InputError& error)

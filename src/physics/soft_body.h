@@ -36,9 +36,9 @@ struct SceneBody;
 struct SoftVolume
 {
   std::unique_ptr<ElasticBody> elastic;
-  std::vector<int> node_of_vertex;  // by walk-mesh vertex: the volume's node
-  Eigen::VectorXd settled;          // m, 3 per node: at rest under gravity, the start
-  Eigen::VectorXd loads;            // N, 3 per node, body frame: this step's finger loads
+  std::vector<int> node_of_vertex;        // by walk-mesh vertex: the volume's node
+  Eigen::VectorXd settled;                // m, 3 per node: at rest under gravity, the start
+  Eigen::VectorXd loads;                  // N, 3 per node, body frame: this step's finger loads
   std::vector<Eigen::Vector3d> nodes;     // m, body frame: where the nodes are now
   std::vector<Eigen::Vector3d> vertices;  // m, body frame: the walk mesh's, now
   Eigen::Isometry3d body_in_world = Eigen::Isometry3d::Identity();

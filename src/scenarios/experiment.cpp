@@ -4,6 +4,7 @@
 #include "god_finger/scenarios/overlap_metrics.h"
 #include "god_finger/scenarios/pinch_metrics.h"
 #include "god_finger/scenarios/scenario_metrics.h"
+#include "god_finger/scenarios/soft_contact_metrics.h"
 #include "roll_metrics.h"
 
 #include "god_finger/haptics/waypoint_path.h"
@@ -388,6 +389,55 @@ Script drawerScript(std::uint64_t seed)
   return script;
 }
 
+// soft_block.urdf: a 10 cm soft cube on the table, its top at z = 0.10 (a little lower, settled
+// under its weight). A finger comes down from 3 cm above the top's centre to 3 mm above it in
+// 0.5 s, then its target goes 1.5 cm past the top by 1.5 s (press_soft: about 4 N through the
+// 400 N/m coupling, a dimple of millimetres) and holds until 3 s. Asymmetry: 2 mm (+ jitter)
+// off the centre along x, 1 mm along y.
+Script pressSoftScript(std::uint64_t seed)
+{
+  const double x = 0.002 + seededJitter(seed);
+  const double y = 0.001;
+  const double top = 0.10;
+  Script script;
+  script.scene_file = "soft_block.urdf";
+  script.object = "soft_block";
+  script.lift_start = 1.5;  // the hold
+  script.lift_end = 3.0;
+  script.duration = 3.0;
+  script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(x, y, top + 0.03)},
+                                                    {0.5, xyz(x, y, top + 0.003)},
+                                                    {script.lift_start, xyz(x, y, top - 0.015)},
+                                                    {script.duration, xyz(x, y, top - 0.015)}});
+  return script;
+}
+
+// stroke_soft: the same approach, the target 1.2 cm past the top by 1.5 s, a hold until 2 s, a
+// stroke of 3 cm along +x in 2 s (15 mm/s), a hold of 0.5 s and a rise to 3 cm above the top by
+// 5 s. Asymmetry: 1.5 cm before the centre along x (the stroke crosses it), 1 mm (+ jitter)
+// along y.
+Script strokeSoftScript(std::uint64_t seed)
+{
+  const double x = -0.015;
+  const double y = 0.001 + seededJitter(seed);
+  const double top = 0.10;
+  const double press = top - 0.012;
+  Script script;
+  script.scene_file = "soft_block.urdf";
+  script.object = "soft_block";
+  script.lift_start = 2.0;  // the stroke
+  script.lift_end = 4.0;
+  script.duration = 5.0;
+  script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(x, y, top + 0.03)},
+                                                    {0.5, xyz(x, y, top + 0.003)},
+                                                    {1.5, xyz(x, y, press)},
+                                                    {script.lift_start, xyz(x, y, press)},
+                                                    {script.lift_end, xyz(x + 0.03, y, press)},
+                                                    {4.5, xyz(x + 0.03, y, press)},
+                                                    {script.duration, xyz(x + 0.03, y, top + 0.03)}});
+  return script;
+}
+
 Script scriptFor(const ExperimentOptions& options)
 {
   switch (options.scenario)
@@ -414,6 +464,10 @@ Script scriptFor(const ExperimentOptions& options)
       return doorScript(options.seed);
     case Scenario::kDrawer:
       return drawerScript(options.seed);
+    case Scenario::kPressSoft:
+      return pressSoftScript(options.seed);
+    case Scenario::kStrokeSoft:
+      return strokeSoftScript(options.seed);
   }
   return slideScript(options.push_height, options.seed);
 }
@@ -538,6 +592,10 @@ const char* scenarioName(Scenario scenario)
       return "door";
     case Scenario::kDrawer:
       return "drawer";
+    case Scenario::kPressSoft:
+      return "press_soft";
+    case Scenario::kStrokeSoft:
+      return "stroke_soft";
   }
   return "?";
 }
@@ -669,6 +727,12 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   {
     joint = std::make_unique<JointMetrics>(scene, timesOf(script));
   }
+  // press_soft, stroke_soft: the soft body's (soft_contact_metrics.h).
+  std::unique_ptr<SoftContactMetrics> soft;
+  if (options.scenario == Scenario::kPressSoft || options.scenario == Scenario::kStrokeSoft)
+  {
+    soft = std::make_unique<SoftContactMetrics>(options.scenario, object, timesOf(script), world);
+  }
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));
   ExperimentResult result;
@@ -700,6 +764,10 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
     if (joint)
     {
       joint->add(world.time(), world);
+    }
+    if (soft)
+    {
+      soft->add(world.time(), world);
     }
     csv.add(world.time(), state, world);
     if (sample_every > 0 && (i + 1) % sample_every == 0)
@@ -742,6 +810,13 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   if (joint)
   {
     for (const auto& entry : joint->metrics())
+    {
+      result.metrics.insert(entry);
+    }
+  }
+  if (soft)
+  {
+    for (const auto& entry : soft->metrics())
     {
       result.metrics.insert(entry);
     }

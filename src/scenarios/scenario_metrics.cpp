@@ -114,6 +114,9 @@ void ScenarioMetrics::add(double time, double dt, const BodyState& state)
     case Scenario::kDoor:
     case Scenario::kDrawer:
       break;  // the joint's metrics (joint_metrics.h)
+    case Scenario::kPressSoft:
+    case Scenario::kStrokeSoft:
+      break;  // the soft body's metrics (soft_contact_metrics.h)
   }
   last_ = state;
 }
@@ -192,6 +195,8 @@ std::map<std::string, double> ScenarioMetrics::metrics() const
     case Scenario::kPinchCard:
     case Scenario::kDoor:    // the joint's metrics (joint_metrics.h)
     case Scenario::kDrawer:
+    case Scenario::kPressSoft:  // the soft body's (soft_contact_metrics.h)
+    case Scenario::kStrokeSoft:
       break;
   }
   return result;

@@ -16,7 +16,7 @@ namespace
 {
 const char* const kKnownElements[] = {"inertial",       "collision_margin", "friction",  "neohookean",
                                       "corotated",      "visual",           "collision", "repulsion_stiffness",
-                                      "gravity_factor", "cache_barycenter", "spring",           "origin"};
+                                      "gravity_factor", "cache_barycenter", "spring",    "origin"};
 
 class DeformableParser
 {
@@ -99,10 +99,10 @@ class DeformableParser
     const Eigen::Vector3d rpy = triple(name, element, "rpy");
     Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
     pose.translation() = xyz;
-    pose.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
-                     Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
-                     Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
-                        .toRotationMatrix();
+    pose.linear() =
+        (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+         Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+            .toRotationMatrix();
     return pose;
   }
 

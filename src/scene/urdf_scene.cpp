@@ -505,16 +505,18 @@ class SceneParser
   static bool hasLinks(const std::string& xml)
   {
     tinyxml2::XMLDocument document;
-    const tinyxml2::XMLElement* robot =
-        document.Parse(xml.c_str(), xml.size()) == tinyxml2::XML_SUCCESS ? document.FirstChildElement("robot") : nullptr;
+    const tinyxml2::XMLElement* robot = document.Parse(xml.c_str(), xml.size()) == tinyxml2::XML_SUCCESS
+                                            ? document.FirstChildElement("robot")
+                                            : nullptr;
     return robot != nullptr && robot->FirstChildElement("link") != nullptr;
   }
 
   static std::string robotName(const std::string& xml)
   {
     tinyxml2::XMLDocument document;
-    const tinyxml2::XMLElement* robot =
-        document.Parse(xml.c_str(), xml.size()) == tinyxml2::XML_SUCCESS ? document.FirstChildElement("robot") : nullptr;
+    const tinyxml2::XMLElement* robot = document.Parse(xml.c_str(), xml.size()) == tinyxml2::XML_SUCCESS
+                                            ? document.FirstChildElement("robot")
+                                            : nullptr;
     const char* name = robot != nullptr ? robot->Attribute("name") : nullptr;
     return name != nullptr ? name : "";
   }

@@ -2,6 +2,7 @@
 // exact vertices and edges, and the tree is balanced (depth grows like log n).
 #include "god_finger/geometry/surface_locator.h"
 #include "god_finger/geometry/mesh_primitives.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -35,6 +36,62 @@ TEST(SurfaceLocator, AgreesWithBruteForce)
     EXPECT_NEAR(found.barycentric.sum(), 1.0, 1e-15);
     EXPECT_GE(found.barycentric.minCoeff(), 0.0);
   }
+}
+
+// A deformed surface (a soft body's, each step): moveVertices keeps the triangles and redoes the
+// normals and gradients as a fresh build of the moved soup would, bit for bit; the refitted tree
+// agrees with brute force on the moved mesh, and the moved mesh's own fresh tree.
+TEST(SurfaceLocator, ARefittedTreeFindsTheMovedSurface)
+{
+  TriangleMesh mesh = TriangleMesh::build(makeTorus(0.06, 0.02, 48, 24));
+  SurfaceLocator locator(mesh);
+  std::vector<Eigen::Vector3d> moved = mesh.vertices();
+  for (Eigen::Vector3d& v : moved)
+  {
+    // A dent 1 cm deep around the top of the ring at x = 0.06, and a stretch along y.
+    const double dent = 0.01 * std::exp(-((v - Eigen::Vector3d(0.06, 0.0, 0.02)).squaredNorm()) / (0.015 * 0.015));
+    v = Eigen::Vector3d(v.x(), 1.3 * v.y(), v.z() - dent);
+  }
+  mesh.moveVertices(moved);
+  locator.refit();
+  TriangleSoup soup;
+  soup.vertices = moved;
+  for (const Eigen::Vector3i& t : mesh.triangles())
+  {
+    soup.triangles.push_back({t[0], t[1], t[2]});
+  }
+  const TriangleMesh fresh = TriangleMesh::build(soup);
+  ASSERT_EQ(fresh.vertices(), mesh.vertices());  // the same order: nothing welded or dropped
+  ASSERT_EQ(fresh.triangles(), mesh.triangles());
+  EXPECT_EQ(fresh.normals(), mesh.normals());
+  for (int t = 0; t < mesh.triangleCount(); ++t)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      ASSERT_EQ(fresh.barycentricGradient(t, j), mesh.barycentricGradient(t, j));
+    }
+  }
+  EXPECT_EQ(fresh.boundingBoxDiagonal(), mesh.boundingBoxDiagonal());
+  const SurfaceLocator fresh_locator(fresh);
+  std::mt19937_64 random(12);
+  std::uniform_real_distribution<double> coordinate(-0.1, 0.1);
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    const Eigen::Vector3d query(coordinate(random), 1.3 * coordinate(random), 0.5 * coordinate(random));
+    double best = std::numeric_limits<double>::infinity();
+    for (int face = 0; face < mesh.triangleCount(); ++face)
+    {
+      best = std::min(best, locateOnFace(mesh, face, query).distance);
+    }
+    ASSERT_EQ(locator.closest(query).distance, best);
+    ASSERT_EQ(fresh_locator.closest(query).distance, best);
+  }
+  // A bad move is refused and changes nothing.
+  moved.front().x() = std::nan("");
+  EXPECT_THROW(mesh.moveVertices(moved), InputError);
+  moved.pop_back();
+  EXPECT_THROW(mesh.moveVertices(moved), InputError);
+  EXPECT_EQ(fresh.vertices(), mesh.vertices());
 }
 
 TEST(SurfaceLocator, ClassifiesVerticesEdgesAndFaces)

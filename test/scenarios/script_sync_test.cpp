@@ -1,5 +1,5 @@
-// The fake device's scripts for the articulated scenarios' launches (config/scripts/door.yaml,
-// drawer.yaml) are the offline experiment's own (experiment.cpp, seed 1): every waypoint of the
+// The fake device's scripts for the articulated and soft scenarios' launches
+// (config/scripts/door.yaml, drawer.yaml, press_soft.yaml, stroke_soft.yaml) are the offline experiment's own (experiment.cpp, seed 1): every waypoint of the
 // file lies on the scenario's path at its time, within a micrometre (the file's 6 decimals), so
 // the launch shows what god_finger_experiment measures.
 #include "god_finger/scenarios/experiment.h"
@@ -38,6 +38,12 @@ TEST(ScriptSync, TheDoorAndDrawerLaunchesFollowTheirScenariosScripts)
 {
   expectScriptFollowsScenario("door", Scenario::kDoor);
   expectScriptFollowsScenario("drawer", Scenario::kDrawer);
+}
+
+TEST(ScriptSync, TheSoftLaunchesFollowTheirScenariosScripts)
+{
+  expectScriptFollowsScenario("press_soft", Scenario::kPressSoft);
+  expectScriptFollowsScenario("stroke_soft", Scenario::kStrokeSoft);
 }
 }  // namespace
 }  // namespace god_finger

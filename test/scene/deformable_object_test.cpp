@@ -158,15 +158,15 @@ TEST_F(DeformableTest, ScenesHoldSoftBodiesWhereTheirOriginAndPlacementPutThem)
   EXPECT_EQ(block.material.friction, 0.8);
   EXPECT_TRUE(block.pose.isApprox(Eigen::Isometry3d::Identity(), 0.0));
   // A scene URDF: a table link and a deformable at its <origin>.
-  const std::string scene_path = write(
-      "scene.urdf",
-      "<robot name=\"s\"><link name=\"world\"/>\n"
-      "<link name=\"table\"><collision><geometry><box size=\"1 1 0.04\"/></geometry></collision></link>\n"
-      "<joint name=\"j\" type=\"fixed\"><parent link=\"world\"/><child link=\"table\"/>"
-      "<origin xyz=\"0 0 -0.02\"/></joint>\n"
-      "<deformable name=\"pad\"><inertial><mass value=\"0.1\"/></inertial>"
-      "<neohookean mu=\"1000\" lambda=\"4000\"/><collision filename=\"tet.vtk\"/>"
-      "<origin xyz=\"0.1 0.2 0\" rpy=\"0 0 1.5707963267948966\"/></deformable>\n</robot>\n");
+  const std::string scene_path =
+      write("scene.urdf",
+            "<robot name=\"s\"><link name=\"world\"/>\n"
+            "<link name=\"table\"><collision><geometry><box size=\"1 1 0.04\"/></geometry></collision></link>\n"
+            "<joint name=\"j\" type=\"fixed\"><parent link=\"world\"/><child link=\"table\"/>"
+            "<origin xyz=\"0 0 -0.02\"/></joint>\n"
+            "<deformable name=\"pad\"><inertial><mass value=\"0.1\"/></inertial>"
+            "<neohookean mu=\"1000\" lambda=\"4000\"/><collision filename=\"tet.vtk\"/>"
+            "<origin xyz=\"0.1 0.2 0\" rpy=\"0 0 1.5707963267948966\"/></deformable>\n</robot>\n");
   const SceneDescription scene = loadScene(scene_path);
   ASSERT_EQ(scene.bodies.size(), 2u);
   EXPECT_EQ(scene.bodies[0].name, "table");
@@ -176,11 +176,13 @@ TEST_F(DeformableTest, ScenesHoldSoftBodiesWhereTheirOriginAndPlacementPutThem)
   EXPECT_TRUE(scene.bodies[1].pose.translation().isApprox(Eigen::Vector3d(0.1, 0.2, 0.0), 1e-15));
   EXPECT_NEAR((scene.bodies[1].pose * Eigen::Vector3d::UnitX()).y(), 0.2 + 1.0, 1e-12);
   // A scene list places it; it cannot be made free.
-  const std::string list = write("list.yaml", "objects:\n  - file: " + kObjects + "/soft_block.urdf\n    xyz: [0.0, 0.0, 0.0]\n");
+  const std::string list =
+      write("list.yaml", "objects:\n  - file: " + kObjects + "/soft_block.urdf\n    xyz: [0.0, 0.0, 0.0]\n");
   const SceneDescription listed = loadScene(list);
   ASSERT_EQ(listed.bodies.size(), 2u);  // the table, the block
   EXPECT_TRUE(listed.bodies[1].soft);
-  const std::string freed = write("free.yaml", "objects:\n  - file: " + kObjects + "/soft_block.urdf\n    fixed: false\n");
+  const std::string freed =
+      write("free.yaml", "objects:\n  - file: " + kObjects + "/soft_block.urdf\n    fixed: false\n");
   try
   {
     loadScene(freed);
@@ -188,8 +190,9 @@ TEST_F(DeformableTest, ScenesHoldSoftBodiesWhereTheirOriginAndPlacementPutThem)
   }
   catch (const InputError& error)
   {
-    EXPECT_NE(std::string(error.what()).find("body 'soft_block' is a soft body: it is glued by its lowest nodes to what it "
-                                             "rests on, and cannot be made free (fixed: false)"),
+    EXPECT_NE(std::string(error.what())
+                  .find("body 'soft_block' is a soft body: it is glued by its lowest nodes to what it "
+                        "rests on, and cannot be made free (fixed: false)"),
               std::string::npos)
         << error.what();
   }

@@ -102,8 +102,8 @@ struct WorldSnapshot
   double time = 0.0;  // s, world time of the step
   long steps = 0;
   ContactModel model = ContactModel::kGodFinger;
-  std::vector<BodyState> bodies;           // by scene body index
-  std::vector<InterfaceState> interfaces;  // by interface index
+  std::vector<BodyState> bodies;                // by scene body index
+  std::vector<InterfaceState> interfaces;       // by interface index
   std::vector<SoftSurfaceState> soft_surfaces;  // one per soft body, in scene order
 };
 

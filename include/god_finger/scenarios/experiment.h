@@ -58,6 +58,16 @@
 //    3 N, 5 cm in front of the cabinet, and pulls 12 cm along the runners in 2 s (0.7-2.7 s) by
 //    friction alone, then rises; 3.5 s in all. Metrics (joint_metrics.h): pulled_m, slip_m,
 //    beyond_limit, hand_force_N against resistance_force_N.
+//  - kPressSoft (urdf/scenes/soft_block.urdf: a 10 cm soft cube, E 50 kPa, nu 0.45, glued to the
+//    table): a finger comes down onto the block's top centre in 0.5 s, presses its target 1.5 cm
+//    past the top by 1.5 s and holds until 3 s. Metrics (soft_contact_metrics.h): sink_m (the
+//    dimple) against w0_m (Boussinesq's for the hand's force over the area's radius),
+//    hand_force_N, area_radius_m, penetration_max_m and penetration_p99_m (the proxy into the
+//    deformed surface).
+//  - kStrokeSoft (the same block): the finger presses 1.2 cm past the top by 1.5 s, holds 0.5 s,
+//    strokes 3 cm along +x in 2 s (2-4 s), holds 0.5 s and rises by 5 s. Metrics
+//    (soft_contact_metrics.h): trace_m, stick_slip_events, friction_ratio_max, hand_force_N,
+//    sink_m, penetration_max_m and penetration_p99_m.
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
@@ -93,12 +103,14 @@ enum class Scenario
   kPinchCard,
   kDoor,
   kDrawer,
+  kPressSoft,
+  kStrokeSoft,
 };
 // Every scenario, in the order tools and scripts list them: the one list (scenarioNames()).
-constexpr Scenario kAllScenarios[] = {Scenario::kSlide,         Scenario::kLiftOne,   Scenario::kLiftTwo,
-                                      Scenario::kPinchCylinder, Scenario::kClutter,   Scenario::kHandGrasp,
-                                      Scenario::kRollFinger,    Scenario::kPinchThin, Scenario::kPinchCard,
-                                      Scenario::kDoor,          Scenario::kDrawer};
+constexpr Scenario kAllScenarios[] = {
+    Scenario::kSlide,     Scenario::kLiftOne,    Scenario::kLiftTwo,   Scenario::kPinchCylinder, Scenario::kClutter,
+    Scenario::kHandGrasp, Scenario::kRollFinger, Scenario::kPinchThin, Scenario::kPinchCard,     Scenario::kDoor,
+    Scenario::kDrawer,    Scenario::kPressSoft,  Scenario::kStrokeSoft};
 const char* scenarioName(Scenario scenario);
 // The names of kAllScenarios joined by `separator` ("slide, lift_one, ...").
 std::string scenarioNames(const std::string& separator = ", ");

@@ -1,0 +1,127 @@
+#include "god_finger/scenarios/soft_contact_metrics.h"
+
+#include "god_finger/scene/deformable_object.h"
+#include "god_finger/soft/surface_load.h"
+#include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
+
+#include <algorithm>
+
+namespace god_finger
+{
+namespace
+{
+constexpr double kMeasuredHold = 0.5;  // s: press_soft's metrics come from the run's last 0.5 s
+constexpr double kStuckSpeed = 1e-3;   // m/s
+constexpr double kSlipSpeed = 5e-3;    // m/s
+}  // namespace
+
+SoftContactMetrics::SoftContactMetrics(Scenario scenario, int object, const ScenarioTimes& times,
+                                       const GodFingerWorld& world)
+    : scenario_(scenario), object_(object), times_(times)
+{
+  const BodyDescription& body = world.scene().bodies.at(object);
+  if (!body.soft)
+  {
+    throw InputError("body '" + body.name + "' is not a soft body");
+  }
+  young_modulus_ = body.soft->material.young_modulus;
+  poisson_ratio_ = body.soft->material.poisson_ratio;
+  untouched_ = world.walkMesh(object).vertices();
+  locator_ = std::make_unique<SurfaceLocator>(world.walkMesh(object));
+}
+
+double SoftContactMetrics::deepestSink(const GodFingerWorld& world) const
+{
+  const std::vector<Eigen::Vector3d>& now = world.walkMesh(object_).vertices();
+  double deepest = 0.0;
+  for (std::size_t v = 0; v < now.size(); ++v)
+  {
+    deepest = std::max(deepest, (now[v] - untouched_[v]).norm());
+  }
+  return deepest;
+}
+
+void SoftContactMetrics::add(double time, const GodFingerWorld& world)
+{
+  const InterfaceState& finger = world.interfaceState(0);
+  bool touching = false;
+  double radius = 0.0;
+  for (int c = 0; c < finger.contact_count; ++c)
+  {
+    if (finger.contacts[c].body == object_)
+    {
+      touching = true;
+      radius = finger.contacts[c].radius;
+    }
+  }
+  if (touching)
+  {
+    locator_->refit();
+    const Eigen::Isometry3d to_body = world.bodyState(object_).pose.inverse();
+    const double distance = locator_->closest(to_body * finger.proxy_position).distance;
+    penetrations_.push_back(std::max(0.0, world.params().coupling.proxy_radius - distance));
+  }
+  const Eigen::Vector3d& force = finger.user_force;
+  if (scenario_ == Scenario::kPressSoft && time > times_.duration - kMeasuredHold)
+  {
+    ++samples_;
+    force_sum_ += force.norm();
+    radius_sum_ += radius;
+    sink_ = std::max(sink_, deepestSink(world));
+  }
+  if (scenario_ == Scenario::kStrokeSoft && time > times_.lift_start && time <= times_.lift_end)
+  {
+    if (tracing_)
+    {
+      trace_ += (finger.proxy_position - last_proxy_).norm();
+    }
+    tracing_ = true;
+    last_proxy_ = finger.proxy_position;
+    const double speed = finger.proxy_velocity.head<2>().norm();
+    if (stuck_ && speed > kSlipSpeed)
+    {
+      stuck_ = false;
+      ++stick_slips_;
+    }
+    else if (!stuck_ && speed < kStuckSpeed)
+    {
+      stuck_ = true;
+    }
+    const double normal = std::abs(force.z());
+    if (normal > 0.1)
+    {
+      friction_ratio_ = std::max(friction_ratio_, force.head<2>().norm() / normal);
+    }
+    ++samples_;
+    force_sum_ += normal;
+    sink_ = std::max(sink_, deepestSink(world));
+  }
+}
+
+std::map<std::string, double> SoftContactMetrics::metrics() const
+{
+  std::map<std::string, double> result;
+  result["penetration_max_m"] =
+      penetrations_.empty() ? 0.0 : *std::max_element(penetrations_.begin(), penetrations_.end());
+  result["penetration_p99_m"] = penetrations_.empty() ? 0.0 : percentile(penetrations_, 0.99);
+  result["sink_m"] = sink_;
+  result["hand_force_N"] = samples_ > 0 ? force_sum_ / samples_ : 0.0;
+  if (scenario_ == Scenario::kPressSoft)
+  {
+    const double radius = samples_ > 0 ? radius_sum_ / samples_ : 0.0;
+    const double w0 =
+        radius > 0.0 ? boussinesqCentreSink(result["hand_force_N"], radius, young_modulus_, poisson_ratio_) : 0.0;
+    result["area_radius_m"] = radius;
+    result["w0_m"] = w0;
+    result["sink_over_w0"] = w0 > 0.0 ? sink_ / w0 : 0.0;
+  }
+  else
+  {
+    result["trace_m"] = trace_;
+    result["stick_slip_events"] = stick_slips_;
+    result["friction_ratio_max"] = friction_ratio_;
+  }
+  return result;
+}
+}  // namespace god_finger

@@ -1,0 +1,65 @@
+// The soft scenarios (experiment.h: press_soft, stroke_soft on urdf/scenes/soft_block.urdf), each
+// contact model with identical scripted input: a pad's dimple is the elastic solution's within
+// the 1,000-node mesh's discretisation (the fidelity study's 0.76-0.82 of Boussinesq's w0 at
+// this mesh), a point digs deeper (a point load's dimple has no finite limit), the proxy never
+// sinks into the deformed surface by more than the 1 mm (AMBF's users see rigid bodies
+// sink through soft ones), and a stroke sticks, then slides, within the pair's friction.
+#include "god_finger/scenarios/experiment.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+namespace god_finger
+{
+namespace
+{
+ExperimentResult run(Scenario scenario, ContactModel model)
+{
+  ExperimentOptions options;
+  options.scenario = scenario;
+  options.model = model;
+  options.scenes_dir = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes";
+  const ExperimentResult result = runExperiment(options);
+  EXPECT_EQ(result.nan, 0);
+  std::printf("%s\n", toJson(result).c_str());
+  return result;
+}
+
+TEST(SoftScenarios, APadsDimpleIsTheElasticSolutionsAndAPointDigsDeeper)
+{
+  const ExperimentResult pad = run(Scenario::kPressSoft, ContactModel::kGodFinger);
+  const ExperimentResult point = run(Scenario::kPressSoft, ContactModel::kGodObject);
+  const ExperimentResult soft = run(Scenario::kPressSoft, ContactModel::kSoftFinger);
+  for (const ExperimentResult* result : {&pad, &point, &soft})
+  {
+    const std::map<std::string, double>& m = result->metrics;
+    EXPECT_GT(m.at("hand_force_N"), 3.0) << result->model;  // 1.5 cm of target past the top
+    EXPECT_LE(m.at("penetration_p99_m"), 1e-3) << result->model;
+    EXPECT_GT(m.at("sink_m"), 2e-3) << result->model;
+  }
+  // The pad: 0.7-0.95 of w0 (the study's 0.76 at 1,000 nodes, a little more on the deformed
+  // surface); soft_finger loads the same pad.
+  EXPECT_GT(pad.metrics.at("sink_over_w0"), 0.7);
+  EXPECT_LT(pad.metrics.at("sink_over_w0"), 0.95);
+  EXPECT_NEAR(soft.metrics.at("sink_over_w0"), pad.metrics.at("sink_over_w0"), 0.02);
+  // The point: more than 1.5 times the pad's share of w0 under the same coupling.
+  EXPECT_GT(point.metrics.at("sink_over_w0"), 1.5 * pad.metrics.at("sink_over_w0"));
+}
+
+TEST(SoftScenarios, AStrokeSticksThenSlidesWithinThePairsFriction)
+{
+  for (const ContactModel model : {ContactModel::kGodFinger, ContactModel::kGodObject, ContactModel::kSoftFinger})
+  {
+    const ExperimentResult result = run(Scenario::kStrokeSoft, model);
+    const std::map<std::string, double>& m = result.metrics;
+    // It slid most of the 3 cm, after sticking while the block sheared.
+    EXPECT_GT(m.at("trace_m"), 0.015) << result.model;
+    EXPECT_LT(m.at("trace_m"), 0.035) << result.model;
+    EXPECT_GE(m.at("stick_slip_events"), 1.0) << result.model;
+    EXPECT_LE(m.at("penetration_p99_m"), 1e-3) << result.model;
+    EXPECT_GT(m.at("hand_force_N"), 3.0) << result.model;
+  }
+}
+}  // namespace
+}  // namespace god_finger
