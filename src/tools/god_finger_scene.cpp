@@ -15,6 +15,7 @@
 // stderr naming the file and the problem, as the physics node would print it).
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/scene/deformable_object.h"
 #include "god_finger/scene/scene_file.h"
 #include "god_finger/support/input_error.h"
 
@@ -25,6 +26,7 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -33,7 +35,7 @@ const char* const kUsage =
     "Loads FILE (a URDF scene, an object URDF whose root link is the body, or a scene list .yaml)\n"
     "as the physics does and prints its bodies and load time; --touch BODY presses a finger on the\n"
     "body (down over its centre, 5 mm below its top) and reports the contact area, the force on the\n"
-    "hand, where the finger stopped and how the body moved.\n";
+    "hand, where the finger stopped and how the body moved (a soft body: how deep its surface sank).\n";
 
 const char* geometryName(god_finger::GeometryKind kind)
 {
@@ -109,6 +111,7 @@ int touch(god_finger::GodFingerWorld* world, int body)
   const god_finger::BodyState before = world->bodyState(body);
   // From 3 cm above the body's highest point (over a cup's rim), down in 0.3 s (as a hand comes
   // down), then held 5 mm into the surface under it for 0.7 s.
+  const std::vector<Eigen::Vector3d> untouched = world->walkMesh(body).vertices();  // a soft body's, before
   const double start = highest + 0.03 - top.z();
   const int finger = world->addInterface(top + Eigen::Vector3d(0.0, 0.0, start));
   const int steps = static_cast<int>(std::lround(1.0 / dt));
@@ -143,6 +146,16 @@ int touch(god_finger::GodFingerWorld* world, int body)
   const Eigen::AngleAxisd turned(before.pose.linear().transpose() * after.pose.linear());
   std::printf("  the body moved %.2f mm and turned %.4f rad\n",
               1e3 * (after.pose.translation() - before.pose.translation()).norm(), turned.angle());
+  if (world->scene().bodies[body].soft)
+  {
+    double dimple = 0.0;
+    const std::vector<Eigen::Vector3d>& now = world->walkMesh(body).vertices();
+    for (std::size_t v = 0; v < now.size(); ++v)
+    {
+      dimple = std::max(dimple, (now[v] - untouched[v]).norm());
+    }
+    std::printf("  its surface sank %.2f mm under the finger (a soft body)\n", 1e3 * dimple);
+  }
   return 0;
 }
 }  // namespace
@@ -203,6 +216,12 @@ int main(int argc, char** argv)
       if (!body.is_static)
       {
         std::printf(" %.3f kg", body.mass);
+      }
+      if (body.soft)
+      {
+        std::printf(" soft (%zu nodes, %zu tetrahedra, E %.3g kPa, nu %.3g, %.3g kg, glued where it rests)",
+                    body.soft->mesh.nodes.size(), body.soft->mesh.tets.size(),
+                    1e-3 * body.soft->material.young_modulus, body.soft->material.poisson_ratio, body.soft->mass);
       }
       std::printf(" at (%.3f, %.3f, %.3f) m; collides as %s", at.x(), at.y(), at.z(), geometryName(body.geometry.kind));
       for (const god_finger::BodyPart& part : body.more_parts)

@@ -74,6 +74,22 @@ TEST(SceneTool, TouchesTheMugsInnerFloor)
   EXPECT_GT(std::stod(run.out.substr(force + 19)), 1.0) << "the floor holds the finger up: " << run.out;
 }
 
+TEST(SceneTool, TouchesASoftBlockAndReportsItsDimple)
+{
+  const test::ToolRun run = test::runTool(GOD_FINGER_SCENE_TOOL, std::string(GOD_FINGER_SOURCE_DIR) +
+                                                                       "/urdf/scenes/soft_block.urdf --touch soft_block");
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("soft_block       fixed soft (1000 nodes, 4374 tetrahedra, E 50 kPa, nu 0.45, 1 kg, glued "
+                         "where it rests)"),
+            std::string::npos)
+      << run.out;
+  const std::size_t sank = run.out.find("its surface sank ");
+  ASSERT_NE(sank, std::string::npos) << run.out;
+  // 5 mm of target past the surface through the 400 N/m coupling: about 2 N, a dimple of millimetres.
+  EXPECT_GT(std::stod(run.out.substr(sank + 17)), 1.0) << run.out;
+  EXPECT_LT(std::stod(run.out.substr(sank + 17)), 5.0) << run.out;
+}
+
 TEST(SceneTool, ABadSceneOrBodyIsOneLineAndExitCodeTwo)
 {
   const test::ToolRun missing = test::runTool(GOD_FINGER_SCENE_TOOL, "/nonexistent/scene.urdf");
