@@ -220,8 +220,8 @@ int main(int argc, char** argv)
       if (body.soft)
       {
         std::printf(" soft (%zu nodes, %zu tetrahedra, E %.3g kPa, nu %.3g, %.3g kg, glued where it rests)",
-                    body.soft->mesh.nodes.size(), body.soft->mesh.tets.size(),
-                    1e-3 * body.soft->material.young_modulus, body.soft->material.poisson_ratio, body.soft->mass);
+                    body.soft->mesh.nodes.size(), body.soft->mesh.tets.size(), 1e-3 * body.soft->material.young_modulus,
+                    body.soft->material.poisson_ratio, body.soft->mass);
       }
       std::printf(" at (%.3f, %.3f, %.3f) m; collides as %s", at.x(), at.y(), at.z(), geometryName(body.geometry.kind));
       for (const god_finger::BodyPart& part : body.more_parts)

@@ -76,8 +76,8 @@ TEST(SceneTool, TouchesTheMugsInnerFloor)
 
 TEST(SceneTool, TouchesASoftBlockAndReportsItsDimple)
 {
-  const test::ToolRun run = test::runTool(GOD_FINGER_SCENE_TOOL, std::string(GOD_FINGER_SOURCE_DIR) +
-                                                                       "/urdf/scenes/soft_block.urdf --touch soft_block");
+  const test::ToolRun run = test::runTool(
+      GOD_FINGER_SCENE_TOOL, std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/soft_block.urdf --touch soft_block");
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("soft_block       fixed soft (1000 nodes, 4374 tetrahedra, E 50 kPa, nu 0.45, 1 kg, glued "
                          "where it rests)"),
