@@ -30,6 +30,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 
 namespace god_finger
@@ -714,6 +715,7 @@ struct GodFingerWorld::Impl
     const bool as_pad = params.model != ContactModel::kGodObject;
     for (std::size_t i = 0; i < proxies.size(); ++i)
     {
+      proxies[i].state.contact_stiffness = std::numeric_limits<double>::infinity();
       const Proxy& proxy = proxies[i];
       const InterfaceState& state = proxy.state;
       const Eigen::Vector3d on_proxy =
@@ -734,6 +736,9 @@ struct GodFingerWorld::Impl
         if (on_body.allFinite() && !on_body.isZero(0.0))
         {
           addSoftContactLoad(area, on_body, as_pad, volume);
+          // Before this step's motion: the sink that this force (the last step's, reversed) made.
+          proxies[i].state.contact_stiffness = softContactStiffness(area, on_body, volume);
+          proxies[i].state.contact_normal = area.normal;
         }
       }
     }

@@ -10,6 +10,8 @@
 
 #include <btBulletCollisionCommon.h>
 
+#include <limits>
+
 namespace god_finger::internal
 {
 namespace
@@ -85,6 +87,7 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
   }
   volume.elastic->restAt(volume.settled);
   volume.loads = Eigen::VectorXd::Zero(3 * volume.elastic->nodeCount());
+  volume.sink = Eigen::VectorXd::Zero(3 * volume.elastic->nodeCount());
   volume.nodes.resize(volume.elastic->nodeCount());
   volume.vertices.resize(volume.node_of_vertex.size());
   auto triangles = std::make_shared<std::vector<Eigen::Vector3i>>(body->walk->triangles());
@@ -110,6 +113,23 @@ void addSoftContactLoad(const WorldContactArea& area, const Eigen::Vector3d& for
     }
   }
   addPointForce(volume->nodes, volume->elastic->surface(), point, force, &volume->loads);
+}
+
+double softContactStiffness(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, SoftVolume* volume)
+{
+  const double pressing = -force_on_body.dot(area.normal);
+  if (!(pressing >= kMinStiffnessForce))
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  const Eigen::Isometry3d to_body = volume->body_in_world.inverse();
+  volume->sink = volume->elastic->displacement() - volume->settled;
+  // The rest surface's point under the contact: the dimple is along the normal, so the closest
+  // point of the rest surface to the dimpled one is where it was.
+  const Eigen::Vector3d moved = surfaceDisplacementAt(volume->elastic->restMesh().nodes, volume->elastic->surface(),
+                                                      volume->sink, to_body * area.point);
+  const double sink = -moved.dot(to_body.linear() * area.normal);
+  return sink >= kMinStiffnessSink ? pressing / sink : std::numeric_limits<double>::infinity();
 }
 
 bool stepSoftVolume(btCollisionWorld* world, SceneBody* body)

@@ -41,6 +41,7 @@ struct SoftVolume
   Eigen::VectorXd loads;                  // N, 3 per node, body frame: this step's finger loads
   std::vector<Eigen::Vector3d> nodes;     // m, body frame: where the nodes are now
   std::vector<Eigen::Vector3d> vertices;  // m, body frame: the walk mesh's, now
+  Eigen::VectorXd sink;                   // m, 3 per node: scratch, the displacement since settling
   Eigen::Isometry3d body_in_world = Eigen::Isometry3d::Identity();
   // The surface's triangles in walk-mesh vertices, for observers (WorldSnapshot::soft_surfaces).
   std::shared_ptr<const std::vector<Eigen::Vector3i>> triangles;
@@ -64,6 +65,14 @@ void addSoftContactLoad(const WorldContactArea& area, const Eigen::Vector3d& for
 // One elastic step under the loads added since the last (then cleared); the surface follows
 // (walk mesh, locator, Bullet mesh and its box in `world`). Returns whether it moved.
 bool stepSoftVolume(btCollisionWorld* world, SceneBody* body);
+
+// The stiffness (N/m) the body shows a finger pressing with `force_on_body` (N, world) at `area`:
+// the force's normal part over the surface's sink there since it settled (its displacement
+// along -normal). Infinity when either is too small to measure (under kMinStiffnessForce or
+// kMinStiffnessSink).
+constexpr double kMinStiffnessForce = 0.05;  // N
+constexpr double kMinStiffnessSink = 1e-5;   // m
+double softContactStiffness(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, SoftVolume* volume);
 
 // Back to the settled start, the surface with it.
 void resetSoftVolume(btCollisionWorld* world, SceneBody* body);

@@ -1,5 +1,8 @@
 #include "god_finger/runtime/multirate_render.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace god_finger
 {
 namespace
@@ -39,9 +42,21 @@ bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, cons
     state->exact = true;
     return true;
   }
-  // A spring to the anchor, damping on the device's own velocity only, saturated.
-  const CouplingForce spring =
-      couplingForce(coupling, device.target, device.velocity, state->anchor, Eigen::Vector3d::Zero());
+  // A spring to the anchor (yielding as a soft body does), damping on the device's own velocity
+  // only, saturated.
+  Eigen::Vector3d anchor = state->anchor;
+  if (step.contact_stiffness < std::numeric_limits<double>::infinity())
+  {
+    const Eigen::Vector3d& n = step.contact_normal;
+    const double k_c = coupling.stiffness;
+    const double k_s = step.contact_stiffness;
+    const double pressed = step.user_force.dot(n);                  // N: the step's force along n
+    const double past = (device.target - step.step_target).dot(n);  // m: the device's move out of the body
+    const double along = std::max(0.0, pressed - k_c * k_s / (k_c + k_s) * past);
+    // Where the proxy would be along n for that force: the device's place plus along / k_c.
+    anchor += n * (device.target.dot(n) + along / k_c - state->anchor.dot(n));
+  }
+  const CouplingForce spring = couplingForce(coupling, device.target, device.velocity, anchor, Eigen::Vector3d::Zero());
   state->force = state->force + clampedLength(-spring.on_proxy - state->force, bound);
   state->exact = false;
   return false;

@@ -435,6 +435,9 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
     out->proxies[i].proxy_position = state.proxy_position;
     out->proxies[i].user_force = state.user_force;
     out->proxies[i].user_torque = state.user_torque;
+    out->proxies[i].interface_position = state.interface_position;
+    out->proxies[i].contact_stiffness = state.contact_stiffness;
+    out->proxies[i].contact_normal = state.contact_normal;
   }
   if (frame.tick >= next_snapshot_tick_)
   {
@@ -484,7 +487,8 @@ void ServoLoop::decide(long tick, double time, double period_us)
     const ProxyResult& proxy = latest_.proxies[i];
     const long lag = tick - latest_.tick;
     const MultirateDevice device{render.target, render.previous_target, render.velocity, render.previous_velocity};
-    const MultirateStep step{proxy.proxy_position, proxy.user_force, lag};
+    const MultirateStep step{proxy.proxy_position,     proxy.user_force,        lag,
+                             proxy.interface_position, proxy.contact_stiffness, proxy.contact_normal};
     if (renderMultirate(couplings_[i], params_.recovery_periods, device, step, &render.multirate))
     {
       render.stale = false;

@@ -1,10 +1,13 @@
 // The multi-rate renderer on its own (runtime/multirate_render.h): on time it passes the step's
 // reaction through bit for bit; a late step makes it pull the device towards an anchor that
 // moves to the new proxy by at most delta a tick, the force changing by at most its bound; it
-// rejoins the step once the anchor is on the proxy and the reaction within the bound.
+// rejoins the step once the anchor is on the proxy and the reaction within the bound. On a soft
+// contact the anchor yields as the body does: the coupling and the body in series, never pulling.
 #include "god_finger/runtime/multirate_render.h"
 
 #include <gtest/gtest.h>
+
+#include <limits>
 
 namespace god_finger
 {
@@ -63,6 +66,57 @@ TEST(MultirateRender, ALateStepIsRenderedAgainstAMovingAnchorWithoutAForceStep)
   EXPECT_EQ(state.anchor, step.proxy_position);
   EXPECT_EQ(state.force, step.user_force);
   EXPECT_TRUE(state.exact);
+}
+TEST(MultirateRender, OnASoftContactTheHandFeelsTheCouplingAndTheBodyInSeriesBetweenSteps)
+{
+  CouplingProfile coupling;
+  coupling.stiffness = 800.0;
+  coupling.damping = 0.0;  // the spring alone: damping acts on the device's velocity, the same either way
+  coupling.max_force = 20.0;
+  const double k_s = 1200.0;  // N/m: a soft block under a pad (InterfaceState::contact_stiffness)
+  const double k_series = coupling.stiffness * k_s / (coupling.stiffness + k_s);  // 480 N/m
+  const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+  // The last step: the device 10 mm under the proxy, 8 N on the hand along n.
+  MultirateStep soft{
+      Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 8.0), 0, Eigen::Vector3d(0.0, 0.0, -0.01), k_s, n};
+  MultirateStep rigid = soft;
+  rigid.contact_stiffness = std::numeric_limits<double>::infinity();
+  for (MultirateStep* step : {&soft, &rigid})
+  {
+    MultirateState state;
+    MultirateDevice device;
+    device.target = device.previous_target = step->step_target;
+    ASSERT_TRUE(renderMultirate(coupling, 8, device, *step, &state));
+    EXPECT_EQ(state.force, step->user_force);
+    // The physics goes late; the device moves 0.5 mm a tick into the body for 4 ticks.
+    step->lag = 1;
+    for (int tick = 1; tick <= 4; ++tick)
+    {
+      device.previous_target = device.target;
+      device.target.z() -= 0.0005;
+      EXPECT_FALSE(renderMultirate(coupling, 8, device, *step, &state));
+      const double expected = 8.0 + (step == &soft ? k_series : coupling.stiffness) * 0.0005 * tick;
+      EXPECT_NEAR(state.force.z(), expected, 1e-9) << (step == &soft ? "soft" : "rigid") << " tick " << tick;
+      EXPECT_NEAR(state.force.head<2>().norm(), 0.0, 1e-12);
+    }
+  }
+  // Withdrawn past where the body lets go (8 N / 480 N/m = 16.7 mm over the step's target): the
+  // proxy leaves the surface at zero force, the hand is not pulled back (the force falls by at
+  // most the bound a tick, to zero).
+  MultirateState state;
+  MultirateDevice device;
+  soft.lag = 0;
+  device.target = device.previous_target = soft.step_target;
+  ASSERT_TRUE(renderMultirate(coupling, 8, device, soft, &state));
+  soft.lag = 1;
+  for (int tick = 1; tick <= 60; ++tick)
+  {
+    device.previous_target = device.target;
+    device.target.z() += 0.0005;
+    renderMultirate(coupling, 8, device, soft, &state);
+    EXPECT_GE(state.force.z(), -1e-12) << "tick " << tick;
+  }
+  EXPECT_NEAR(state.force.z(), 0.0, 1e-12);  // 30 mm out: free space
 }
 }  // namespace
 }  // namespace god_finger

@@ -34,17 +34,20 @@ DeviceProfile falcon()
   return profile;
 }
 
-struct Run
+struct PressRun
 {
   double energy = 0.0;           // J into the device over the whole run
   double largest_force = 0.0;    // N
   long ticks_without_force = 0;  // ticks whose sample says no force was decided (never, with the multi-rate loop)
   long stale_ticks = 0;
-  double deepest_sink = 0.0;  // m, the block's surface
+  double deepest_sink = 0.0;              // m, the block's surface
+  std::vector<double> force_z;            // N, by tick: the applied force's z
+  std::vector<double> handle_z;           // m, by tick
+  std::vector<double> contact_stiffness;  // N/m, by tick: the world's, after the tick
 };
 
 // `path`: the hand's script (world = device frame). `delay`: haptic periods each soft step takes.
-Run press(const WaypointPath& path, int delay, int ticks)
+PressRun press(const WaypointPath& path, int delay, int ticks)
 {
   auto device = std::make_unique<FakeDevice>(FakeDeviceParams(), path);
   device->setScriptStart(0.0);
@@ -61,14 +64,17 @@ Run press(const WaypointPath& path, int delay, int ticks)
   std::vector<ServoSample> samples;
   ServoSample sample;
   WorldSnapshot snapshot;
-  Run run;
+  PressRun run;
   for (int k = 0; k < ticks; ++k)
   {
     loop.tick(k * kDt);
     while (loop.samples().tryPop(&sample))
     {
       samples.push_back(sample);
+      run.force_z.push_back(sample.applied_force.z());
+      run.handle_z.push_back(sample.reading.position.z());
     }
+    run.contact_stiffness.push_back(loop.world().interfaceState(0).contact_stiffness);
     while (loop.snapshots().tryPop(&snapshot))
     {
       for (const SoftSurfaceState& surface : snapshot.soft_surfaces)
@@ -93,8 +99,8 @@ Run press(const WaypointPath& path, int delay, int ticks)
 
 void expectPassive(const char* what, const WaypointPath& path, int ticks)
 {
-  const Run on_time = press(path, 0, ticks);
-  const Run slow = press(path, 3, ticks);
+  const PressRun on_time = press(path, 0, ticks);
+  const PressRun slow = press(path, 3, ticks);
   std::printf(
       "[ measured ] %s: energy to the device on time %.3g J (largest force %.2f N, dimple %.2f mm); soft steps "
       "4 periods long %.3g J (%.2f N, %.2f mm, %ld stale ticks)\n",

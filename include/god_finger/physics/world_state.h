@@ -10,6 +10,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -54,6 +55,13 @@ struct InterfaceState
   // overlap, src/physics/overlap_push.h): both zero when no area overlaps.
   double overlap_area = 0.0;
   Eigen::Vector3d overlap_push = Eigen::Vector3d::Zero();
+  // A soft contact's stiffness (N/m) along contact_normal (world, out of the body): the force the
+  // finger presses the soft body with over how deep the surface sank under it (its linear
+  // elements make this the same for any force), what the hand should feel between two steps
+  // when the physics is slower than the device (runtime/multirate_render.h). Infinity for rigid
+  // bodies, no contact, or a press too light to measure it.
+  double contact_stiffness = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d contact_normal = Eigen::Vector3d::UnitZ();
 };
 
 struct BodyState

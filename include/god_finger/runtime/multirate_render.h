@@ -11,12 +11,22 @@
 // saturated, moving from the last force by at most the bound
 // stiffness (|target - previous target| + delta) + damping |velocity - previous velocity|.
 //
+// A soft contact (a finite contact stiffness k_s): between steps the proxy is not a wall but
+// yields along the contact's normal n as the body would, linearised at the step (SOFA's
+// LCPForceFeedback re-solves its constraints with the last compliance the same way): with the
+// device dx along n past the step's target, the proxy moves k_c dx / (k_c + k_s), so the hand's
+// force along n changes by -k_c k_s / (k_c + k_s) dx (the coupling and the body in series), and
+// never pulls (the proxy leaves the surface at zero force). The spring pulls to the anchor moved
+// by that yield; the anchor itself, the bound and the return to exactness are as above. A rigid
+// contact (k_s infinite) is rendered as before, bit for bit.
+//
 // Units: SI, world frame. Real-time safe (no allocation).
 #pragma once
 
 #include "god_finger/haptics/virtual_coupling.h"
 
 #include <Eigen/Core>
+#include <limits>
 
 namespace god_finger
 {
@@ -43,6 +53,11 @@ struct MultirateStep
   Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();
   Eigen::Vector3d user_force = Eigen::Vector3d::Zero();
   long lag = 0;
+  // A soft contact (InterfaceState::contact_stiffness finite): the device target the step took
+  // (m, world), the contact's stiffness k_s (N/m) along its normal n (world, out of the body).
+  Eigen::Vector3d step_target = Eigen::Vector3d::Zero();
+  double contact_stiffness = std::numeric_limits<double>::infinity();
+  Eigen::Vector3d contact_normal = Eigen::Vector3d::UnitZ();
 };
 
 // Decides this tick's force (N, world, on the hand) into state->force and updates the anchor and

@@ -115,6 +115,7 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -308,6 +309,11 @@ class ServoLoop
     Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world, after the step
     Eigen::Vector3d user_force = Eigen::Vector3d::Zero();      // N, world: the step's coupling reaction
     Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();     // N m, world: the rotational coupling's
+    // The step's device target (m, world) and its contact's stiffness along its normal
+    // (InterfaceState::contact_stiffness: finite on a soft body), for the multi-rate renderer.
+    Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();
+    double contact_stiffness = std::numeric_limits<double>::infinity();
+    Eigen::Vector3d contact_normal = Eigen::Vector3d::UnitZ();
   };
   struct StepResult
   {
