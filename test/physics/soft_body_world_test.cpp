@@ -3,7 +3,8 @@
 // surface, not sunk into the rest one); the dimple under the pad is the static elastic solution
 // of the pad's pressure (checked against an ElasticBody of its own); a point contact (god_object)
 // digs deeper than the pad under the same coupling; released, the block springs back and sleeps;
-// a reset brings the settled surface back bit for bit.
+// a reset brings the settled surface back bit for bit; two fingers both load it and their
+// overlapping areas are pushed apart as on a rigid body.
 #include "god_finger/geometry/surface_locator.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/deformable_object.h"
@@ -177,6 +178,53 @@ TEST_F(SoftBodyWorld, APointDigsDeeperThanThePadUnderTheSameCoupling)
               1e3 * point_sink, 1e3 * gap);
   EXPECT_GT(point_sink, 1.2 * pad_sink);
   EXPECT_NEAR(gap, 0.0, 3e-4);  // the point's proxy on the deformed surface too
+}
+
+// Two fingers on the block's top, 12 mm apart (their 1 cm areas overlap): each makes its dimple
+// and feels the block, both loads reach it (deeper than one finger's), and the overlap push
+// (WorldParams::overlap) drives them apart as on a rigid body; without it they stay.
+TEST_F(SoftBodyWorld, TwoFingersPressTogetherAndTheirOverlappingAreasPushApart)
+{
+  const auto run = [this](double overlap_stiffness, double* one_finger_sink)
+  {
+    WorldParams params;
+    params.overlap.stiffness = overlap_stiffness;
+    GodFingerWorld world(scene_, params);
+    const int left = world.addInterface(Eigen::Vector3d(-0.006, 0.0, kSide + 0.01));
+    const int right = world.addInterface(Eigen::Vector3d(0.006, 0.0, kSide + 0.01));
+    world.setInterfaceTarget(left, Eigen::Vector3d(-0.006, 0.0, kSide - 0.008));
+    world.setInterfaceTarget(right, Eigen::Vector3d(0.006, 0.0, kSide - 0.008));
+    double largest_overlap = 0.0;
+    for (int i = 0; i < 2000; ++i)
+    {
+      world.step();
+      largest_overlap = std::max(largest_overlap, world.interfaceState(left).overlap_area);
+    }
+    for (const int finger : {left, right})
+    {
+      EXPECT_EQ(world.interfaceState(finger).contact_count, 1);
+      EXPECT_EQ(world.interfaceState(finger).contacts[0].body, 1);
+      EXPECT_GT(world.interfaceState(finger).user_force.z(), 1.0);
+    }
+    EXPECT_GT(largest_overlap, 0.0);
+    if (one_finger_sink != nullptr)
+    {
+      const std::unique_ptr<GodFingerWorld> one = press(scene_, ContactModel::kGodFinger, 0.008, 2000);
+      *one_finger_sink = deepestSink(surface(*one));
+    }
+    return std::make_pair(
+        world.interfaceState(right).proxy_position.x() - world.interfaceState(left).proxy_position.x(),
+        deepestSink(surface(world)));
+  };
+  double one_finger_sink = 0.0;
+  const auto [apart_pushed, sink_two] = run(WorldParams().overlap.stiffness, &one_finger_sink);
+  const auto [apart_still, sink_still] = run(0.0, nullptr);
+  std::printf("two fingers: %.2f mm apart with the push, %.2f mm without; dimple %.2f mm (one finger: %.2f mm)\n",
+              1e3 * apart_pushed, 1e3 * apart_still, 1e3 * sink_two, 1e3 * one_finger_sink);
+  EXPECT_GT(sink_two, 1.2 * one_finger_sink);  // both loads reach the block
+  // No push: near where the hands put them, leaning a little into their shared dimple.
+  EXPECT_NEAR(apart_still, 0.012, 2e-3);
+  EXPECT_GT(apart_pushed, apart_still + 3e-3);  // pushed apart on the soft surface too
 }
 
 TEST_F(SoftBodyWorld, ReleasedItSpringsBackAndSleepsAndAResetRestoresItBitForBit)
