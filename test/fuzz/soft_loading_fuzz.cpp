@@ -3,10 +3,12 @@
 // whose volume may name /tmp/god_finger_fuzz_soft.vtk, a valid two-tetrahedron file this target
 // writes. A bad file must give InputError, never a crash, a hang or a sanitizer report. A mesh
 // that loads must keep tet_mesh.h's invariants (finite nodes, every node used, positive and
-// not degenerate tetrahedra, a surface whose every edge is shared by faces of both windings),
+// not degenerate tetrahedra, a surface whose every edge is shared by faces of both windings, a
+// walk mesh of that surface whose vertices are its nodes),
 // and a small one must step as a soft body to finite positions. Run by scripts/fuzz.
 #include "god_finger/scene/deformable_object.h"
 #include "god_finger/soft/elastic_body.h"
+#include "god_finger/soft/soft_surface.h"
 #include "god_finger/soft/vtk_tet_reader.h"
 #include "god_finger/support/input_error.h"
 
@@ -53,6 +55,17 @@ void checkMesh(const god_finger::TetMesh& mesh)
   {
     // Every directed edge of the boundary has its reverse (a boundary of volumes is closed).
     if (edges.count({edge.second, edge.first}) == 0)
+    {
+      std::abort();
+    }
+  }
+  // Its surface as the physics walks on it: one vertex per surface node, or a clear refusal
+  // (surface nodes that coincide: InputError, caught by the caller).
+  const god_finger::SoftSurfaceMesh surface = god_finger::makeSoftSurfaceMesh(mesh, "fuzz.vtk");
+  for (int v = 0; v < surface.mesh.vertexCount(); ++v)
+  {
+    const int node = surface.node_of_vertex[v];
+    if (node < 0 || node >= static_cast<int>(mesh.nodes.size()) || surface.mesh.vertices()[v] != mesh.nodes[node])
     {
       std::abort();
     }
