@@ -2,13 +2,15 @@
 // the README's tables, dynamic_reconfigure's cfg, the defaults and the error messages (the
 // shipped device profiles: test/devices/device_profiles_test). A parameter added to a table and not to the README or
 // the cfg (or the other way round) fails here, with the text to paste.
-#include "god_finger/haptics/device_profile.h"
-#include "god_finger/support/input_error.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/pose_source.h"
+#include "god_finger/haptics/device_profile.h"
 #include "god_finger/physics/world_params.h"
+#include "god_finger/support/input_error.h"
 
 #include "docs_text.h"
+
+#include "god_finger/runtime/delay_line.h"
 
 #include <gtest/gtest.h>
 
@@ -58,6 +60,7 @@ TEST(ParameterTables, TheDocsShowEachTableAsGenerated)
       {"device profile (deviceProfileTable)", markdownTable(deviceProfileTable())},
       {"fake_hand (fakeHandParameterTable)", markdownTable(fakeHandParameterTable())},
       {"pose_source (poseSourceParameterTable)", markdownTable(poseSourceParameterTable())},
+      {"god_finger_delay (delayLineParameterTable)", markdownTable(delayLineParameterTable())},
   };
   for (const auto& [what, table] : tables)
   {

@@ -1,4 +1,4 @@
-// rostest: every node stops on bad input with one clear line and exit code 1: bad parameters,
+// rostest: every node (god_finger_delay too) stops on bad input with one clear line and exit code 1: bad parameters,
 // a missing, malformed or incomplete URDF, an unavailable device backend. Runs the node
 // binaries as a user would (rosrun-style, private parameters on the command line; lists set in
 // node_errors.test) against rostest's master.
@@ -92,6 +92,13 @@ TEST(NodeErrors, DeviceDriverNode)
   expectFails(node, "__name:=d9 _backend:=falcon _index:=20", "parameter '/d9/index' = 20 is out of range [0, 15]");
   expectFails(node, "__name:=d10 _backend:=omni _calibration_timeout:=0",
               "parameter '/d10/calibration_timeout' = 0 is out of range (0, 600] (s)");
+}
+TEST(NodeErrors, DelayNode)
+{
+  const std::string node = GOD_FINGER_DELAY_NODE;
+  expectFails(node, "__name:=l1 _loss:=2", "parameter '/l1/loss' = 2 is out of range [0, 1] (dimensionless)");
+  expectFails(node, "__name:=l2 _delay:=-0.01", "parameter '/l2/delay' = -0.01 is out of range [0, 10] (s)");
+  expectFails(node, "__name:=l3 _reorder:=yes", "parameter '/l3/reorder'");
 }
 }  // namespace
 }  // namespace god_finger
