@@ -5,11 +5,13 @@
 // finger's proxy is in contact each tick.
 // usage: hand_loop_bench [FINGERS] [SECONDS]   prints one JSON line (periods in us; the target:
 // period_us_p99 - floor_us_p99 <= 50 us with 10 fingers)
+#include "platform_floor.h"
+
 #include "god_finger/devices/hand_device.h"
 #include "god_finger/devices/pose_source.h"
-#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_loop.h"
+#include "god_finger/scene/urdf_scene.h"
 
 #include <algorithm>
 #include <atomic>
@@ -18,40 +20,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-namespace
-{
-double percentile(std::vector<double> values, double q)
-{
-  std::sort(values.begin(), values.end());
-  return values.empty() ? 0.0 : values[static_cast<std::size_t>(q * (values.size() - 1))];
-}
-
-// Periods (us) of an empty SCHED_FIFO thread's absolute 1 ms sleeps: the floor.
-std::vector<double> floorPeriods(double seconds)
-{
-  using namespace god_finger;
-  std::vector<double> periods;
-  std::thread thread(
-      [&periods, seconds]()
-      {
-        setRealTimePriority(80);
-        const long ticks = static_cast<long>(seconds * 1000.0);
-        periods.reserve(static_cast<std::size_t>(ticks));
-        const double start = steadySeconds();
-        double last = start;
-        for (long k = 1; k <= ticks; ++k)
-        {
-          sleepUntil(start + k * 1e-3);
-          const double now = steadySeconds();
-          periods.push_back(1e6 * (now - last));
-          last = now;
-        }
-      });
-  thread.join();
-  return periods;
-}
-}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -142,16 +110,16 @@ int main(int argc, char** argv)
   loop.stop();
   tracking = false;
   tracker.join();
-  const double floor_p99 = percentile(floor, 0.99);
-  const double period_p99 = percentile(periods, 0.99);
+  const double floor_p99 = benchPercentile(floor, 0.99);
+  const double period_p99 = benchPercentile(periods, 0.99);
   std::printf(
       "{\"fingers\": %d, \"seconds\": %.0f, \"realtime\": %s, \"ticks\": %zu, \"overruns\": %ld, "
       "\"untracked_samples\": %ld, \"floor_us_p50\": %.1f, \"floor_us_p99\": %.1f, \"period_us_p50\": %.1f, "
       "\"period_us_p99\": %.1f, \"period_us_max\": %.1f, \"step_us_p50\": %.1f, \"step_us_p99\": %.1f, "
       "\"p99_over_floor_us\": %.1f}\n",
       fingers, seconds, loop.counters().realtime ? "true" : "false", periods.size(), loop.counters().overruns.load(),
-      untracked, percentile(floor, 0.5), floor_p99, percentile(periods, 0.5), period_p99,
-      periods.empty() ? 0.0 : *std::max_element(periods.begin(), periods.end()), percentile(steps, 0.5),
-      percentile(steps, 0.99), period_p99 - floor_p99);
+      untracked, benchPercentile(floor, 0.5), floor_p99, benchPercentile(periods, 0.5), period_p99,
+      periods.empty() ? 0.0 : *std::max_element(periods.begin(), periods.end()), benchPercentile(steps, 0.5),
+      benchPercentile(steps, 0.99), period_p99 - floor_p99);
   return 0;
 }

@@ -9,6 +9,8 @@
 // multi-rate loop renders the force meanwhile (runtime/multirate_render.h: stale ticks).
 // usage: soft_loop_bench [NODES] [SECONDS]   prints one JSON line (periods and latencies in us;
 // the targets: period_us_p99 - floor_us_p99 <= 50 us, latency_us_p99 <= 200 us at every size)
+#include "platform_floor.h"
+
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_loop.h"
@@ -28,37 +30,6 @@
 
 namespace
 {
-double percentile(std::vector<double> values, double q)
-{
-  std::sort(values.begin(), values.end());
-  return values.empty() ? 0.0 : values[static_cast<std::size_t>(q * (values.size() - 1))];
-}
-
-// Periods (us) of an empty SCHED_FIFO thread's absolute 1 ms sleeps: the floor.
-std::vector<double> floorPeriods(double seconds)
-{
-  using namespace god_finger;
-  std::vector<double> periods;
-  std::thread thread(
-      [&periods, seconds]()
-      {
-        setRealTimePriority(80);
-        const long ticks = static_cast<long>(seconds * 1000.0);
-        periods.reserve(static_cast<std::size_t>(ticks));
-        const double start = steadySeconds();
-        double last = start;
-        for (long k = 1; k <= ticks; ++k)
-        {
-          sleepUntil(start + k * 1e-3);
-          const double now = steadySeconds();
-          periods.push_back(1e6 * (now - last));
-          last = now;
-        }
-      });
-  thread.join();
-  return periods;
-}
-
 // The soft block's scene (a table and the block) written into `folder`; returns its path.
 std::string writeScene(const std::string& folder, int nodes, std::size_t* written_nodes)
 {
@@ -151,8 +122,8 @@ int main(int argc, char** argv)
   }
   const long physics_steps = loop.counters().physics_steps.load();
   loop.stop();
-  const double floor_p99 = percentile(floor, 0.99);
-  const double period_p99 = percentile(periods, 0.99);
+  const double floor_p99 = benchPercentile(floor, 0.99);
+  const double period_p99 = benchPercentile(periods, 0.99);
   std::printf(
       "{\"nodes\": %zu, \"seconds\": %.0f, \"realtime\": %s, \"build_s\": %.2f, \"ticks\": %ld, \"overruns\": %ld, "
       "\"stale_ticks\": %ld, \"physics_steps_per_s\": %.1f, \"largest_force_N\": %.2f, \"floor_us_p50\": %.1f, "
@@ -160,9 +131,10 @@ int main(int argc, char** argv)
       "\"latency_us_p50\": %.1f, \"latency_us_p99\": %.1f, \"step_us_p50\": %.1f, \"step_us_p99\": %.1f, "
       "\"p99_over_floor_us\": %.1f}\n",
       written_nodes, seconds, loop.counters().realtime ? "true" : "false", build_s, samples,
-      loop.counters().overruns.load(), stale, physics_steps / seconds, largest_force, percentile(floor, 0.5), floor_p99,
-      percentile(periods, 0.5), period_p99, periods.empty() ? 0.0 : *std::max_element(periods.begin(), periods.end()),
-      percentile(latencies, 0.5), percentile(latencies, 0.99), percentile(steps, 0.5), percentile(steps, 0.99),
+      loop.counters().overruns.load(), stale, physics_steps / seconds, largest_force, benchPercentile(floor, 0.5),
+      floor_p99, benchPercentile(periods, 0.5), period_p99,
+      periods.empty() ? 0.0 : *std::max_element(periods.begin(), periods.end()), benchPercentile(latencies, 0.5),
+      benchPercentile(latencies, 0.99), benchPercentile(steps, 0.5), benchPercentile(steps, 0.99),
       period_p99 - floor_p99);
   return 0;
 }

@@ -263,9 +263,7 @@ struct GodFingerWorld::Impl
         soft_bodies.push_back(static_cast<int>(i));
       }
     }
-    proxy_velocity_before.assign(proxies.size(), Eigen::Vector3d::Zero());
-    proxy_force_before.assign(proxies.size(), Eigen::Vector3d::Zero());
-    group_of_tag.assign(bodies.size() + proxies.size(), -1);
+    sizeProxyScratch();
     slept_contacts.reset(static_cast<int>(bodies.size()));
     falling_asleep.assign(bodies.size(), 0);
   }
@@ -407,23 +405,21 @@ struct GodFingerWorld::Impl
     }
   }
 
+  // The per-proxy and per-island scratch, sized for the proxies and bodies there are now.
+  void sizeProxyScratch()
+  {
+    proxy_velocity_before.assign(proxies.size(), Eigen::Vector3d::Zero());
+    proxy_force_before.assign(proxies.size(), Eigen::Vector3d::Zero());
+    group_of_tag.assign(bodies.size() + proxies.size(), -1);
+  }
+
   void addProxyToWorld(int index)
   {
     Proxy& proxy = proxies[index];
     buildProxyBody(params.coupling, params.pad, index, static_cast<int>(bodies.size()), &proxy);
     world->addRigidBody(proxy.rigid.get(), kProxyGroup, kBodyGroup);
     proxy.rigid->setGravity(btVector3(0, 0, 0));
-    soft_bodies.clear();
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-    {
-      if (bodies[i].soft)
-      {
-        soft_bodies.push_back(static_cast<int>(i));
-      }
-    }
-    proxy_velocity_before.assign(proxies.size(), Eigen::Vector3d::Zero());
-    proxy_force_before.assign(proxies.size(), Eigen::Vector3d::Zero());
-    group_of_tag.assign(bodies.size() + proxies.size(), -1);
+    sizeProxyScratch();
     response->configureProxy(params, proxy.rigid.get());
     overlap.resize(static_cast<int>(proxies.size()));
   }

@@ -2,8 +2,8 @@
 // and its scenario (experiment.h, kClutter): the scene is what it claims to be and rests at
 // load; two god-fingers pick a box off its pile, carry it and set it down without a turn,
 // where two god-objects carry it flipped over.
-#include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/scenarios/experiment.h"
 #include "god_finger/scene/urdf_scene.h"
 
 #include <gtest/gtest.h>
@@ -149,9 +149,9 @@ ExperimentResult runClutter(ContactModel model, PadSolver pad_solver = WorldPara
 // the box through the carry and put it down where the hand does, with either pad solver
 // (measured: the pad constraint turns it 4.2e-6 rad and places it 3.9e-6 m off, the paper's
 // points 3.1e-4 rad and 1.4e-7 m; the other 107 bodies move 0.02 mm at most, the resting scene's
-// own settling; the pad's bound below is 1e-5, a thousandth of the soft finger's turn). Two god-objects carry it too, but it swings about the line through the two points
-// until it hangs upside down (turn 3.14 rad) and lands 7 mm off. (Bullet's soft finger: turn
-// 0.012 rad, placed 0.1 mm off.)
+// own settling; the pad's bound below is 1e-5, a thousandth of the soft finger's turn). Two god-objects carry it too,
+// but it swings about the line through the two points until it hangs upside down (turn 3.14 rad) and lands 7 mm off.
+// (Bullet's soft finger: turn 0.012 rad, placed 0.1 mm off.)
 TEST(Clutter, GodFingersPickAndPlaceTheBoxWithoutATurnGodObjectsFlipIt)
 {
   for (const PadSolver solver : {PadSolver::kConstraint, PadSolver::kPoints})
@@ -179,7 +179,9 @@ TEST(Clutter, ScenarioNamesComeFromOneList)
   Scenario parsed = Scenario::kSlide;
   ASSERT_TRUE(parseScenario("clutter", &parsed));
   EXPECT_EQ(parsed, Scenario::kClutter);
-  EXPECT_EQ(scenarioNames("|"), "slide|lift_one|lift_two|pinch_cylinder|clutter|hand_grasp|roll_finger|pinch_thin|pinch_card|door|drawer");
+  EXPECT_EQ(scenarioNames("|"),
+            "slide|lift_one|lift_two|pinch_cylinder|clutter|hand_grasp|roll_finger|pinch_thin|pinch_card|door|drawer|"
+            "press_soft|stroke_soft");
   for (Scenario scenario : kAllScenarios)
   {
     ASSERT_TRUE(parseScenario(scenarioName(scenario), &parsed));
