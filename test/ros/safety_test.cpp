@@ -401,9 +401,25 @@ TEST_F(Safety, DriverRampsToZeroWhenThePhysicsDiesAndResumesAfterItsRespawn)
   // trip after the state it answers was stamped: up to the largest round trip this test saw
   // (device -> physics -> test). Both ends are the driver's stamps: the test's own clock and
   // its feedback from the dying physics are not used.
+  // The hold's lower bound says the driver held the last command it got; it is judged only when
+  // every command arrived within the watchdog's 20 ms. On a machine loaded enough that round
+  // trips exceed it, commands arrive older than command_timeout and the watchdog rightly lets
+  // go of them before the kill (measured: 6 ms from the last command's state to the zero, with
+  // a 46 ms round trip): the zero is then not the kill's, and only the upper bound holds.
   ASSERT_GT(last_command, 0.0) << "no command before the zero";
   const double hold_and_ramp = zero_stamp - last_command;
-  EXPECT_GE(hold_and_ramp, 0.025);
+  constexpr double kCommandTimeout = 0.02;  // s: the fake profile's (config/devices/fake.yaml)
+  if (round_trip <= kCommandTimeout)
+  {
+    EXPECT_GE(hold_and_ramp, 0.025);
+  }
+  else
+  {
+    std::printf(
+        "[ measured ] round trips up to %.1f ms, over the watchdog's 20 ms: the hold's lower bound is "
+        "not judged (%.1f ms from the last command's state to the zero)\n",
+        1e3 * round_trip, 1e3 * hold_and_ramp);
+  }
   EXPECT_LE(hold_and_ramp, 0.035 + round_trip);
   waitFor(
       []
