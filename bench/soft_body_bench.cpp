@@ -114,9 +114,9 @@ void BM_SoftStep(benchmark::State& state)
   state.counters["slept"] = body.sleeping() ? 1.0 : 0.0;
 }
 
-void fidelity()
+void fidelity(const std::vector<int>& meshes)
 {
-  for (int nodes : {216, 1000, 1728, 2744, 5832})
+  for (int nodes : meshes)
   {
     SoftPressSetup setup;
     setup.nodes = nodes;
@@ -157,9 +157,14 @@ BENCHMARK(BM_SoftStep)
 
 int main(int argc, char** argv)
 {
-  if (argc == 2 && std::strcmp(argv[1], "--fidelity") == 0)
+  if (argc >= 2 && std::strcmp(argv[1], "--fidelity") == 0)
   {
-    god_finger::fidelity();
+    std::vector<int> meshes;
+    for (int i = 2; i < argc; ++i)
+    {
+      meshes.push_back(std::atoi(argv[i]));
+    }
+    god_finger::fidelity(meshes.empty() ? std::vector<int>{216, 1000, 1728, 2744, 5832} : meshes);
     return 0;
   }
   benchmark::Initialize(&argc, argv);

@@ -717,6 +717,7 @@ struct GodFingerWorld::Impl
       const Eigen::Vector3d on_proxy =
           params.coupling.proxy_mass * (toEigen(proxy.rigid->getLinearVelocity()) - proxy_velocity_before[i]) / dt -
           proxy_force_before[i];
+      bool loaded_soft = false;
       for (int c = 0; c < state.contact_count; ++c)
       {
         const WorldContactArea& area = state.contacts[c];
@@ -726,9 +727,19 @@ struct GodFingerWorld::Impl
           continue;
         }
         const double pressing = on_proxy.dot(area.normal);  // > 0: the body pushes the proxy out
-        const Eigen::Vector3d on_body = state.contact_count == 1
-                                            ? Eigen::Vector3d(-on_proxy)
-                                            : Eigen::Vector3d(-std::max(0.0, pressing) * area.normal);
+        const Eigen::Vector3d measured = state.contact_count == 1
+                                             ? Eigen::Vector3d(-on_proxy)
+                                             : Eigen::Vector3d(-std::max(0.0, pressing) * area.normal);
+        // One contact: under-relaxed (soft_body.h, kSoftLoadRelaxation).
+        const Eigen::Vector3d on_body =
+            state.contact_count == 1
+                ? Eigen::Vector3d(proxies[i].soft_load + kSoftLoadRelaxation * (measured - proxies[i].soft_load))
+                : measured;
+        if (state.contact_count == 1)
+        {
+          proxies[i].soft_load = on_body;
+          loaded_soft = true;
+        }
         if (on_body.allFinite() && !on_body.isZero(0.0))
         {
           addSoftContactLoad(area, on_body, as_pad, volume);
@@ -736,6 +747,10 @@ struct GodFingerWorld::Impl
           proxies[i].state.contact_stiffness = softContactStiffness(area, on_body, volume);
           proxies[i].state.contact_normal = area.normal;
         }
+      }
+      if (!loaded_soft)
+      {
+        proxies[i].soft_load.setZero();
       }
     }
     bool moved = false;

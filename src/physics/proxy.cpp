@@ -40,5 +40,6 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->warm_starts.assign(body_count, {});
   proxy->pads.assign(body_count, PadState());
   proxy->let_go_steps = 0;
+  proxy->soft_load.setZero();
 }
 }  // namespace god_finger::internal

@@ -48,6 +48,9 @@ struct Proxy
   Eigen::Vector3d let_go_offset = Eigen::Vector3d::Zero();
   int let_go_steps = 0;
   int let_go_total = 0;
+  // N, world: the load this proxy last gave the one soft body it touches (under-relaxed,
+  // soft_body.h kSoftLoadRelaxation); zero while it touches none.
+  Eigen::Vector3d soft_load = Eigen::Vector3d::Zero();
 };
 
 // Builds the proxy's sphere and rigid body at `proxy.initial` (index `index`, touching

@@ -46,6 +46,9 @@ struct DriverSample
   DeviceReading reading;
   Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();   // N, device frame
   Eigen::Vector3d applied_torque = Eigen::Vector3d::Zero();  // N m, device frame
+  // s: how long before the read the force command being rendered arrived (the guard's clock);
+  // negative before any command.
+  double command_age = -1.0;
 };
 // Ticks of samples the publisher thread may lag behind (a second at 1 kHz); beyond it a sample
 // is dropped (counted) rather than the loop waiting.
@@ -75,6 +78,7 @@ struct DeviceDriverNode::Impl
   // (now()); one older than the guard's command_timeout is not rendered.
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   double torque_time = -1e9;
+  double command_time = -1.0;       // under `mutex`: when the last accepted force command arrived (now())
   ros::ServiceServer stop_service;  // stop_force, in the interface's namespace
   std::unique_ptr<interactive_markers::InteractiveMarkerServer> marker_server;
   std::mutex mutex;  // guards the guard, and nothing else
@@ -106,8 +110,13 @@ struct DeviceDriverNode::Impl
     long rejected = 0;
     {
       std::lock_guard<std::mutex> lock(mutex);
-      accepted = guard->command(now(), force);
+      const double arrival = now();
+      accepted = guard->command(arrival, force);
       rejected = guard->rejected();
+      if (accepted)
+      {
+        command_time = arrival;
+      }
     }
     if (!accepted)
     {
@@ -214,9 +223,14 @@ struct DeviceDriverNode::Impl
       const double t = now();
       Eigen::Vector3d force;
       Eigen::Vector3d applied_torque = Eigen::Vector3d::Zero();
+      double command_age = -1.0;
       {
         std::lock_guard<std::mutex> lock(mutex);
         force = guard->output(t);
+        if (command_time >= 0.0)
+        {
+          command_age = t - command_time;
+        }
         // The torque through the force's guard (soft start, watchdog ramp, stop), while fresh.
         if (t - torque_time <= guard->params().command_timeout)
         {
@@ -241,6 +255,7 @@ struct DeviceDriverNode::Impl
         sample->reading = reading;
         sample->applied_force = force;
         sample->applied_torque = applied_torque;
+        sample->command_age = command_age;
         samples.commit();
         sem_post(&samples_ready);
       }
@@ -276,6 +291,10 @@ struct DeviceDriverNode::Impl
     state->applied_force.y = sample.applied_force.y();
     state->applied_force.z = sample.applied_force.z();
     state->applied_torque = toVector(sample.applied_torque);
+    if (sample.command_age >= 0.0)
+    {
+      state->command_received = sample.stamp - ros::Duration(sample.command_age);
+    }
     state->has_orientation = sample.reading.has_orientation;
     if (sample.reading.has_orientation)
     {

@@ -13,38 +13,71 @@ namespace
 // Below this reciprocal condition number the static stiffness is singular but for rounding.
 constexpr double kMinStaticCondition = 1e-9;
 
-// The element stiffness of one linear tetrahedron, 3x3 block (a, b):
-// V (lambda g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), g the shape functions' gradients.
-void addElementStiffness(const std::vector<Eigen::Vector3d>& nodes, const std::array<int, 4>& tet, double mu,
-                         double lambda, std::vector<Eigen::Triplet<double>>* triplets, double* volume)
+// One linear tetrahedron's volume (m^3) and its shape functions' gradients g_a (1/m).
+double tetGradients(const std::vector<Eigen::Vector3d>& nodes, const std::array<int, 4>& tet,
+                    std::array<Eigen::Vector3d, 4>* gradients)
 {
   Eigen::Matrix3d edges;
   edges << nodes[tet[1]] - nodes[tet[0]], nodes[tet[2]] - nodes[tet[0]], nodes[tet[3]] - nodes[tet[0]];
   const Eigen::Matrix3d inverse = edges.inverse();
-  *volume = edges.determinant() / 6.0;
-  Eigen::Vector3d gradients[4];
   for (int k = 1; k < 4; ++k)
   {
-    gradients[k] = inverse.row(k - 1).transpose();
+    (*gradients)[k] = inverse.row(k - 1).transpose();
   }
-  gradients[0] = -(gradients[1] + gradients[2] + gradients[3]);
+  (*gradients)[0] = -((*gradients)[1] + (*gradients)[2] + (*gradients)[3]);
+  return edges.determinant() / 6.0;
+}
+
+void addBlock(int a, int b, const Eigen::Matrix3d& block, std::vector<Eigen::Triplet<double>>* triplets)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      triplets->emplace_back(3 * a + i, 3 * b + j, block(i, j));
+    }
+  }
+}
+
+// The deviatoric stiffness of one tetrahedron, 3x3 block (a, b):
+// V (-2 mu / 3 g_a g_b^T + mu g_b g_a^T + mu (g_a . g_b) I), the energy V mu |dev(eps)|^2
+// (lambda's part, the volume change, is the nodes').
+void addDeviatoricStiffness(const std::array<int, 4>& tet, const std::array<Eigen::Vector3d, 4>& g, double volume,
+                            double mu, std::vector<Eigen::Triplet<double>>* triplets)
+{
   for (int a = 0; a < 4; ++a)
   {
     for (int b = 0; b < 4; ++b)
     {
-      const Eigen::Matrix3d block =
-          *volume * (lambda * gradients[a] * gradients[b].transpose() + mu * gradients[b] * gradients[a].transpose() +
-                     mu * gradients[a].dot(gradients[b]) * Eigen::Matrix3d::Identity());
-      for (int i = 0; i < 3; ++i)
-      {
-        for (int j = 0; j < 3; ++j)
-        {
-          triplets->emplace_back(3 * tet[a] + i, 3 * tet[b] + j, block(i, j));
-        }
-      }
+      addBlock(tet[a], tet[b],
+               volume * (-2.0 * mu / 3.0 * g[a] * g[b].transpose() + mu * g[b] * g[a].transpose() +
+                         mu * g[a].dot(g[b]) * Eigen::Matrix3d::Identity()),
+               triplets);
     }
   }
 }
+
+// A node's share of the volume change: V_n = sum over its tetrahedra of V_e / 4, and the
+// vector s_n that gives V_n times its averaged volumetric strain, s_n . u = sum V_e / 4 div u_e,
+// as (node, 3-vector) pairs.
+struct NodalDilatation
+{
+  double volume = 0.0;
+  std::vector<std::pair<int, Eigen::Vector3d>> terms;
+
+  void add(int node, const Eigen::Vector3d& term)
+  {
+    for (auto& [known, sum] : terms)
+    {
+      if (known == node)
+      {
+        sum += term;
+        return;
+      }
+    }
+    terms.emplace_back(node, term);
+  }
+};
 
 // The rows and columns of `matrix` that `free_index` keeps (-1: dropped).
 Eigen::SparseMatrix<double> freeBlock(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& free_index,
@@ -114,17 +147,35 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
   }
 
   const double mu = material_.shearModulus();
-  const double lambda = material_.lameLambda();
+  const double bulk = material_.lameLambda() + 2.0 * mu / 3.0;  // kappa (Pa)
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(mesh_.tets.size() * 144);
   lumped_mass_ = Eigen::VectorXd::Zero(dofs);
+  std::vector<NodalDilatation> dilatation(mesh_.nodes.size());
   for (const std::array<int, 4>& tet : mesh_.tets)
   {
-    double tet_volume = 0.0;
-    addElementStiffness(mesh_.nodes, tet, mu, lambda, &triplets, &tet_volume);
+    std::array<Eigen::Vector3d, 4> gradients;
+    const double tet_volume = tetGradients(mesh_.nodes, tet, &gradients);
+    addDeviatoricStiffness(tet, gradients, tet_volume, mu, &triplets);
     for (int node : tet)
     {
       lumped_mass_.segment<3>(3 * node).array() += material_.density * tet_volume / 4.0;
+      dilatation[node].volume += tet_volume / 4.0;
+      for (int a = 0; a < 4; ++a)
+      {
+        dilatation[node].add(tet[a], tet_volume / 4.0 * gradients[a]);
+      }
+    }
+  }
+  // The volume change's energy, per node: kappa / 2 V_n (s_n . u / V_n)^2.
+  for (const NodalDilatation& node : dilatation)
+  {
+    for (const auto& [a, term_a] : node.terms)
+    {
+      for (const auto& [b, term_b] : node.terms)
+      {
+        addBlock(a, b, bulk / node.volume * term_a * term_b.transpose(), &triplets);
+      }
     }
   }
   stiffness_.resize(dofs, dofs);

@@ -34,12 +34,15 @@ TEST(SoftPressFidelity, ThePadConvergesTowardBoussinesqAndThePointDoesNot)
   const auto ratio = [&](std::size_t i, bool pad)
   { return (pad ? results[i].pad_centre : results[i].point_centre) / results[i].boussinesq; };
   // The pad: below w0 (a stiff discretisation of a finite block), rising, each refinement adding
-  // less than half what the one before added; within 15 % of w0 at 2,744 nodes.
+  // less than half what the one before added; within 15 % of w0 at 1,000 nodes (the finest of
+  // these whose step fits the 1 kHz budget, bench/REPORT.md section 12: the target,
+  // which constant-strain tetrahedra missed by locking, at 0.76) and 10 % at 2,744.
   EXPECT_LT(ratio(0, true), ratio(1, true));
   EXPECT_LT(ratio(1, true), ratio(2, true));
   EXPECT_LT(ratio(2, true), 1.0);
   EXPECT_LT(ratio(2, true) - ratio(1, true), 0.5 * (ratio(1, true) - ratio(0, true)));
-  EXPECT_GT(ratio(2, true), 0.85);
+  EXPECT_GT(ratio(1, true), 0.85);
+  EXPECT_GT(ratio(2, true), 0.90);
   // The point: past w0 already at 1,000 nodes and still growing by more than 0.8 of its last
   // step (a point load's sink has no limit).
   EXPECT_GT(ratio(1, false), 2.0);

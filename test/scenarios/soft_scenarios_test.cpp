@@ -38,9 +38,9 @@ TEST(SoftScenarios, APadsDimpleIsTheElasticSolutionsAndAPointDigsDeeper)
     EXPECT_LE(m.at("penetration_p99_m"), 1e-3) << result->model;
     EXPECT_GT(m.at("sink_m"), 2e-3) << result->model;
   }
-  // The pad: 0.7-0.95 of w0 (the study's 0.76 at 1,000 nodes, a little more on the deformed
-  // surface); soft_finger loads the same pad.
-  EXPECT_GT(pad.metrics.at("sink_over_w0"), 0.7);
+  // The pad: within 15 % of w0, the target (the study's 0.90 at 1,000 nodes,
+  // bench/REPORT.md section 12); soft_finger loads the same pad.
+  EXPECT_GT(pad.metrics.at("sink_over_w0"), 0.85);
   EXPECT_LT(pad.metrics.at("sink_over_w0"), 0.95);
   EXPECT_NEAR(soft.metrics.at("sink_over_w0"), pad.metrics.at("sink_over_w0"), 0.02);
   // The point: more than 1.5 times the pad's share of w0 under the same coupling.
@@ -49,16 +49,29 @@ TEST(SoftScenarios, APadsDimpleIsTheElasticSolutionsAndAPointDigsDeeper)
 
 TEST(SoftScenarios, AStrokeSticksThenSlidesWithinThePairsFriction)
 {
+  std::map<ContactModel, std::map<std::string, double>> metrics;
   for (const ContactModel model : {ContactModel::kGodFinger, ContactModel::kGodObject, ContactModel::kSoftFinger})
   {
     const ExperimentResult result = run(Scenario::kStrokeSoft, model);
     const std::map<std::string, double>& m = result.metrics;
-    // It slid most of the 3 cm, after sticking while the block sheared.
-    EXPECT_GT(m.at("trace_m"), 0.015) << result.model;
-    EXPECT_LT(m.at("trace_m"), 0.035) << result.model;
+    metrics[model] = m;
     EXPECT_GE(m.at("stick_slip_events"), 1.0) << result.model;
     EXPECT_LE(m.at("penetration_p99_m"), 1e-3) << result.model;
     EXPECT_GT(m.at("hand_force_N"), 3.0) << result.model;
+    if (model != ContactModel::kGodObject)
+    {
+      // A pad slides most of the 3 cm, after sticking while the block sheared.
+      EXPECT_GT(m.at("trace_m"), 0.015) << result.model;
+      EXPECT_LT(m.at("trace_m"), 0.035) << result.model;
+    }
+  }
+  // A point ploughs: its load digs a pit more than twice as deep as the pad's (a point load's
+  // sink has no limit) and holds it back, so it travels less than either pad.
+  const auto& point = metrics[ContactModel::kGodObject];
+  for (const ContactModel pad : {ContactModel::kGodFinger, ContactModel::kSoftFinger})
+  {
+    EXPECT_GT(point.at("sink_m"), 2.0 * metrics[pad].at("sink_m"));
+    EXPECT_LT(point.at("trace_m"), metrics[pad].at("trace_m"));
   }
 }
 }  // namespace

@@ -33,12 +33,12 @@ TEST(SoftTool, SummarisesThePressOfTheShippedBlock)
   EXPECT_NE(run.out.find("press 'soft_block': 100 nodes glued at z = 0 m; 1 N down at (0, 0, 0.1) m"),
             std::string::npos)
       << run.out;
-  // w0 = 2 (1 - 0.45^2) (1 N / (pi 1 cm^2)) 1 cm / 50 kPa = 1.015 mm; this mesh sinks 0.77 of it
+  // w0 = 2 (1 - 0.45^2) (1 N / (pi 1 cm^2)) 1 cm / 50 kPa = 1.015 mm; this mesh sinks 0.90 of it
   // (bench/REPORT.md section 12: the pad's sink converges from below).
   EXPECT_NEAR(numberAfter(run.out, "half-space "), 1.015, 0.0005) << run.out;
   const double ratio = numberAfter(run.out, "(ratio ");
-  EXPECT_GT(ratio, 0.7);
-  EXPECT_LT(ratio, 0.85);
+  EXPECT_GT(ratio, 0.85);
+  EXPECT_LT(ratio, 0.95);
   const test::ToolRun point = test::runTool(GOD_FINGER_SOFT_TOOL, kBlock + " --press 1 --point");
   ASSERT_EQ(point.exit_code, 0) << point.err;
   // The same force at a point sinks it more than twice as far on this mesh.

@@ -2,7 +2,7 @@
 // or Lamé's mu and lambda as PyBullet's <neohookean>/<corotated> give them), density and
 // Rayleigh damping (C = alpha M + beta K). Units SI: Pa, kg/m^3, s.
 // Invariants after checkSoftMaterial(): every value finite and in softMaterialRanges()' ranges
-// (Poisson's ratio below 0.5: an incompressible material locks linear tetrahedra).
+// (Poisson's ratio below 0.5: an incompressible material has no finite bulk modulus).
 #pragma once
 
 #include <string>
