@@ -291,10 +291,7 @@ struct DeviceDriverNode::Impl
     state->applied_force.y = sample.applied_force.y();
     state->applied_force.z = sample.applied_force.z();
     state->applied_torque = toVector(sample.applied_torque);
-    if (sample.command_age >= 0.0)
-    {
-      state->command_received = sample.stamp - ros::Duration(sample.command_age);
-    }
+    state->command_age = sample.command_age;
     state->has_orientation = sample.reading.has_orientation;
     if (sample.reading.has_orientation)
     {

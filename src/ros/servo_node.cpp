@@ -143,6 +143,7 @@ struct ServoNode::Impl
     state->buttons = sample.reading.buttons;
     state->applied_force = toVector(sample.applied_force);
     state->applied_torque = toVector(sample.applied_torque);
+    state->command_age = -1.0;  // the force comes in process, not as a command
     state->has_orientation = sample.reading.has_orientation;
     if (sample.reading.has_orientation)
     {

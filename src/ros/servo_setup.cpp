@@ -1,10 +1,10 @@
 #include "servo_setup.h"
 
 #include "bag_track.h"
-#include "god_finger/support/input_error.h"
 #include "god_finger/devices/device_registry.h"
-#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/input_error.h"
 #include "hand_marker.h"
 #include "interface_parameters.h"
 #include "node_parameters.h"
