@@ -148,8 +148,10 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
 
   const double mu = material_.shearModulus();
   const double bulk = material_.lameLambda() + 2.0 * mu / 3.0;  // kappa (Pa)
-  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<Eigen::Triplet<double>> triplets;                 // the shear's, then the nodes' volume change
   triplets.reserve(mesh_.tets.size() * 144);
+  std::vector<Eigen::Triplet<double>> element_volume;  // the tetrahedra's own volume change
+  element_volume.reserve(mesh_.tets.size() * 144);
   lumped_mass_ = Eigen::VectorXd::Zero(dofs);
   std::vector<NodalDilatation> dilatation(mesh_.nodes.size());
   for (const std::array<int, 4>& tet : mesh_.tets)
@@ -157,6 +159,13 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
     std::array<Eigen::Vector3d, 4> gradients;
     const double tet_volume = tetGradients(mesh_.nodes, tet, &gradients);
     addDeviatoricStiffness(tet, gradients, tet_volume, mu, &triplets);
+    for (int a = 0; a < 4; ++a)
+    {
+      for (int b = 0; b < 4; ++b)
+      {
+        addBlock(tet[a], tet[b], bulk * tet_volume * gradients[a] * gradients[b].transpose(), &element_volume);
+      }
+    }
     for (int node : tet)
     {
       lumped_mass_.segment<3>(3 * node).array() += material_.density * tet_volume / 4.0;
@@ -167,6 +176,11 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
       }
     }
   }
+  // The step's matrix: the shear and each tetrahedron's own volume change (the 1-ring sparsity).
+  element_volume.insert(element_volume.end(), triplets.begin(), triplets.end());
+  Eigen::SparseMatrix<double> step_stiffness(dofs, dofs);
+  step_stiffness.setFromTriplets(element_volume.begin(), element_volume.end());
+  element_volume = {};
   // The volume change's energy, per node: kappa / 2 V_n (s_n . u / V_n)^2.
   for (const NodalDilatation& node : dilatation)
   {
@@ -188,9 +202,9 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
 
   const int free_count = static_cast<int>(free_dofs_.size());
   free_stiffness_ = freeBlock(stiffness_, free_index_, free_count);
-  // A = (1 + dt alpha) M + (dt beta + dt^2) K over the free degrees of freedom.
-  Eigen::SparseMatrix<double> step_matrix =
-      (time_step_ * material_.stiffness_damping + time_step_ * time_step_) * free_stiffness_;
+  // A = (1 + dt alpha) M + (dt beta + dt^2) K_A over the free degrees of freedom.
+  Eigen::SparseMatrix<double> step_matrix = (time_step_ * material_.stiffness_damping + time_step_ * time_step_) *
+                                            freeBlock(step_stiffness, free_index_, free_count);
   for (int i = 0; i < free_count; ++i)
   {
     step_matrix.coeffRef(i, i) += (1.0 + time_step_ * material_.mass_damping) * lumped_mass_(free_dofs_[i]);

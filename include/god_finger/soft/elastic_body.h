@@ -7,10 +7,17 @@
 // nu nears 0.5 (one volume constraint per tetrahedron, about two per degree of freedom): a
 // 1,000-node block at nu = 0.45 sank 0.76 of Boussinesq's w0 under a pad, against 0.90 with the
 // nodes' average (one constraint per node); bench/REPORT.md section 12. A uniform strain is
-// still exact. The price is the stiffness's reach: nodes two edges apart couple, so the factor
-// holds about 2.5 times the nonzeros. The step's matrix A = M + dt C + dt^2 K never changes, so it is factored once
-// (sparse LDL^T, CHOLMOD's fill-reducing ordering) at construction and each step is one K u product and
-// one pair of triangular solves: O(fill) per step, no iteration, unconditionally stable.
+// still exact.
+// The step: A v' = M v + dt (f - K u), u' = u + dt v', with K the stiffness above and
+// A = (1 + dt alpha) M + (dt beta + dt^2) K_A, where K_A takes each tetrahedron's own volume
+// change (the locking stiffness, K_A >= K: an average's square is at most the average of the
+// squares). K_A couples only nodes that share a tetrahedron, so A's factor keeps the 1-ring's
+// fill (K itself couples nodes two edges apart: its factor held 2.5 times the nonzeros and
+// stepped 2-3 times slower). This is implicit Euler with stiffness K and the damping
+// alpha M + beta K_A + dt (K_A - K), positive semi-definite: unconditionally stable, and its
+// rest is K u = f exactly (the modes that lock settle a little slower). A never changes, so it
+// is factored once (sparse LDL^T, CHOLMOD's fill-reducing ordering) at construction and each
+// step is one K u product and one pair of triangular solves: no iteration.
 //
 // Units: SI; vectors are 3 per node (node i's x y z at 3i..3i+2), in the body's rest frame.
 // Invariants: fixed nodes (glued to the world) never move: their displacement and velocity stay
