@@ -1,0 +1,102 @@
+// Time-domain passivity at a haptic device's port (Hannaford and Ryu 2002): a passivity observer
+// counts the energy the hand has put into everything behind the port (the link to the physics,
+// its delay, jitter, loss and hold, the virtual coupling, the world), and a passivity controller
+// adds the least damping that keeps that energy from going below zero, capped at what the device
+// can render. A loop that stays passive without it is left untouched: the controller acts only
+// on the energy the rest of the loop made up (a stiff wall rendered through a delayed link gives
+// energy back on the way out that the hand never put in: the buzz).
+//
+// Per tick of period dt, with F the force command (N, device frame) and v the device's velocity
+// (m/s, the last reading's):
+//   e = -F'.v dt - d           the energy the hand put in this tick (J), F' the force rendered,
+//                              d = b_min |v|^2 dt while F is not zero (else 0);
+//   E = min(E_max, E + e)       the observer's energy, E(0) = 0;
+//   if E + (-F.v dt - d) < 0:  alpha = min(passivity_damping_limit, -(E - F.v dt - d) / (|v|^2 dt)),
+//                              F' = F - alpha v   (so that E >= 0 whenever alpha is not capped).
+// F' is then saturated to max_force (direction kept). Three choices beyond Hannaford and Ryu's
+// observer, each measured in passivity_controller_test (a light, barely damped hand on a wall
+// behind a 10-100 ms round trip):
+//  - E_max (passivity_reservoir): the observer banks at most this much. Unbounded, a press
+//    banks what the coupling's damper dissipates, and a delayed loop then spends it making the
+//    hand ring (Kim and Ryu's energy bounding has the same bound);
+//  - b_min (passivity_min_damping): while it pushes, the loop behind the port must dissipate at
+//    least as a damper b_min would (strictly passive): at E = 0 a merely passive loop neither
+//    feeds nor drains the hand's own ringing, and a barely damped hand rings on. Free motion
+//    (F = 0) is not charged, so it stays free;
+//  - the damper alpha v only takes out the part of F along the motion (alpha |v|^2 dt <= F.v dt
+//    + d), so it never adds force beyond the command's and the limit only bounds alpha.
+#pragma once
+
+#include "god_finger/support/parameter_table.h"
+
+#include <Eigen/Core>
+#include <string>
+
+namespace god_finger
+{
+struct PassivityParams
+{
+  double passivity_damping_limit = 50.0;  // N s/m: the most damping added (0: controller off)
+  double passivity_min_damping = 4.0;     // N s/m: b_min, the dissipation asked while pushing
+  double passivity_reservoir = 0.1;       // J: E_max, the most energy the observer banks
+};
+// passivity_damping_limit, passivity_min_damping, passivity_reservoir: names, units, ranges,
+// meanings.
+const ParameterTable<PassivityParams>& passivityParameterTable();
+// Empty on success, else one line naming the first bad value and its range.
+std::string validate(const PassivityParams& params);
+
+class PassivityController
+{
+ public:
+  // `period` (s): the device loop's tick. Throws InputError on bad parameters or period.
+  PassivityController(const PassivityParams& params, double period);
+
+  // The force to render this tick for the command `force`, the device moving at `velocity`;
+  // |result| <= max_force. Non-finite input: the command is returned unchanged and not counted.
+  Eigen::Vector3d apply(const Eigen::Vector3d& force, const Eigen::Vector3d& velocity, double max_force);
+  // Forgets the observed energy (a new session: the device's force was off).
+  void reset();
+
+  // J: the energy the hand put in through the port since the last reset, sum of -F'.v dt (the
+  // passivity observer's figure: a passive loop keeps it >= 0).
+  double energy() const
+  {
+    return energy_;
+  }
+  double lowestEnergy() const  // J: the lowest energy() since the last reset
+  {
+    return lowest_energy_;
+  }
+  double bank() const  // J: the controller's E (what it lets the loop give back), <= E_max
+  {
+    return bank_;
+  }
+  double damping() const  // N s/m: the damping added at the last tick
+  {
+    return damping_;
+  }
+  double dissipated() const  // J: the energy the controller took out since the last reset
+  {
+    return dissipated_;
+  }
+  long activeTicks() const  // ticks the controller added damping at, since the last reset
+  {
+    return active_ticks_;
+  }
+  const PassivityParams& params() const
+  {
+    return params_;
+  }
+
+ private:
+  PassivityParams params_;
+  double period_;
+  double bank_ = 0.0;
+  double energy_ = 0.0;
+  double lowest_energy_ = 0.0;
+  double damping_ = 0.0;
+  double dissipated_ = 0.0;
+  long active_ticks_ = 0;
+};
+}  // namespace god_finger
