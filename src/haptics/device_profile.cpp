@@ -60,6 +60,9 @@ const ParameterTable<DeviceProfile>& deviceProfileTable()
     const ParameterTable<P> guard =
         liftRows<P, ForceGuardParams>(forceGuardParameterTable(), [](P& p) -> ForceGuardParams& { return p.guard; });
     rows.insert(rows.end(), guard.begin(), guard.end());
+    const ParameterTable<P> passivity =
+        liftRows<P, PassivityParams>(passivityParameterTable(), [](P& p) -> PassivityParams& { return p.passivity; });
+    rows.insert(rows.end(), passivity.begin(), passivity.end());
     rows.push_back(realRow<P>(
         "workspace_radius", "m", openClosed(0.0, 10.0),
         "radius of the device's workspace from its centre: beyond it the proxy stops and a wall pushes the hand back",

@@ -6,6 +6,7 @@
 #include "god_finger/DeviceState.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/haptics/force_guard.h"
+#include "god_finger/haptics/passivity_controller.h"
 #include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/servo_clock.h"
@@ -66,6 +67,9 @@ struct DeviceDriverNode::Impl
   std::string node_name;
   std::unique_ptr<HapticDevice> device;
   std::unique_ptr<ForceGuard> guard;
+  // Under `mutex`: the passivity observer and controller after the guard (its force and the
+  // device's last velocity in, the force rendered out).
+  std::unique_ptr<PassivityController> passivity;
   double period = 1e-3;
   int realtime_priority = 0;
   std::string frame;
@@ -181,6 +185,10 @@ struct DeviceDriverNode::Impl
     long saturated = 0;
     bool stopped = false;
     long budget_limited = 0;
+    double passivity_energy = 0.0;
+    double passivity_lowest = 0.0;
+    double passivity_dissipated = 0.0;
+    long passivity_ticks = 0;
     std::vector<double> trips;
     {
       std::lock_guard<std::mutex> lock(mutex);
@@ -189,6 +197,10 @@ struct DeviceDriverNode::Impl
       saturated = guard->saturated();
       stopped = guard->stopped();
       budget_limited = guard->budgetLimited();
+      passivity_energy = passivity->energy();
+      passivity_lowest = passivity->lowestEnergy();
+      passivity_dissipated = passivity->dissipated();
+      passivity_ticks = passivity->activeTicks();
     }
     {
       std::lock_guard<std::mutex> lock(trips_mutex);
@@ -208,6 +220,14 @@ struct DeviceDriverNode::Impl
     add("round_trip_us_p50", jsonNumber(percentile(trips, 0.5)));
     add("round_trip_us_p99", jsonNumber(percentile(trips, 0.99)));
     add("round_trip_us_max", jsonNumber(trips.empty() ? NAN : *std::max_element(trips.begin(), trips.end())));
+    // The passivity observer at this port (haptics/passivity_controller.h): the energy the hand
+    // put into the loop behind it since the start (J), its lowest, what the controller's damping
+    // took out (J) and at how many ticks.
+    add("passivity_energy_J", jsonNumber(passivity_energy));
+    add("passivity_lowest_energy_J", jsonNumber(passivity_lowest));
+    add("passivity_dissipated_J", jsonNumber(passivity_dissipated));
+    add("passivity_damped_ticks", std::to_string(passivity_ticks));
+    add("passivity_damping_limit", jsonNumber(profile.passivity.passivity_damping_limit));
 
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
@@ -218,6 +238,7 @@ struct DeviceDriverNode::Impl
     flushDenormalsInThisThread();  // support/denormals.h
     requestRealTimePriority(realtime_priority, node_name + " (device loop)");
     FixedRateSchedule schedule(period, steadySeconds());
+    Eigen::Vector3d last_velocity = Eigen::Vector3d::Zero();  // m/s, device frame: the last reading's
     while (running && ros::ok())
     {
       const double t = now();
@@ -226,7 +247,7 @@ struct DeviceDriverNode::Impl
       double command_age = -1.0;
       {
         std::lock_guard<std::mutex> lock(mutex);
-        force = guard->output(t);
+        force = passivity->apply(guard->output(t), last_velocity, profile.coupling.max_force);
         if (command_time >= 0.0)
         {
           command_age = t - command_time;
@@ -248,6 +269,7 @@ struct DeviceDriverNode::Impl
         ros::shutdown();
         return;
       }
+      last_velocity = reading.velocity;
       DriverSample* sample = samples.reserve();
       if (sample)
       {
@@ -348,6 +370,7 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   const LayeredParameterSource device_params(private_params, interface_params);
   const InterfaceConfig config = readInterfaceConfig(device_params, nh.getNamespace());
   impl.guard = std::make_unique<ForceGuard>(config.profile.coupling.max_force, config.profile.guard);
+  impl.passivity = std::make_unique<PassivityController>(config.profile.passivity, impl.period);
   impl.profile = config.profile;
   const std::string backend_name = readString(device_params, "backend", "fake");
   const DeviceBackend& backend = findDeviceBackend(backend_name, device_params.fullName("backend"));

@@ -159,6 +159,13 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
     std::array<Eigen::Vector3d, 4> gradients;
     const double tet_volume = tetGradients(mesh_.nodes, tet, &gradients);
     addDeviatoricStiffness(tet, gradients, tet_volume, mu, &triplets);
+    Eigen::Matrix<double, 3, 4> columns;
+    for (int a = 0; a < 4; ++a)
+    {
+      columns.col(a) = gradients[a];
+    }
+    tet_gradients_.push_back(columns);
+    tet_volumes_.push_back(tet_volume);
     for (int a = 0; a < 4; ++a)
     {
       for (int b = 0; b < 4; ++b)
@@ -194,6 +201,15 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
   }
   stiffness_.resize(dofs, dofs);
   stiffness_.setFromTriplets(triplets.begin(), triplets.end());
+  shear_modulus_ = mu;
+  bulk_modulus_ = bulk;
+  nodal_volume_.resize(nodeCount());
+  for (int node = 0; node < nodeCount(); ++node)
+  {
+    nodal_volume_(node) = dilatation[node].volume;
+  }
+  nodal_pressure_ = Eigen::VectorXd::Zero(nodeCount());
+  ku_ = Eigen::VectorXd::Zero(dofs);
   gravity_load_.resize(dofs);
   for (int node = 0; node < nodeCount(); ++node)
   {
@@ -216,10 +232,8 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
   }
   displacement_ = Eigen::VectorXd::Zero(dofs);
   velocity_ = Eigen::VectorXd::Zero(dofs);
-  free_u_ = Eigen::VectorXd::Zero(free_count);
   free_v_ = Eigen::VectorXd::Zero(free_count);
   free_rhs_ = Eigen::VectorXd::Zero(free_count);
-  free_ku_ = Eigen::VectorXd::Zero(free_count);
   last_forces_ = Eigen::VectorXd::Zero(dofs);
 }
 
@@ -255,16 +269,12 @@ void ElasticBody::step(const Eigen::VectorXd& external_forces)
   }
   ++solved_steps_;
   const int free_count = static_cast<int>(free_dofs_.size());
-  for (int i = 0; i < free_count; ++i)
-  {
-    free_u_(i) = displacement_(free_dofs_[i]);
-  }
-  free_ku_.noalias() = free_stiffness_ * free_u_;
+  applyStiffness(displacement_, &ku_);
   for (int i = 0; i < free_count; ++i)
   {
     const int dof = free_dofs_[i];
     free_rhs_(i) =
-        lumped_mass_(dof) * velocity_(dof) + time_step_ * (external_forces(dof) + gravity_load_(dof) - free_ku_(i));
+        lumped_mass_(dof) * velocity_(dof) + time_step_ * (external_forces(dof) + gravity_load_(dof) - ku_(dof));
   }
   step_factor_->solve(free_rhs_, &free_v_);
   for (int i = 0; i < free_count; ++i)
@@ -329,6 +339,47 @@ Eigen::VectorXd ElasticBody::staticDisplacement(const Eigen::VectorXd& external_
     solution(free_dofs_[i]) = free_solution(i);
   }
   return solution;
+}
+
+void ElasticBody::applyStiffness(const Eigen::VectorXd& u, Eigen::VectorXd* ku)
+{
+  // The nodes' pressure: kappa times each node's averaged volume change.
+  nodal_pressure_.setZero();
+  for (std::size_t e = 0; e < mesh_.tets.size(); ++e)
+  {
+    const std::array<int, 4>& tet = mesh_.tets[e];
+    double divergence = 0.0;
+    for (int a = 0; a < 4; ++a)
+    {
+      divergence += tet_gradients_[e].col(a).dot(u.segment<3>(3 * tet[a]));
+    }
+    for (int a = 0; a < 4; ++a)
+    {
+      nodal_pressure_(tet[a]) += 0.25 * tet_volumes_[e] * divergence;
+    }
+  }
+  nodal_pressure_ = bulk_modulus_ * nodal_pressure_.cwiseQuotient(nodal_volume_);
+  // Per tetrahedron: its deviatoric stress and its nodes' mean pressure, on its nodes.
+  ku->setZero();
+  for (std::size_t e = 0; e < mesh_.tets.size(); ++e)
+  {
+    const std::array<int, 4>& tet = mesh_.tets[e];
+    const Eigen::Matrix<double, 3, 4>& g = tet_gradients_[e];
+    Eigen::Matrix3d displacement_gradient = Eigen::Matrix3d::Zero();
+    double pressure = 0.0;
+    for (int a = 0; a < 4; ++a)
+    {
+      displacement_gradient.noalias() += u.segment<3>(3 * tet[a]) * g.col(a).transpose();
+      pressure += 0.25 * nodal_pressure_(tet[a]);
+    }
+    const Eigen::Matrix3d strain = 0.5 * (displacement_gradient + displacement_gradient.transpose());
+    Eigen::Matrix3d stress = 2.0 * shear_modulus_ * strain;
+    stress.diagonal().array() += pressure - 2.0 * shear_modulus_ * strain.trace() / 3.0;
+    for (int a = 0; a < 4; ++a)
+    {
+      ku->segment<3>(3 * tet[a]).noalias() += tet_volumes_[e] * stress * g.col(a);
+    }
+  }
 }
 
 void ElasticBody::positions(std::vector<Eigen::Vector3d>* out) const

@@ -115,5 +115,24 @@ class LaunchArguments(unittest.TestCase):
             self.assertEqual(result.returncode, 0, "%s: %s" % (args, result.stdout + result.stderr))
 
 
+    def test_a_network_link_needs_processes_and_inserts_three_delay_lines(self):
+        # delay:=, jitter:=, loss:= on a one-process topology stop roslaunch with one line.
+        for args in (["delay:=0.03"], ["topology:=nodelets", "loss:=0.02"]):
+            result = roslaunch_nodes("demo.launch", args)
+            self.assertNotEqual(result.returncode, 0, "%s was accepted" % args)
+            lines = [line for line in (result.stdout + result.stderr).splitlines()
+                     if "a network link needs topology:=processes" in line]
+            self.assertEqual(len(lines), 1, result.stdout + result.stderr)
+        # With processes: the haptic node's topics go through god_finger_delay, one per topic.
+        result = roslaunch_nodes("demo.launch", ["topology:=processes", "delay:=0.03"])
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        nodes = result.stdout.split()
+        for link in ("/finger/link_pose", "/finger/link_feedback", "/finger/link_proxy"):
+            self.assertIn(link, nodes)
+        result = roslaunch_nodes("demo.launch", ["topology:=processes"])
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+        self.assertNotIn("/finger/link_pose", result.stdout.split())
+
+
 if __name__ == "__main__":
     rostest.rosrun("god_finger", "launch_arguments", LaunchArguments, sys.argv)

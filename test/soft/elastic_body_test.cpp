@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 namespace god_finger
 {
 namespace
@@ -65,6 +67,21 @@ TEST(ElasticBody, StiffnessOfARigidMotionIsZero)
   EXPECT_NEAR(energy, 0.5 * (material.lameLambda() + 2.0 * material.shearModulus()) * body.volume(), 1e-9 * energy);
   EXPECT_NEAR(body.volume(), 1e-3, 1e-15);
   EXPECT_NEAR(body.mass(), 1.0, 1e-12);
+}
+
+TEST(ElasticBody, TheStepsStiffnessWithoutTheMatrixIsTheMatrix)
+{
+  // K u per element (deviatoric stress, the nodes' averaged pressure) against the assembled K,
+  // on a graded mesh and a random displacement.
+  const TetMesh mesh = cube(4, 2.0);
+  ElasticBody body(mesh, rubber(), {0, 1, 2}, 1e-3, Eigen::Vector3d(0.0, 0.0, -9.81));
+  std::srand(7);
+  const Eigen::VectorXd u = 1e-3 * Eigen::VectorXd::Random(3 * body.nodeCount());
+  Eigen::VectorXd ku(3 * body.nodeCount());
+  body.applyStiffness(u, &ku);
+  const Eigen::VectorXd expected = body.stiffness() * u;
+  EXPECT_LT((ku - expected).norm(), 1e-12 * expected.norm());
+  EXPECT_GT(expected.norm(), 0.0);
 }
 
 TEST(ElasticBody, UniaxialStressShortensTheBlockByFLOverEA)

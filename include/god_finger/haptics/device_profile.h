@@ -6,8 +6,9 @@
 #pragma once
 
 #include "god_finger/haptics/force_guard.h"
-#include "god_finger/support/parameter_source.h"
+#include "god_finger/haptics/passivity_controller.h"
 #include "god_finger/haptics/virtual_coupling.h"
+#include "god_finger/support/parameter_source.h"
 
 #include <string>
 
@@ -18,6 +19,9 @@ struct DeviceProfile
   // coupling.max_force is the device's one force limit: the guard saturates there too.
   CouplingProfile coupling;
   ForceGuardParams guard;
+  // The passivity observer and controller at the device's port (the device driver's, after the
+  // guard): the loop behind it (the link, the physics) kept passive.
+  PassivityParams passivity;
   // m, device frame, from the workspace centre (the device origin): readings beyond it are
   // clamped onto it and the hand feels a wall (haptics/workspace_bound.h). Scripts stay within it.
   double workspace_radius = 0.5;
@@ -42,8 +46,8 @@ bool parseTorqueAxes(const std::string& name, unsigned* axes);
 // max_torque: what the device may render. Real-time safe.
 Eigen::Vector3d renderableTorque(const DeviceProfile& profile, const Eigen::Vector3d& torque);
 
-// The coupling's rows, the guard's, workspace_radius, torque_axes and max_torque: what config/devices/NAME.yaml may
-// set.
+// The coupling's rows, the guard's, the passivity controller's, workspace_radius, torque_axes and
+// max_torque: what config/devices/NAME.yaml may set.
 const ParameterTable<DeviceProfile>& deviceProfileTable();
 
 // Every row of deviceProfileTable() that `source` sets (defaults are the fake device's);

@@ -1,0 +1,88 @@
+#!/usr/bin/python3
+"""rostest: a haptic loop across a delayed network (demo.launch topology:=processes delay:=0.03
+device:=interactive). Three god_finger_delay links carry the finger's pose, feedback and proxy
+15 ms each way, and say so on /diagnostics; the device driver's round trip (a device state to
+the command that answers it) is at least the added 30 ms; the user drags the handle 2 cm into
+the table (the scene's stiff wall) and holds it: the hand feels the table, and the driver's
+passivity observer (haptics/passivity_controller.h) finds the loop passive: the energy the hand
+put in never went below -1e-4 J. Waits on conditions with deadlines."""
+import math
+import sys
+import unittest
+
+import rospy
+import rostest
+from diagnostic_msgs.msg import DiagnosticArray
+from geometry_msgs.msg import Point, WrenchStamped
+from god_finger.msg import DeviceState
+from ros_test_support import RosTestSupport, drag_marker
+from visualization_msgs.msg import InteractiveMarkerFeedback
+
+LINKS = ("/finger/link/pose", "/finger/feedback", "/finger/proxy")
+
+
+class Link(RosTestSupport, unittest.TestCase):
+    def setUp(self):
+        rospy.init_node("link_test")
+        self.statuses = {}  # status name -> {key: value}, the newest
+        self.state = None
+        self.force = 0.0
+        rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=20)
+        rospy.Subscriber("/finger/device/state", DeviceState, self.on_state, queue_size=10)
+        rospy.Subscriber("/finger/link/feedback", WrenchStamped, self.on_feedback, queue_size=10)
+
+    def on_diagnostics(self, array):
+        for status in array.status:
+            self.statuses[status.name] = {pair.key: pair.value for pair in status.values}
+
+    def on_state(self, message):
+        self.state = message.position
+
+    def on_feedback(self, message):
+        f = message.wrench.force
+        self.force = math.sqrt(f.x * f.x + f.y * f.y + f.z * f.z)
+
+    def status(self, start):
+        """The newest status whose name starts with `start`, or None."""
+        for name, values in list(self.statuses.items()):
+            if name.startswith(start):
+                return values
+        return None
+
+    def driver(self):
+        for name, values in list(self.statuses.items()):
+            if name.startswith("/finger/device_driver") and "passivity_lowest_energy_J" in values:
+                return values
+        return None
+
+    def test_a_press_across_the_link_is_felt_and_passive(self):
+        for link in LINKS:
+            self.wait_for(lambda: self.status("delay: " + link) is not None, 30, "the link %s on /diagnostics" % link)
+        drag = rospy.Publisher("/finger/device_marker/feedback", InteractiveMarkerFeedback, queue_size=10)
+        self.wait_for(lambda: self.state is not None and drag.get_num_connections() > 0, 30,
+                      "the handle's device state and its marker server")
+        # Beside the ball (4 cm radius at the origin), then 2 cm into the table (its top z = 0; the
+        # interactive profile's workspace is the world's).
+        drag_marker(drag, self.state, 0.1, 0.0, 0.05, 1.0)
+        drag_marker(drag, Point(0.1, 0.0, 0.05), 0.1, 0.0, -0.02, 1.0)
+        self.wait_for(lambda: self.force > 1.0, 20, lambda: "the hand to feel the table (%.2f N)" % self.force)
+        # Each link delays by 15 ms (its mean over the last second).
+        for link in LINKS:
+            self.wait_for(lambda: float(self.status("delay: " + link).get("mean delay (s), last second", "nan")) > 0.014,
+                          10,
+                          lambda: "link %s's delay (%s)" % (link, self.status("delay: " + link)))
+        # The driver's round trip includes both ways (us) and its passivity observer is on.
+        self.wait_for(lambda: self.driver() is not None and float(self.driver()["round_trip_us_p50"]) >= 30000.0, 10,
+                      lambda: "the driver's round trip over 30 ms (%s)" % self.driver())
+        driver = self.driver()
+        lowest = float(driver["passivity_lowest_energy_J"])
+        print("across a 30 ms round trip: %.2f N on the hand; driver round trip p50 %.1f ms; passivity: energy %s J, "
+              "lowest %s J, damping took %s J at %s ticks" %
+              (self.force, 1e-3 * float(driver["round_trip_us_p50"]), driver["passivity_energy_J"], lowest,
+               driver["passivity_dissipated_J"], driver["passivity_damped_ticks"]))
+        self.assertGreaterEqual(lowest, -1e-4)
+        self.assertGreater(float(driver["passivity_damping_limit"]), 0.0)
+
+
+if __name__ == "__main__":
+    rostest.rosrun("god_finger", "link", Link, sys.argv)
