@@ -730,14 +730,19 @@ struct GodFingerWorld::Impl
         const Eigen::Vector3d measured = state.contact_count == 1
                                              ? Eigen::Vector3d(-on_proxy)
                                              : Eigen::Vector3d(-std::max(0.0, pressing) * area.normal);
-        // One contact: under-relaxed (soft_body.h, kSoftLoadRelaxation).
-        const Eigen::Vector3d on_body =
-            state.contact_count == 1
-                ? Eigen::Vector3d(proxies[i].soft_load + kSoftLoadRelaxation * (measured - proxies[i].soft_load))
-                : measured;
-        if (state.contact_count == 1)
+        // One contact: under-relaxed (soft_body.h, kSoftLoadRelaxation), from the last load on the
+        // same body (none on another).
+        Eigen::Vector3d on_body = measured;
+        if (state.contact_count == 1 && measured.allFinite())
         {
-          proxies[i].soft_load = on_body;
+          Proxy& loading = proxies[i];
+          if (loading.soft_load_body != area.body)
+          {
+            loading.soft_load.setZero();
+          }
+          on_body = loading.soft_load + kSoftLoadRelaxation * (measured - loading.soft_load);
+          loading.soft_load = on_body;
+          loading.soft_load_body = area.body;
           loaded_soft = true;
         }
         if (on_body.allFinite() && !on_body.isZero(0.0))
@@ -751,6 +756,7 @@ struct GodFingerWorld::Impl
       if (!loaded_soft)
       {
         proxies[i].soft_load.setZero();
+        proxies[i].soft_load_body = -1;
       }
     }
     bool moved = false;

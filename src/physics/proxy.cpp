@@ -41,5 +41,6 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->pads.assign(body_count, PadState());
   proxy->let_go_steps = 0;
   proxy->soft_load.setZero();
+  proxy->soft_load_body = -1;
 }
 }  // namespace god_finger::internal

@@ -51,6 +51,7 @@ struct Proxy
   // N, world: the load this proxy last gave the one soft body it touches (under-relaxed,
   // soft_body.h kSoftLoadRelaxation); zero while it touches none.
   Eigen::Vector3d soft_load = Eigen::Vector3d::Zero();
+  int soft_load_body = -1;  // the body soft_load was given to (scene index), -1: none
 };
 
 // Builds the proxy's sphere and rigid body at `proxy.initial` (index `index`, touching

@@ -85,7 +85,7 @@ struct DeviceDriverNode::Impl
   double command_time = -1.0;       // under `mutex`: when the last accepted force command arrived (now())
   ros::ServiceServer stop_service;  // stop_force, in the interface's namespace
   std::unique_ptr<interactive_markers::InteractiveMarkerServer> marker_server;
-  std::mutex mutex;  // guards the guard, and nothing else
+  std::mutex mutex;  // guards the guard, the passivity controller and command_time
   std::thread thread;
   std::thread publisher_thread;
   std::atomic<bool> running{true};
@@ -247,10 +247,18 @@ struct DeviceDriverNode::Impl
       double command_age = -1.0;
       {
         std::lock_guard<std::mutex> lock(mutex);
-        force = passivity->apply(guard->output(t), last_velocity, profile.coupling.max_force);
+        force = guard->output(t);
+        if (guard->scale(t) > 0.0)
+        {
+          force = passivity->apply(force, last_velocity, profile.coupling.max_force);
+        }
+        else
+        {
+          passivity->reset();  // stopped, timed out or not started: the next session starts clean
+        }
         if (command_time >= 0.0)
         {
-          command_age = t - command_time;
+          command_age = std::max(0.0, t - command_time);  // a command that came after `t` was read: 0
         }
         // The torque through the force's guard (soft start, watchdog ramp, stop), while fresh.
         if (t - torque_time <= guard->params().command_timeout)

@@ -360,6 +360,7 @@ void ElasticBody::applyStiffness(const Eigen::VectorXd& u, Eigen::VectorXd* ku)
   }
   nodal_pressure_ = bulk_modulus_ * nodal_pressure_.cwiseQuotient(nodal_volume_);
   // Per tetrahedron: its deviatoric stress and its nodes' mean pressure, on its nodes.
+  ku->resize(3 * nodeCount());  // no allocation when presized (as step()'s scratch is)
   ku->setZero();
   for (std::size_t e = 0; e < mesh_.tets.size(); ++e)
   {

@@ -142,20 +142,26 @@ TEST(PassivityController, TheDampingIsTheLeastThatRestoresTheEnergyAndIsCapped)
   EXPECT_EQ(controller.damping(), 10.0);
   EXPECT_NEAR(out.x(), 9.0, 1e-12);
   EXPECT_NEAR(controller.energy(), -9.0 * 0.1 * 1e-3, 1e-15);
+  // No force (the hand moved off the wall), slowly: the debt is still paid (10 N s/m at 0.03 m/s
+  // takes 9e-6 J a tick) and nothing is asked for the free motion itself.
+  out = controller.apply(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.03, 0.0, 0.0), 20.0);
+  EXPECT_EQ(controller.damping(), 10.0);
+  EXPECT_NEAR(out.x(), -0.3, 1e-12);
+  EXPECT_NEAR(controller.bank(), -9e-4 + 9e-6, 1e-15);
   // The hand pushing against the force puts 5e-4 J in, which does not pay the 9e-4 J debt: the
   // controller damps on, capped (40 N s/m asked): -5 - 10 * 0.1 = -6 N, 6e-4 J in.
   out = controller.apply(Eigen::Vector3d(-5.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.0, 0.0), 100.0);
   EXPECT_EQ(controller.damping(), 10.0);
   EXPECT_NEAR(out.x(), -6.0, 1e-12);
-  EXPECT_NEAR(controller.energy(), -3e-4, 1e-15);
-  EXPECT_NEAR(controller.bank(), -3e-4, 1e-15);
+  EXPECT_NEAR(controller.energy(), -9e-4 + 9e-6 + 6e-4, 1e-15);
+  EXPECT_NEAR(controller.bank(), -9e-4 + 9e-6 + 6e-4, 1e-15);
   // Then it fills: the observer's energy by all that comes in, the bank up to passivity_reservoir.
   for (int i = 0; i < 10; ++i)
   {
     controller.apply(Eigen::Vector3d(-5.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.0, 0.0), 100.0);
   }
   EXPECT_EQ(controller.damping(), 0.0);
-  EXPECT_NEAR(controller.energy(), -3e-4 + 10 * 5e-4, 1e-15);
+  EXPECT_NEAR(controller.energy(), -9e-4 + 9e-6 + 6e-4 + 10 * 5e-4, 1e-15);
   EXPECT_EQ(controller.bank(), 1e-3);
 }
 

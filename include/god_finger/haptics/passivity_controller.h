@@ -8,23 +8,31 @@
 //
 // Per tick of period dt, with F the force command (N, device frame) and v the device's velocity
 // (m/s, the last reading's):
-//   e = -F'.v dt - d           the energy the hand put in this tick (J), F' the force rendered,
-//                              d = b_min |v|^2 dt while F is not zero (else 0);
-//   E = min(E_max, E + e)       the observer's energy, E(0) = 0;
-//   if E + (-F.v dt - d) < 0:  alpha = min(passivity_damping_limit, -(E - F.v dt - d) / (|v|^2 dt)),
-//                              F' = F - alpha v   (so that E >= 0 whenever alpha is not capped).
-// F' is then saturated to max_force (direction kept). Three choices beyond Hannaford and Ryu's
-// observer, each measured in passivity_controller_test (a light, barely damped hand on a wall
-// behind a 10-100 ms round trip):
-//  - E_max (passivity_reservoir): the observer banks at most this much. Unbounded, a press
-//    banks what the coupling's damper dissipates, and a delayed loop then spends it making the
-//    hand ring (Kim and Ryu's energy bounding has the same bound);
+//   d = b_min |v|^2 dt if F != 0, else 0: the dissipation asked of the loop this tick (J);
+//   if B - F.v dt - d < 0:              alpha = min(passivity_damping_limit, -(B - F.v dt - d) / (|v|^2 dt)),
+//                                       F' = F - alpha v, then saturated at max_force;
+//   B = min(E_max, B - F'.v dt - d)     the controller's bank, B(0) = 0;
+//   E = E - F'.v dt                     the observer's energy (energy()): what the hand put in.
+// B >= 0 after every tick unless alpha was capped or F' saturated; E >= B always. Choices beyond
+// Hannaford and Ryu's observer, each measured in passivity_controller_test (a light, barely
+// damped hand on a wall behind a 10-100 ms round trip):
+//  - E_max (passivity_reservoir): the bank holds at most this much. Unbounded, a press banks
+//    what the coupling's damper dissipates, and a delayed loop then spends it making the hand
+//    ring (Kim and Ryu's energy bounding has the same bound);
 //  - b_min (passivity_min_damping): while it pushes, the loop behind the port must dissipate at
-//    least as a damper b_min would (strictly passive): at E = 0 a merely passive loop neither
-//    feeds nor drains the hand's own ringing, and a barely damped hand rings on. Free motion
-//    (F = 0) is not charged, so it stays free;
-//  - the damper alpha v only takes out the part of F along the motion (alpha |v|^2 dt <= F.v dt
-//    + d), so it never adds force beyond the command's and the limit only bounds alpha.
+//    least as a damper b_min would (strictly passive): at B = 0 a merely passive loop neither
+//    feeds nor drains the hand's own ringing, and a barely damped hand rings on;
+//  - free motion (F = 0) is not charged (d = 0), so it stays free, unless the bank is in debt
+//    (a capped alpha left B < 0): then it is damped until the debt is paid (measured: without
+//    that, the 100 ms round trip's handle bounced on the wall, 70 mm peak to peak);
+//  - the damper opposes the motion (-alpha v). It acts after the force guard
+//    (haptics/force_guard.h): the guard's stop, watchdog and soft start zero F and with it the
+//    damper (the device driver then resets the controller); the guard's rate and budget limits
+//    do not bound the damper's own change, max_force does.
+//
+// Units: SI, the device frame. passivity_damping_limit 0 turns the controller off (the
+// observer still counts). Real-time safety: apply() and the readers allocate nothing, take no
+// lock and log nothing.
 #pragma once
 
 #include "god_finger/support/parameter_table.h"

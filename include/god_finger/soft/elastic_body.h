@@ -130,7 +130,8 @@ class ElasticBody
   }
   // K u (N, 3 per node) without the matrix: per tetrahedron its deviatoric stress, per node its
   // averaged pressure (equal to stiffness() * u up to rounding; about a tenth of the matrix's
-  // memory traffic). RT-safe (its scratch is the body's: not concurrently with step()).
+  // memory traffic). RT-safe when `ku` has 3 per node already (else it is resized); its scratch
+  // is the body's: not concurrently with step().
   void applyStiffness(const Eigen::VectorXd& u, Eigen::VectorXd* ku);
   // Nonzeros of the step's factor (what a step's solve costs).
   long factorNonZeros() const;
