@@ -35,7 +35,7 @@ void worldNearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher
 {
   const auto* a = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
   const auto* b = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-  if (!a->isActive() && !b->isActive())
+  if ((!a->isActive() && !b->isActive()) || (a->isStaticOrKinematicObject() && b->isStaticOrKinematicObject()))
   {
     return;
   }

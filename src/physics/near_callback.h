@@ -1,6 +1,7 @@
 // The world's Bullet near callback: which shapes a broadphase pair's narrowphase collides.
 // - A pair of sleeping (or static) bodies is skipped first: a resting table of 1000 boxes has
-//   1000 such pairs, visited every step.
+//   1000 such pairs, visited every step. So is a pair of static or kinematic ones (a resting
+//   soft body, kinematic, against the table it stands on: its own support holds it).
 // - A finger (proxy) against a body with a FingerSurface (scene_body.h) collides with that
 //   surface, the body's true one, not with its hulls: a finger enters a cup and presses the
 //   floor of a plate, and its contact point lies on the walk mesh. So does a free convex body

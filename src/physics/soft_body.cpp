@@ -10,6 +10,7 @@
 
 #include <btBulletCollisionCommon.h>
 
+#include <algorithm>
 #include <limits>
 
 namespace god_finger::internal
@@ -25,9 +26,17 @@ void moveSurface(btCollisionWorld* world, SceneBody* body)
 {
   SoftVolume& volume = *body->soft;
   volume.elastic->positions(&volume.nodes);
+  if (volume.resting)
+  {
+    const Eigen::VectorXd& u = volume.elastic->displacement();
+    volume.shift = u.reshaped(3, u.size() / 3).rowwise().mean();
+    Eigen::Isometry3d at = volume.rigid_at_rest;
+    at.pretranslate(volume.body_in_world.linear() * volume.shift);
+    body->rigid->setWorldTransform(toBullet(at));
+  }
   for (std::size_t v = 0; v < volume.vertices.size(); ++v)
   {
-    volume.vertices[v] = volume.nodes[volume.node_of_vertex[v]];
+    volume.vertices[v] = volume.nodes[volume.node_of_vertex[v]] - volume.shift;
   }
   body->walk->moveVertices(volume.vertices);
   body->locator->refit();
@@ -75,11 +84,44 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
   const DeformableDescription& soft = *description.soft;
   volume.body_in_world = description.pose * description.collision_origin;
   const Eigen::Vector3d gravity_in_body = volume.body_in_world.linear().transpose() * gravity;
+  volume.resting = soft.resting;
+  volume.shift.setZero();
+  volume.rigid_at_rest = toEigen(body->rigid->getWorldTransform());
+  if (soft.resting)
+  {
+    // Kinematic: Bullet takes its velocity from its transform's change each step (the volume's
+    // mean motion), so the fingers' contacts see the surface move with it.
+    body->rigid->setCollisionFlags(body->rigid->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+    body->rigid->setActivationState(DISABLE_DEACTIVATION);
+  }
   try
   {
-    volume.elastic = std::make_unique<ElasticBody>(
-        soft.mesh, soft.material, nodesGluedToSupport(soft.mesh, volume.body_in_world), time_step, gravity_in_body);
-    volume.settled = volume.elastic->staticDisplacement(Eigen::VectorXd::Zero(3 * volume.elastic->nodeCount()));
+    if (soft.resting)
+    {
+      volume.elastic =
+          std::make_unique<ElasticBody>(soft.mesh, soft.material, std::vector<int>(), time_step, gravity_in_body);
+      SupportPlane plane;
+      plane.normal = volume.body_in_world.linear().transpose() * Eigen::Vector3d::UnitZ();
+      plane.offset = std::numeric_limits<double>::infinity();
+      for (const Eigen::Vector3d& node : soft.mesh.nodes)
+      {
+        plane.offset = std::min(plane.offset, plane.normal.dot(node));
+      }
+      plane.friction = soft.friction;
+      volume.elastic->setSupport(plane);
+      const Eigen::VectorXd no_load = Eigen::VectorXd::Zero(3 * volume.elastic->nodeCount());
+      for (int k = 0; k * time_step < kSoftSettleTime && !volume.elastic->sleeping(); ++k)
+      {
+        volume.elastic->step(no_load);
+      }
+      volume.settled = volume.elastic->displacement();
+    }
+    else
+    {
+      volume.elastic = std::make_unique<ElasticBody>(
+          soft.mesh, soft.material, nodesGluedToSupport(soft.mesh, volume.body_in_world), time_step, gravity_in_body);
+      volume.settled = volume.elastic->staticDisplacement(Eigen::VectorXd::Zero(3 * volume.elastic->nodeCount()));
+    }
   }
   catch (const InputError& error)
   {
@@ -163,7 +205,7 @@ void snapshotSoftSurface(const SceneBody& body, int index, SoftSurfaceState* out
   const Eigen::VectorXd& displacement = volume.elastic->displacement();
   for (std::size_t v = 0; v < volume.vertices.size(); ++v)
   {
-    out->vertices[v] = volume.body_in_world * volume.vertices[v];
+    out->vertices[v] = volume.body_in_world * (volume.vertices[v] + volume.shift);
     const int node = volume.node_of_vertex[v];
     out->sink[v] = static_cast<float>((displacement.segment<3>(3 * node) - volume.settled.segment<3>(3 * node)).norm());
   }

@@ -9,8 +9,16 @@
 // soft/soft_surface.h); the walk mesh, its locator and the Bullet mesh follow the surface, so the
 // next step's proxies collide with and walk on the deformed surface.
 //
+// A resting body (<support value="resting">) is free: no node is glued; it stands on the plane
+// under its lowest point at load (world z up), with its <friction> (ElasticBody::setSupport), and
+// starts settled on it (stepped until it sleeps). Its Bullet body follows the volume's mean
+// displacement (`shift`), and the walk and Bullet meshes are its nodes less that shift: so the
+// fingers' friction anchors, material points of that body, go where the body goes, and a pinch
+// can lift it. A glued body's shift stays 0.
+//
 // Frames: the body is static, its geometry frame is its link frame at BodyDescription::pose; the
-// volume's nodes, the walk mesh and the Bullet mesh are in that frame. Units SI.
+// volume's nodes are in that frame, the walk mesh and the Bullet mesh in that frame moved by
+// `shift`. Units SI.
 // Invariants: the walk mesh's vertex v is the volume's node node_of_vertex[v], displaced; the
 // start (and a reset) is the volume at rest under gravity (staticDisplacement), so a scene
 // starts still and its soft bodies sleep until touched. A body asleep moves nothing.
@@ -52,6 +60,11 @@ struct SoftVolume
   std::vector<Eigen::Vector3d> vertices;  // m, body frame: the walk mesh's, now
   Eigen::VectorXd sink;                   // m, 3 per node: scratch, the displacement since settling
   Eigen::Isometry3d body_in_world = Eigen::Isometry3d::Identity();
+  // A resting body's mean displacement (m, body frame; 0 for a glued body), and its Bullet
+  // body's transform at shift 0.
+  bool resting = false;
+  Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  Eigen::Isometry3d rigid_at_rest = Eigen::Isometry3d::Identity();
   // The surface's triangles in walk-mesh vertices, for observers (WorldSnapshot::soft_surfaces).
   std::shared_ptr<const std::vector<Eigen::Vector3i>> triangles;
 };
@@ -60,9 +73,11 @@ struct SoftVolume
 // vertices to the volume's nodes.
 std::unique_ptr<TriangleMesh> makeSoftWalkMesh(const BodyDescription& description, std::vector<int>* node_of_vertex);
 
-// The volume of `body` (made by makeSceneBody from `description`), glued where it rests, settled
-// under `gravity` (m/s^2, world), stepping at `time_step` (s); its surface moved to the settled
-// shape. InputError naming the body when its glued nodes do not hold it.
+// The volume of `body` (made by makeSceneBody from `description`), glued where it rests (or
+// resting there), settled under `gravity` (m/s^2, world), stepping at `time_step` (s); its
+// surface moved to the settled shape. InputError naming the body when its glued nodes do not
+// hold it. A resting body that does not come to rest within kSoftSettleTime keeps where it got.
+constexpr double kSoftSettleTime = 5.0;  // s
 void makeSoftVolume(const BodyDescription& description, double time_step, const Eigen::Vector3d& gravity,
                     SceneBody* body);
 

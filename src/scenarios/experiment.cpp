@@ -438,6 +438,43 @@ Script strokeSoftScript(std::uint64_t seed)
   return script;
 }
 
+// soft_ball.urdf: a soft ball of radius 3 cm (E 100 kPa, nu 0.45, 0.1 kg) resting free on the
+// table, its centre at (0, 0, 0.03). Two fingers at its equator close along x from +-7 cm to
+// touching (their proxies, radius 3 mm, at +-3.3 cm) in 0.8 s, squeeze their targets 1 cm past
+// that in 0.8-1.2 s (about 4 N each through the coupling, less the dimple's sink: the pads need
+// 0.6 N each at friction 0.8 to carry its 0.98 N), wait until 1.5 s, lift 5 cm in 1.5 s and hold
+// until 4 s. Asymmetry: the fingers 1 mm apart along y (+-0.5 mm), the right one off in z by the
+// jitter.
+Script pinchSoftScript(std::uint64_t seed)
+{
+  const double jitter = seededJitter(seed);
+  const double radius = 0.03;
+  const double proxy = 0.003;
+  const double squeeze = 0.01;
+  const double lift = 0.05;
+  Script script;
+  script.scene_file = "soft_ball.urdf";
+  script.object = "soft_ball";
+  script.lift_start = 1.5;
+  script.lift_end = 3.0;
+  script.lift_height = lift;
+  script.duration = 4.0;
+  for (int side : {-1, 1})
+  {
+    const double y = -0.0005 * side;
+    const double z = radius + (side > 0 ? jitter : 0.0);
+    const double touch = side * (radius + proxy);
+    const double pressed = side * (radius + proxy - squeeze);
+    script.fingers.emplace_back(std::vector<Waypoint>{{0.0, xyz(0.07 * side, y, z)},
+                                                      {0.8, xyz(touch, y, z)},
+                                                      {1.2, xyz(pressed, y, z)},
+                                                      {script.lift_start, xyz(pressed, y, z)},
+                                                      {script.lift_end, xyz(pressed, y, z + lift)},
+                                                      {script.duration, xyz(pressed, y, z + lift)}});
+  }
+  return script;
+}
+
 Script scriptFor(const ExperimentOptions& options)
 {
   switch (options.scenario)
@@ -468,6 +505,8 @@ Script scriptFor(const ExperimentOptions& options)
       return pressSoftScript(options.seed);
     case Scenario::kStrokeSoft:
       return strokeSoftScript(options.seed);
+    case Scenario::kPinchSoft:
+      return pinchSoftScript(options.seed);
   }
   return slideScript(options.push_height, options.seed);
 }
@@ -596,6 +635,8 @@ const char* scenarioName(Scenario scenario)
       return "press_soft";
     case Scenario::kStrokeSoft:
       return "stroke_soft";
+    case Scenario::kPinchSoft:
+      return "pinch_soft";
   }
   return "?";
 }
@@ -717,7 +758,7 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   OverlapMetrics overlap_metrics(world);
   // pinch_card: the grip's (pinch_metrics.h).
   std::unique_ptr<PinchMetrics> pinch;
-  if (options.scenario == Scenario::kPinchCard)
+  if (options.scenario == Scenario::kPinchCard || options.scenario == Scenario::kPinchSoft)
   {
     pinch = std::make_unique<PinchMetrics>(object, timesOf(script), world.bodyState(object));
   }
@@ -727,9 +768,10 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   {
     joint = std::make_unique<JointMetrics>(scene, timesOf(script));
   }
-  // press_soft, stroke_soft: the soft body's (soft_contact_metrics.h).
+  // press_soft, stroke_soft, pinch_soft: the soft body's (soft_contact_metrics.h).
   std::unique_ptr<SoftContactMetrics> soft;
-  if (options.scenario == Scenario::kPressSoft || options.scenario == Scenario::kStrokeSoft)
+  if (options.scenario == Scenario::kPressSoft || options.scenario == Scenario::kStrokeSoft ||
+      options.scenario == Scenario::kPinchSoft)
   {
     soft = std::make_unique<SoftContactMetrics>(options.scenario, object, timesOf(script), world);
   }

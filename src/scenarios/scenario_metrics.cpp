@@ -116,7 +116,8 @@ void ScenarioMetrics::add(double time, double dt, const BodyState& state)
       break;  // the joint's metrics (joint_metrics.h)
     case Scenario::kPressSoft:
     case Scenario::kStrokeSoft:
-      break;  // the soft body's metrics (soft_contact_metrics.h)
+    case Scenario::kPinchSoft:
+      break;  // the soft body's metrics (soft_contact_metrics.h; pinch_soft's grip: pinch_metrics.h)
   }
   last_ = state;
 }
@@ -193,10 +194,11 @@ std::map<std::string, double> ScenarioMetrics::metrics() const
       break;
     case Scenario::kPinchThin:
     case Scenario::kPinchCard:
-    case Scenario::kDoor:    // the joint's metrics (joint_metrics.h)
+    case Scenario::kDoor:  // the joint's metrics (joint_metrics.h)
     case Scenario::kDrawer:
     case Scenario::kPressSoft:  // the soft body's (soft_contact_metrics.h)
     case Scenario::kStrokeSoft:
+    case Scenario::kPinchSoft:
       break;
   }
   return result;

@@ -6,6 +6,7 @@
 #include "god_finger/support/text_numbers.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace god_finger
 {
@@ -29,6 +30,20 @@ SoftContactMetrics::SoftContactMetrics(Scenario scenario, int object, const Scen
   poisson_ratio_ = body.soft->material.poisson_ratio;
   untouched_ = world.walkMesh(object).vertices();
   locator_ = std::make_unique<SurfaceLocator>(world.walkMesh(object));
+  untouched_width_ = widthAlongX(untouched_);
+  start_height_ = world.bodyState(object).pose.translation().z();
+}
+
+double SoftContactMetrics::widthAlongX(const std::vector<Eigen::Vector3d>& vertices)
+{
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -lowest;
+  for (const Eigen::Vector3d& vertex : vertices)
+  {
+    lowest = std::min(lowest, vertex.x());
+    highest = std::max(highest, vertex.x());
+  }
+  return highest - lowest;
 }
 
 double SoftContactMetrics::deepestSink(const GodFingerWorld& world) const
@@ -44,25 +59,49 @@ double SoftContactMetrics::deepestSink(const GodFingerWorld& world) const
 
 void SoftContactMetrics::add(double time, const GodFingerWorld& world)
 {
-  const InterfaceState& finger = world.interfaceState(0);
-  bool touching = false;
+  // Every finger on the body: how far its proxy reached into the surface.
+  bool refitted = false;
   double radius = 0.0;
-  for (int c = 0; c < finger.contact_count; ++c)
+  for (int i = 0; i < world.interfaceCount(); ++i)
   {
-    if (finger.contacts[c].body == object_)
+    const InterfaceState& finger = world.interfaceState(i);
+    bool touching = false;
+    for (int c = 0; c < finger.contact_count; ++c)
     {
-      touching = true;
-      radius = finger.contacts[c].radius;
+      if (finger.contacts[c].body == object_)
+      {
+        touching = true;
+        radius = i == 0 ? finger.contacts[c].radius : radius;
+      }
+    }
+    if (touching)
+    {
+      if (!refitted)
+      {
+        locator_->refit();
+        refitted = true;
+      }
+      const Eigen::Isometry3d to_body = world.bodyState(object_).pose.inverse();
+      const double distance = locator_->closest(to_body * finger.proxy_position).distance;
+      penetrations_.push_back(std::max(0.0, world.params().coupling.proxy_radius - distance));
     }
   }
-  if (touching)
-  {
-    locator_->refit();
-    const Eigen::Isometry3d to_body = world.bodyState(object_).pose.inverse();
-    const double distance = locator_->closest(to_body * finger.proxy_position).distance;
-    penetrations_.push_back(std::max(0.0, world.params().coupling.proxy_radius - distance));
-  }
+  const InterfaceState& finger = world.interfaceState(0);
   const Eigen::Vector3d& force = finger.user_force;
+  if (scenario_ == Scenario::kPinchSoft)
+  {
+    squash_ = std::max(squash_, 1.0 - widthAlongX(world.walkMesh(object_).vertices()) / untouched_width_);
+    if (time > times_.lift_end)
+    {
+      for (int i = 0; i < world.interfaceCount(); ++i)
+      {
+        force_sum_ += world.interfaceState(i).user_force.norm();
+        ++samples_;
+      }
+      sink_ = std::max(sink_, deepestSink(world));
+    }
+    lift_ = world.bodyState(object_).pose.translation().z() - start_height_;
+  }
   if (scenario_ == Scenario::kPressSoft && time > times_.duration - kMeasuredHold)
   {
     ++samples_;
@@ -115,6 +154,11 @@ std::map<std::string, double> SoftContactMetrics::metrics() const
     result["area_radius_m"] = radius;
     result["w0_m"] = w0;
     result["sink_over_w0"] = w0 > 0.0 ? sink_ / w0 : 0.0;
+  }
+  else if (scenario_ == Scenario::kPinchSoft)
+  {
+    result["squash"] = squash_;
+    result["lift_height_m"] = lift_;
   }
   else
   {

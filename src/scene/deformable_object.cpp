@@ -16,7 +16,8 @@ namespace
 {
 const char* const kKnownElements[] = {"inertial",       "collision_margin", "friction",  "neohookean",
                                       "corotated",      "visual",           "collision", "repulsion_stiffness",
-                                      "gravity_factor", "cache_barycenter", "spring",    "origin"};
+                                      "gravity_factor", "cache_barycenter", "spring",    "origin",
+                                      "support"};
 
 class DeformableParser
 {
@@ -133,7 +134,7 @@ class DeformableParser
         fail(body.name, *child,
              "unknown element <" + tag +
                  "> (a deformable has inertial, neohookean or corotated, collision, visual, friction, "
-                 "collision_margin, origin)");
+                 "collision_margin, origin, support)");
       }
       if (tag == "inertial")
       {
@@ -175,6 +176,16 @@ class DeformableParser
       else if (tag == "origin")
       {
         body.origin = origin(body.name, *child);
+      }
+      else if (tag == "support")
+      {
+        const char* value = child->Attribute("value");
+        const std::string support = value != nullptr ? value : "";
+        if (support != "glued" && support != "resting")
+        {
+          fail(body.name, *child, "<support value> is '" + support + "': give glued or resting");
+        }
+        body.resting = support == "resting";
       }
     }
     if (material == nullptr)

@@ -80,6 +80,35 @@ TetMesh blockTetMesh(const BlockMeshSpec& spec)
   return checkedTetMesh(std::move(mesh), "block mesh");
 }
 
+TetMesh ballTetMesh(double radius, int cells)
+{
+  if (!(radius > 0.0 && std::isfinite(radius)) || cells < 2)
+  {
+    throw InputError("ball mesh: the radius must be positive and finite and the cells at least 2");
+  }
+  BlockMeshSpec cube;
+  cube.size = Eigen::Vector3d(2.0, 2.0, 2.0);
+  cube.cells = {cells, cells, cells};
+  TetMesh mesh = blockTetMesh(cube);
+  for (Eigen::Vector3d& node : mesh.nodes)
+  {
+    const Eigen::Vector3d p(node.x(), node.y(), node.z() - 1.0);
+    const Eigen::Vector3d q = p.cwiseAbs2();
+    const Eigen::Vector3d on_ball(p.x() * std::sqrt(1.0 - q.y() / 2 - q.z() / 2 + q.y() * q.z() / 3),
+                                  p.y() * std::sqrt(1.0 - q.z() / 2 - q.x() / 2 + q.z() * q.x() / 3),
+                                  p.z() * std::sqrt(1.0 - q.x() / 2 - q.y() / 2 + q.x() * q.y() / 3));
+    node = radius * (on_ball + Eigen::Vector3d::UnitZ());
+  }
+  for (const std::array<int, 4>& tet : mesh.tets)
+  {
+    if (!(signedTetVolume(mesh.nodes, tet) > 0.0))
+    {
+      throw InputError("ball mesh: a tetrahedron turned over under the map (" + std::to_string(cells) + " cells)");
+    }
+  }
+  return checkedTetMesh(std::move(mesh), "ball mesh");
+}
+
 int cubeCellsForNodes(int nodes)
 {
   return std::max(1, static_cast<int>(std::lround(std::cbrt(static_cast<double>(nodes)))) - 1);

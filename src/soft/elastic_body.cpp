@@ -5,6 +5,9 @@
 #include "sparse_factor.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace god_finger
 {
@@ -232,6 +235,15 @@ ElasticBody::ElasticBody(TetMesh mesh, const SoftMaterial& material, const std::
   }
   displacement_ = Eigen::VectorXd::Zero(dofs);
   velocity_ = Eigen::VectorXd::Zero(dofs);
+  // A free body (nothing fixed) takes its elastic forces in its best-fit rotation.
+  corotated_ = static_cast<int>(free_dofs_.size()) == dofs;
+  rest_centre_.setZero();
+  for (int node = 0; node < nodeCount(); ++node)
+  {
+    rest_centre_ += lumped_mass_(3 * node) * mesh_.nodes[node];
+  }
+  rest_centre_ /= lumped_mass_.sum() / 3.0;
+  local_displacement_ = Eigen::VectorXd::Zero(dofs);
   free_v_ = Eigen::VectorXd::Zero(free_count);
   free_rhs_ = Eigen::VectorXd::Zero(free_count);
   last_forces_ = Eigen::VectorXd::Zero(dofs);
@@ -269,7 +281,19 @@ void ElasticBody::step(const Eigen::VectorXd& external_forces)
   }
   ++solved_steps_;
   const int free_count = static_cast<int>(free_dofs_.size());
-  applyStiffness(displacement_, &ku_);
+  if (corotated_)
+  {
+    localDisplacement(&local_displacement_);
+    applyStiffness(local_displacement_, &ku_);
+    for (int node = 0; node < nodeCount(); ++node)
+    {
+      ku_.segment<3>(3 * node) = rotation_ * ku_.segment<3>(3 * node).eval();
+    }
+  }
+  else
+  {
+    applyStiffness(displacement_, &ku_);
+  }
   for (int i = 0; i < free_count; ++i)
   {
     const int dof = free_dofs_[i];
@@ -279,15 +303,180 @@ void ElasticBody::step(const Eigen::VectorXd& external_forces)
   step_factor_->solve(free_rhs_, &free_v_);
   for (int i = 0; i < free_count; ++i)
   {
-    const int dof = free_dofs_[i];
-    velocity_(dof) = free_v_(i);
-    displacement_(dof) += time_step_ * free_v_(i);
+    velocity_(free_dofs_[i]) = free_v_(i);
+  }
+  support_force_ = 0.0;
+  if (has_support_)
+  {
+    holdOnSupport();
+  }
+  for (const int dof : free_dofs_)
+  {
+    displacement_(dof) += time_step_ * velocity_(dof);
   }
   quiet_steps_ = velocity_.lpNorm<Eigen::Infinity>() < kSoftSleepSpeed ? quiet_steps_ + 1 : 0;
   if (quiet_steps_ >= kSoftSleepSteps)
   {
     sleeping_ = true;
     velocity_.setZero();
+  }
+}
+
+void ElasticBody::setSupport(const SupportPlane& plane)
+{
+  if (!(std::abs(plane.normal.norm() - 1.0) < 1e-9) || !std::isfinite(plane.offset) ||
+      !(plane.friction >= 0.0 && std::isfinite(plane.friction)))
+  {
+    throw InputError("soft body: a support plane needs a unit normal, a finite offset and a friction >= 0");
+  }
+  support_ = plane;
+  has_support_ = true;
+  // The plane's directions: its normal and two along it.
+  const Eigen::Vector3d& n = plane.normal;
+  const Eigen::Vector3d t1 = n.unitOrthogonal();
+  support_directions_ << n, t1, n.cross(t1);
+  // The nodes that can touch it: free surface nodes within kSupportReach of the body's extent
+  // along the normal from its lowest node, at rest.
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -lowest;
+  for (const Eigen::Vector3d& node : mesh_.nodes)
+  {
+    lowest = std::min(lowest, n.dot(node));
+    highest = std::max(highest, n.dot(node));
+  }
+  std::vector<char> on_surface(mesh_.nodes.size(), 0);
+  for (const std::array<int, 3>& face : surface_)
+  {
+    for (int node : face)
+    {
+      on_surface[node] = 1;
+    }
+  }
+  support_nodes_.clear();
+  for (int node = 0; node < nodeCount(); ++node)
+  {
+    if (on_surface[node] && !isFixed(node) && free_index_[3 * node] >= 0 && free_index_[3 * node + 1] >= 0 &&
+        free_index_[3 * node + 2] >= 0 && n.dot(mesh_.nodes[node]) <= lowest + kSupportReach * (highest - lowest))
+    {
+      support_nodes_.push_back(node);
+    }
+  }
+  // Each candidate row's response: A^-1 of a unit impulse on that node along that direction.
+  const int rows = 3 * static_cast<int>(support_nodes_.size());
+  const int free_count = static_cast<int>(free_dofs_.size());
+  support_response_.resize(free_count, rows);
+  Eigen::VectorXd impulse = Eigen::VectorXd::Zero(free_count);
+  Eigen::VectorXd response(free_count);
+  for (int row = 0; row < rows; ++row)
+  {
+    const int node = support_nodes_[row / 3];
+    for (int k = 0; k < 3; ++k)
+    {
+      impulse(free_index_[3 * node + k]) = support_directions_(k, row % 3);
+    }
+    step_factor_->solve(impulse, &response);
+    support_response_.col(row) = response;
+    for (int k = 0; k < 3; ++k)
+    {
+      impulse(free_index_[3 * node + k]) = 0.0;
+    }
+  }
+  active_nodes_.reserve(support_nodes_.size());
+  active_velocity_.resize(rows);
+  support_impulse_.resize(rows);
+  support_gap_.resize(support_nodes_.size());
+  support_coupling_.resize(rows, rows);
+}
+
+void ElasticBody::holdOnSupport()
+{
+  // The candidates that touch the plane or would pass it in this step.
+  active_nodes_.clear();
+  for (std::size_t j = 0; j < support_nodes_.size(); ++j)
+  {
+    const int node = support_nodes_[j];
+    const double gap = support_.normal.dot(position(node)) - support_.offset;
+    const double moving = support_.normal.dot(velocity_.segment<3>(3 * node));
+    if (gap <= kSupportContactGap || gap + time_step_ * moving < 0.0)
+    {
+      active_nodes_.push_back(static_cast<int>(j));
+      support_gap_(active_nodes_.size() - 1) = gap;  // < 0 (rounding, the solver's tolerance): lifted back
+    }
+  }
+  const int count = static_cast<int>(active_nodes_.size());
+  if (count == 0)
+  {
+    return;
+  }
+  // The active rows' coupling: row (a, d)'s velocity per unit impulse on row (b, e).
+  for (int a = 0; a < count; ++a)
+  {
+    const int node_a = support_nodes_[active_nodes_[a]];
+    for (int b = 0; b < count; ++b)
+    {
+      for (int e = 0; e < 3; ++e)
+      {
+        const int column = 3 * active_nodes_[b] + e;
+        Eigen::Vector3d moved;
+        for (int k = 0; k < 3; ++k)
+        {
+          moved(k) = support_response_(free_index_[3 * node_a + k], column);
+        }
+        support_coupling_.block<3, 1>(3 * a, 3 * b + e) = support_directions_.transpose() * moved;
+      }
+    }
+    active_velocity_.segment<3>(3 * a) = support_directions_.transpose() * velocity_.segment<3>(3 * node_a);
+  }
+  // Projected Gauss-Seidel on the impulses: normal ones >= 0 keeping each node on or above the
+  // plane at the step's end, friction ones within friction x normal, holding the node still.
+  support_impulse_.head(3 * count).setZero();
+  for (int iteration = 0; iteration < kSupportIterations; ++iteration)
+  {
+    double largest_change = 0.0;
+    for (int a = 0; a < count; ++a)
+    {
+      const int row = 3 * a;
+      const double wanted = -support_gap_(a) / time_step_;
+      const double normal =
+          std::max(0.0, support_impulse_(row) + (wanted - active_velocity_(row)) / support_coupling_(row, row));
+      Eigen::Vector3d change(normal - support_impulse_(row), 0.0, 0.0);
+      active_velocity_.head(3 * count).noalias() += support_coupling_.block(0, row, 3 * count, 1) * change(0);
+      support_impulse_(row) = normal;
+      Eigen::Vector2d along = support_impulse_.segment<2>(row + 1);
+      along(0) -= active_velocity_(row + 1) / support_coupling_(row + 1, row + 1);
+      along(1) -= active_velocity_(row + 2) / support_coupling_(row + 2, row + 2);
+      const double bound = support_.friction * normal;
+      if (along.norm() > bound)
+      {
+        along *= bound / along.norm();
+      }
+      change.tail<2>() = along - support_impulse_.segment<2>(row + 1);
+      active_velocity_.head(3 * count).noalias() +=
+          support_coupling_.block(0, row + 1, 3 * count, 2) * change.tail<2>();
+      support_impulse_.segment<2>(row + 1) = along;
+      largest_change = std::max(largest_change, change.cwiseAbs().maxCoeff());
+    }
+    if (largest_change <= kSupportImpulseTolerance)
+    {
+      break;
+    }
+  }
+  // The impulses on every free degree of freedom.
+  for (int a = 0; a < count; ++a)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      const double impulse = support_impulse_(3 * a + e);
+      if (impulse != 0.0)
+      {
+        free_v_.noalias() += impulse * support_response_.col(3 * active_nodes_[a] + e);
+      }
+    }
+    support_force_ += support_impulse_(3 * a) / time_step_;
+  }
+  for (int i = 0; i < static_cast<int>(free_dofs_.size()); ++i)
+  {
+    velocity_(free_dofs_[i]) = free_v_(i);
   }
 }
 
@@ -392,8 +581,45 @@ void ElasticBody::positions(std::vector<Eigen::Vector3d>* out) const
   }
 }
 
+void ElasticBody::localDisplacement(Eigen::VectorXd* local)
+{
+  // The best-fit rotation of the nodes about their centre of mass (shape matching: the polar
+  // factor of sum m (x - c)(X - C)^T).
+  const double total = lumped_mass_.sum() / 3.0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (int node = 0; node < nodeCount(); ++node)
+  {
+    centre += lumped_mass_(3 * node) * position(node);
+  }
+  centre /= total;
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (int node = 0; node < nodeCount(); ++node)
+  {
+    covariance.noalias() +=
+        lumped_mass_(3 * node) * (position(node) - centre) * (mesh_.nodes[node] - rest_centre_).transpose();
+  }
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(covariance, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d u = svd.matrixU();
+  if ((u * svd.matrixV().transpose()).determinant() < 0.0)
+  {
+    u.col(2) *= -1.0;
+  }
+  rotation_ = u * svd.matrixV().transpose();
+  local->resize(3 * nodeCount());
+  for (int node = 0; node < nodeCount(); ++node)
+  {
+    local->segment<3>(3 * node) = rotation_.transpose() * (position(node) - centre) + rest_centre_ - mesh_.nodes[node];
+  }
+}
+
 double ElasticBody::elasticEnergy() const
 {
+  if (corotated_)
+  {
+    Eigen::VectorXd local;
+    const_cast<ElasticBody*>(this)->localDisplacement(&local);
+    return 0.5 * local.dot(stiffness_ * local);
+  }
   return 0.5 * displacement_.dot(stiffness_ * displacement_);
 }
 

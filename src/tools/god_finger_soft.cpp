@@ -3,6 +3,7 @@
 //
 //   god_finger_soft FILE [--press NEWTONS] [--radius METRES] [--point]
 //   god_finger_soft --block SIDE --nodes N [--grading G] --out FILE.vtk
+//   god_finger_soft --ball RADIUS --nodes N --out FILE.vtk
 //
 // FILE: a URDF (or xacro) holding PyBullet-style <deformable> elements (scene/deformable_object.h).
 // Prints each body: nodes, tetrahedra, surface triangles, volume, mass, E, nu, damping. With
@@ -13,7 +14,8 @@
 // equilibrium is solved (K u = f) and the sink under the centre printed, with Boussinesq's w0 of
 // the same pad on a half-space of the body's material for comparison (its finite size and the
 // mesh make the difference: docs/soft_bodies.md). --block writes a cube of side SIDE (m) with
-// about N nodes graded toward its top centre (soft/block_mesh.h) as a VTK file.
+// about N nodes graded toward its top centre (soft/block_mesh.h) as a VTK file; --ball a ball of
+// radius RADIUS (m) with about N nodes, its lowest point at z = 0 (soft/block_mesh.h ballTetMesh).
 // Exit codes: 0 success, 2 bad options or input (one line on stderr naming it).
 #include "god_finger/scene/deformable_object.h"
 #include "god_finger/soft/block_mesh.h"
@@ -37,9 +39,11 @@ namespace
 const char* const kUsage =
     "usage: god_finger_soft FILE [--press NEWTONS] [--radius METRES] [--point]\n"
     "       god_finger_soft --block SIDE --nodes N [--grading G] --out FILE.vtk\n"
+    "       god_finger_soft --ball RADIUS --nodes N --out FILE.vtk\n"
     "Loads the <deformable> bodies of a URDF and prints them; --press glues the first to the table\n"
     "and presses its top centre with a pad (or --point), printing the sink against Boussinesq's w0.\n"
-    "--block writes a cube's tetrahedral volume (side in m, about N nodes, graded toward its top).\n";
+    "--block writes a cube's tetrahedral volume (side in m, about N nodes, graded toward its top),\n"
+    "--ball a ball's (radius in m, about N nodes, its lowest point at z = 0).\n";
 
 struct Options
 {
@@ -48,6 +52,7 @@ struct Options
   double radius = 0.01;
   bool point = false;
   double block = 0.0;
+  double ball = 0.0;
   long long nodes = 0;
   double grading = 3.0;
   std::string out;
@@ -94,6 +99,10 @@ Options parse(int argc, char** argv)
     {
       options.block = numberOption(arg, value(), 1e-3, 10.0);
     }
+    else if (arg == "--ball")
+    {
+      options.ball = numberOption(arg, value(), 1e-3, 10.0);
+    }
     else if (arg == "--nodes")
     {
       options.nodes = static_cast<long long>(numberOption(arg, value(), 8, 200000));
@@ -124,26 +133,43 @@ Options parse(int argc, char** argv)
       throw god_finger::InputError("one FILE only ('" + arg + "' is a second)");
     }
   }
-  if (options.block > 0.0 ? (options.nodes == 0 || options.out.empty() || !options.file.empty()) : options.file.empty())
+  if (options.block > 0.0 && options.ball > 0.0)
   {
-    throw god_finger::InputError(options.block > 0.0 ? "--block needs --nodes and --out, and no FILE"
-                                                     : "no FILE given");
+    throw god_finger::InputError("--block and --ball: one volume at a time");
+  }
+  const bool writing = options.block > 0.0 || options.ball > 0.0;
+  if (writing ? (options.nodes == 0 || options.out.empty() || !options.file.empty()) : options.file.empty())
+  {
+    throw god_finger::InputError(writing ? std::string(options.block > 0.0 ? "--block" : "--ball") +
+                                               " needs --nodes and --out, and no FILE"
+                                         : "no FILE given");
   }
   return options;
 }
 
-void writeBlock(const Options& options)
+void writeVolume(const Options& options)
 {
-  god_finger::BlockMeshSpec spec;
-  spec.size = Eigen::Vector3d::Constant(options.block);
   const int cells = god_finger::cubeCellsForNodes(static_cast<int>(options.nodes));
-  spec.cells = {cells, cells, cells};
-  spec.grading = options.grading;
-  const god_finger::TetMesh mesh = spec.cells[0] > 0 ? god_finger::blockTetMesh(spec) : god_finger::TetMesh();
+  god_finger::TetMesh mesh;
+  std::string title;
+  if (options.ball > 0.0)
+  {
+    mesh = god_finger::ballTetMesh(options.ball, std::max(2, cells));
+    title = "god_finger ball of radius " + god_finger::roundedNumber(options.ball) + " m, " +
+            std::to_string(mesh.nodes.size()) + " nodes";
+  }
+  else
+  {
+    god_finger::BlockMeshSpec spec;
+    spec.size = Eigen::Vector3d::Constant(options.block);
+    spec.cells = {cells, cells, cells};
+    spec.grading = options.grading;
+    mesh = god_finger::blockTetMesh(spec);
+    title = "god_finger block " + god_finger::roundedNumber(options.block) + " m, " +
+            std::to_string(mesh.nodes.size()) + " nodes, grading " + god_finger::roundedNumber(options.grading);
+  }
   std::ofstream file(options.out);
-  file << god_finger::vtkTetMeshText(mesh, "god_finger block " + god_finger::roundedNumber(options.block) + " m, " +
-                                               std::to_string(mesh.nodes.size()) + " nodes, grading " +
-                                               god_finger::roundedNumber(options.grading));
+  file << god_finger::vtkTetMeshText(mesh, title);
   if (!file.good())
   {
     throw god_finger::InputError("cannot write '" + options.out + "'");
@@ -209,9 +235,9 @@ int main(int argc, char** argv)
   try
   {
     const Options options = parse(argc, argv);
-    if (options.block > 0.0)
+    if (options.block > 0.0 || options.ball > 0.0)
     {
-      writeBlock(options);
+      writeVolume(options);
       return 0;
     }
     const std::vector<god_finger::DeformableDescription> bodies = god_finger::loadDeformables(options.file);

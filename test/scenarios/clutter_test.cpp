@@ -181,7 +181,7 @@ TEST(Clutter, ScenarioNamesComeFromOneList)
   EXPECT_EQ(parsed, Scenario::kClutter);
   EXPECT_EQ(scenarioNames("|"),
             "slide|lift_one|lift_two|pinch_cylinder|clutter|hand_grasp|roll_finger|pinch_thin|pinch_card|door|drawer|"
-            "press_soft|stroke_soft");
+            "press_soft|stroke_soft|pinch_soft");
   for (Scenario scenario : kAllScenarios)
   {
     ASSERT_TRUE(parseScenario(scenarioName(scenario), &parsed));

@@ -3,7 +3,8 @@
 // the 1,000-node mesh's discretisation (the fidelity study's 0.76-0.82 of Boussinesq's w0 at
 // this mesh), a point digs deeper (a point load's dimple has no finite limit), the proxy never
 // sinks into the deformed surface by more than the 1 mm (AMBF's users see rigid bodies
-// sink through soft ones), and a stroke sticks, then slides, within the pair's friction.
+// sink through soft ones), a stroke sticks, then slides, within the pair's friction, and a pinch
+// lifts a free soft ball off the table and holds it (pinch_soft).
 #include "god_finger/scenarios/experiment.h"
 
 #include <gtest/gtest.h>
@@ -72,6 +73,26 @@ TEST(SoftScenarios, AStrokeSticksThenSlidesWithinThePairsFriction)
   {
     EXPECT_GT(point.at("sink_m"), 2.0 * metrics[pad].at("sink_m"));
     EXPECT_LT(point.at("trace_m"), metrics[pad].at("trace_m"));
+  }
+}
+
+TEST(SoftScenarios, APinchLiftsAFreeSoftBallOffTheTableAndHoldsIt)
+{
+  for (const ContactModel model : {ContactModel::kGodFinger, ContactModel::kGodObject, ContactModel::kSoftFinger})
+  {
+    const ExperimentResult result = run(Scenario::kPinchSoft, model);
+    const std::map<std::string, double>& m = result.metrics;
+    EXPECT_EQ(m.at("held"), 1.0) << result.model;
+    // The hands rise 5 cm; the ball's frame (its mean displacement) within 2 mm of that: it left
+    // the table (whose support would hold it at 0) and hangs between the pads.
+    EXPECT_GT(m.at("lift_height_m"), 0.048) << result.model;
+    EXPECT_LT(m.at("lift_height_m"), 0.05) << result.model;
+    EXPECT_LT(m.at("slip_m"), 1e-3) << result.model;
+    // Squeezed by about 3 N a side: a few per cent across the fingers, not crushed.
+    EXPECT_GT(m.at("squash"), 0.02) << result.model;
+    EXPECT_LT(m.at("squash"), 0.15) << result.model;
+    EXPECT_GT(m.at("hand_force_N"), 2.0) << result.model;
+    EXPECT_LE(m.at("penetration_p99_m"), 1e-3) << result.model;
   }
 }
 }  // namespace

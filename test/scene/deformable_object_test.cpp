@@ -82,6 +82,17 @@ TEST_F(DeformableTest, TheShippedSoftBlockLoadsWithItsMaterial)
   EXPECT_EQ(block.collision_margin, 0.001);
 }
 
+TEST_F(DeformableTest, TheShippedSoftBallRestsFreeAndTheBlockIsGlued)
+{
+  const std::vector<DeformableDescription> balls = loadDeformables(kObjects + "/soft_ball.urdf");
+  ASSERT_EQ(balls.size(), 1u);
+  EXPECT_TRUE(balls[0].resting);
+  EXPECT_EQ(balls[0].mesh.nodes.size(), 729u);
+  EXPECT_NEAR(balls[0].material.young_modulus, 100e3, 1e-6);
+  EXPECT_NEAR(balls[0].mass, 0.1, 1e-15);
+  EXPECT_FALSE(loadDeformables(kObjects + "/soft_block.urdf")[0].resting);
+}
+
 TEST_F(DeformableTest, APyBulletTorusLikeFileLoads)
 {
   // PyBullet's deformable_torus.urdf's values: mu 60, lambda 200 (Pa), damping 0.01, mass 1.
@@ -107,7 +118,11 @@ TEST_F(DeformableTest, EachBadFileGetsItsOneLineError)
   const std::map<std::string, std::string> cases = {
       {mass + "<neohooken mu=\"1000\" lambda=\"4000\"/>\n" + volume,
        "deformable 'd' (line 4): unknown element <neohooken> (a deformable has inertial, neohookean or corotated, "
-       "collision, visual, friction, collision_margin, origin)"},
+       "collision, visual, friction, collision_margin, origin, support)"},
+      {mass + material + volume + "<support value=\"free\"/>\n",
+       "deformable 'd' (line 6): <support value> is 'free': give glued or resting"},
+      {mass + material + volume + "<support/>\n",
+       "deformable 'd' (line 6): <support value> is '': give glued or resting"},
       {mass + material + volume + "<origin xyz=\"0 0\"/>\n",
        "deformable 'd' (line 6): <origin xyz> '0 0' is not three finite numbers"},
       {mass + material + volume + "<origin xyz=\"0 0 0\" rpy=\"0 inf 0\"/>\n",

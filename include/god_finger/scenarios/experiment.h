@@ -68,6 +68,13 @@
 //    strokes 3 cm along +x in 2 s (2-4 s), holds 0.5 s and rises by 5 s. Metrics
 //    (soft_contact_metrics.h): trace_m, stick_slip_events, friction_ratio_max, hand_force_N,
 //    sink_m, penetration_max_m and penetration_p99_m.
+//  - kPinchSoft (urdf/scenes/soft_ball.urdf: a soft ball of radius 3 cm, E 100 kPa, nu 0.45,
+//    0.1 kg, resting free on the table): two fingers at its equator close along x and squeeze
+//    it (0-1.2 s), lift it 5 cm in 1.5-3 s and hold until 4 s. Metrics: the grip's (pinch_metrics.h:
+//    held, slip_m, turn_rad) and the soft body's (soft_contact_metrics.h: squash, the largest
+//    relative shortening of the ball across the fingers from the squeeze on; lift_height_m, its
+//    centre's rise at the end; hand_force_N, the fingers' mean force over the hold;
+//    sink_m, penetration_max_m and penetration_p99_m over both fingers).
 // Asymmetry: a perfectly symmetric set-up hides every effect (nothing balanced on one point
 // ever tips in a deterministic simulation), so every scenario has the small offset a human
 // hand makes, the same for every model: a few millimetres of offset or drift (plus up to
@@ -105,12 +112,13 @@ enum class Scenario
   kDrawer,
   kPressSoft,
   kStrokeSoft,
+  kPinchSoft,
 };
 // Every scenario, in the order tools and scripts list them: the one list (scenarioNames()).
 constexpr Scenario kAllScenarios[] = {
-    Scenario::kSlide,     Scenario::kLiftOne,    Scenario::kLiftTwo,   Scenario::kPinchCylinder, Scenario::kClutter,
-    Scenario::kHandGrasp, Scenario::kRollFinger, Scenario::kPinchThin, Scenario::kPinchCard,     Scenario::kDoor,
-    Scenario::kDrawer,    Scenario::kPressSoft,  Scenario::kStrokeSoft};
+    Scenario::kSlide,     Scenario::kLiftOne,    Scenario::kLiftTwo,    Scenario::kPinchCylinder, Scenario::kClutter,
+    Scenario::kHandGrasp, Scenario::kRollFinger, Scenario::kPinchThin,  Scenario::kPinchCard,     Scenario::kDoor,
+    Scenario::kDrawer,    Scenario::kPressSoft,  Scenario::kStrokeSoft, Scenario::kPinchSoft};
 const char* scenarioName(Scenario scenario);
 // The names of kAllScenarios joined by `separator` ("slide, lift_one, ...").
 std::string scenarioNames(const std::string& separator = ", ");

@@ -11,8 +11,13 @@
 //    stick_slip_events, how often the proxy went from stuck (under 1 mm/s) to slipping (over
 //    5 mm/s); friction_ratio_max, the largest |tangential| / |normal| force on the hand (z is
 //    the surface's normal); hand_force_N, the mean normal force; sink_m, the deepest sink;
-//  - both, over every step with the finger on the body: penetration_max_m and
-//    penetration_p99_m, how far the proxy's sphere reached into the deformed surface (its
+//  - pinch_soft: squash, the largest relative shortening of the body along x (across the two
+//    fingers: 1 - its width now over its width untouched, its width in the frame that follows
+//    its mean displacement); lift_height_m, its frame's rise at the end; over the hold after
+//    the lift (from ScenarioTimes::lift_end on), hand_force_N, the fingers' mean force, and
+//    sink_m, the deepest sink;
+//  - all, over every step with a finger on the body: penetration_max_m and
+//    penetration_p99_m, how far a proxy's sphere reached into the deformed surface (its
 //    radius less its centre's distance to the surface, 0 when outside).
 // Units: SI, world frame. Not real-time (vectors grow, a map of results).
 #pragma once
@@ -40,6 +45,7 @@ class SoftContactMetrics
 
  private:
   double deepestSink(const GodFingerWorld& world) const;
+  static double widthAlongX(const std::vector<Eigen::Vector3d>& vertices);
 
   Scenario scenario_;
   int object_ = -1;
@@ -60,5 +66,10 @@ class SoftContactMetrics
   bool stuck_ = true;
   int stick_slips_ = 0;
   double friction_ratio_ = 0.0;
+  // pinch_soft's.
+  double untouched_width_ = 0.0;  // m
+  double start_height_ = 0.0;     // m
+  double squash_ = 0.0;
+  double lift_ = 0.0;  // m
 };
 }  // namespace god_finger

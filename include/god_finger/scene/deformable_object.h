@@ -13,6 +13,10 @@
 // cloth) is not modelled: a body that has only a spring is refused. <repulsion_stiffness>,
 // <gravity_factor> and <cache_barycenter> tune Bullet's solver and are accepted and ignored.
 // <origin xyz rpy> places the body (ours: where PyBullet's loadSoftBody takes a base pose).
+// <support value="glued|resting"/> (ours) says how it stands on what is under it: glued by its
+// lowest nodes (the default: a block that stays put, the fidelity study's half-space), or
+// resting, free, on the plane under its lowest point with its <friction> (a ball that can be
+// picked up: physics/soft_body.h).
 // Any other element in <deformable> is refused (a misspelt <neohooken> would otherwise lose its
 // material silently).
 //
@@ -41,6 +45,8 @@ struct DeformableDescription
   double mass = 0.0;        // kg
   double friction = ContactMaterial().friction;
   double collision_margin = 0.0;  // m
+  // <support>: resting (free on the plane under its lowest point) or glued (the default).
+  bool resting = false;
   // <origin xyz rpy> (this package's own, PyBullet places a body when it loads it): the body's
   // frame in the file's (a scene URDF's world, an object file's frame); identity when absent.
   Eigen::Isometry3d origin = Eigen::Isometry3d::Identity();

@@ -27,6 +27,13 @@ struct BlockMeshSpec
 // The block's checked mesh: (cx + 1)(cy + 1)(cz + 1) nodes, 6 cx cy cz tetrahedra.
 TetMesh blockTetMesh(const BlockMeshSpec& spec);
 
+// A ball of `radius` (m) made of a cube of `cells` per side (uniform) mapped onto it smoothly
+// (x' = x sqrt(1 - y^2/2 - z^2/2 + y^2 z^2 / 3) and its turns, which takes the cube's faces to the
+// sphere), centred on x = y = 0 with its lowest point at z = 0: (cells + 1)^3 nodes, 6 cells^3
+// tetrahedra. InputError when radius <= 0 or cells < 2 (every tetrahedron keeps its orientation
+// under the map for cells >= 2: checked).
+TetMesh ballTetMesh(double radius, int cells);
+
 // The cells per side of a cube with about `nodes` nodes: round(cbrt(nodes)) - 1.
 int cubeCellsForNodes(int nodes);
 

@@ -21,10 +21,24 @@
 // solves: no iteration.
 //
 // Units: SI; vectors are 3 per node (node i's x y z at 3i..3i+2), in the body's rest frame.
+// A free body (no node or axis fixed: a resting one) takes its elastic forces in its best-fit
+// rotation (global corotation, shape matching: R the polar factor of sum m (x - c)(X - C)^T,
+// the forces R K (R^T (x - c) + C - X)), so that it can turn as a whole, swinging in a pinch,
+// without the growth linear elements give a turned body; the step's matrix stays the rest one.
+// A held body's forces stay K u.
 // Invariants: fixed nodes (glued to the world) never move: their displacement and velocity stay
 // 0 and forces on them are taken by the support. The state (displacement u, velocity v) changes
 // only in step() and reset(). Linear elasticity is exact for small strains and rotations; a body
 // turned far from rest grows (the known artefact that corotated elements remove).
+// A support plane (setSupport: a resting body's floor, issue 28's pinch_soft): no node passes
+// below it. The nodes that can touch it (its lowest surface nodes at rest, kSupportReach) get,
+// each step, contact impulses solved with the step (through A^-1 of a unit impulse on each,
+// made once in setSupport): a normal one >= 0 that ends the step on or above the plane, never
+// pushing out beyond, and a friction one within friction x normal that holds the node still
+// (Coulomb), by projected Gauss-Seidel. Taken after the solve but through A, they move the whole
+// body as the step would have: at rest the support carries the weight and nothing creeps (a
+// velocity projected node by node instead ate the neighbours' elastic response, and a 5 cm block
+// sank 1.7 mm into a compressed, still state).
 // Sleep: a body whose every node moved slower than kSoftSleepSpeed for kSoftSleepSteps steps in a
 // row under the same forces stops (its velocity set to 0) and costs nothing per step until the
 // forces it is given change, which wake it on that step. Bodies at rest under a held press, or
@@ -49,6 +63,22 @@ class SparseFactor;
 // sleep (0.1 s at 1 kHz): 0.01 mm/s, far below what a hand can feel of a 1 mm dimple.
 constexpr double kSoftSleepSpeed = 1e-5;
 constexpr int kSoftSleepSteps = 100;
+// A node within this (m) of its support plane lies on it (it lands there exactly: rounding).
+constexpr double kSupportContactGap = 1e-9;
+// The surface nodes within this fraction of the body's extent along the plane's normal from its
+// lowest node (at rest) can touch the support; the contact's Gauss-Seidel sweeps at most.
+constexpr double kSupportReach = 0.25;
+constexpr int kSupportIterations = 60;
+constexpr double kSupportImpulseTolerance = 1e-12;  // N s
+
+// A plane the body's nodes stay on or above: normal . x >= offset (body frame, unit normal, m),
+// with Coulomb friction `friction` against sliding on it.
+struct SupportPlane
+{
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  double offset = 0.0;
+  double friction = 0.0;
+};
 
 class ElasticBody
 {
@@ -86,6 +116,15 @@ class ElasticBody
 
   // One step under `external_forces` (N, 3 per node; gravity is added here). RT-safe.
   void step(const Eigen::VectorXd& external_forces);
+  // Holds every free node on or above `plane` from the next step on (see the header). InputError
+  // when its normal is not a unit vector or its friction is negative or not finite.
+  void setSupport(const SupportPlane& plane);
+  // The force (N, along the plane's normal) the support gave in the last step: the weight of a
+  // body at rest on it, 0 when it is lifted off (or has no support).
+  double supportForce() const
+  {
+    return support_force_;
+  }
   // Back to rest: u = v = 0, awake.
   void reset();
   // At displacement u, velocity 0, awake, as if its last forces were zero (a body settled under
@@ -121,7 +160,7 @@ class ElasticBody
   // Every node's current position (for the surface, the markers and the contact).
   void positions(std::vector<Eigen::Vector3d>* out) const;
 
-  double elasticEnergy() const;  // 1/2 u^T K u (J)
+  double elasticEnergy() const;  // 1/2 u^T K u (J), u in the best-fit rotation for a free body
   double kineticEnergy() const;  // 1/2 v^T M v (J)
   // The stiffness matrix over every degree of freedom (fixed ones included), for tests.
   const Eigen::SparseMatrix<double>& stiffness() const
@@ -137,6 +176,11 @@ class ElasticBody
   long factorNonZeros() const;
 
  private:
+  // The support's contact impulses on this step's velocities (before they move the nodes).
+  void holdOnSupport();
+  // A free body's displacement in its best-fit rotation (sets rotation_).
+  void localDisplacement(Eigen::VectorXd* local);
+
   TetMesh mesh_;
   std::vector<std::array<int, 3>> surface_;
   SoftMaterial material_;
@@ -164,6 +208,22 @@ class ElasticBody
   Eigen::VectorXd ku_;
   Eigen::VectorXd free_v_;
   Eigen::VectorXd free_rhs_;
+  // The support (has_support_ false: none) and its force in the last step.
+  bool corotated_ = false;
+  Eigen::Vector3d rest_centre_ = Eigen::Vector3d::Zero();  // m, the nodes' centre of mass at rest
+  Eigen::Matrix3d rotation_ = Eigen::Matrix3d::Identity();
+  Eigen::VectorXd local_displacement_;
+  bool has_support_ = false;
+  SupportPlane support_;
+  double support_force_ = 0.0;
+  Eigen::Matrix3d support_directions_;  // columns: the normal, two along the plane
+  std::vector<int> support_nodes_;      // the nodes that can touch it
+  Eigen::MatrixXd support_response_;    // free dofs x 3 per candidate: A^-1 of a unit impulse
+  std::vector<int> active_nodes_;       // this step's, into support_nodes_
+  Eigen::VectorXd active_velocity_;     // 3 per active node, in support_directions_
+  Eigen::VectorXd support_impulse_;     // N s, 3 per active node, in support_directions_
+  Eigen::VectorXd support_gap_;         // m, per active node
+  Eigen::MatrixXd support_coupling_;    // active rows x active rows
   // Sleep: the forces of the last step, the steps at rest under them in a row.
   Eigen::VectorXd last_forces_;
   int quiet_steps_ = 0;

@@ -1,0 +1,214 @@
+// A free soft body (issue 28's pinch_soft): on its support plane it settles under its weight and
+// sleeps, the plane carrying exactly that weight and no node below it; its friction holds a push
+// under friction x weight and lets a larger one slide; turned as a whole it keeps its shape
+// (global corotation); the ball mesh is a ball.
+#include "allocation_counter.h"
+#include "god_finger/soft/block_mesh.h"
+#include "god_finger/soft/elastic_body.h"
+#include "god_finger/support/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace god_finger
+{
+namespace
+{
+SoftMaterial rubber(double mass, const TetMesh& mesh)
+{
+  SoftMaterial material;
+  material.young_modulus = 100e3;
+  material.poisson_ratio = 0.45;
+  double volume = 0.0;
+  for (const std::array<int, 4>& tet : mesh.tets)
+  {
+    volume += signedTetVolume(mesh.nodes, tet);
+  }
+  material.density = mass / volume;
+  material.stiffness_damping = 0.01;
+  return material;
+}
+
+TetMesh block5cm()
+{
+  BlockMeshSpec spec;
+  spec.size = Eigen::Vector3d(0.05, 0.05, 0.05);
+  spec.cells = {6, 6, 6};
+  return blockTetMesh(spec);
+}
+
+double lowestHeight(const ElasticBody& body)
+{
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int node = 0; node < body.nodeCount(); ++node)
+  {
+    lowest = std::min(lowest, body.position(node).z());
+  }
+  return lowest;
+}
+
+// Steps until the body sleeps (at most `steps`); returns the steps taken.
+int settle(ElasticBody* body, const Eigen::VectorXd& forces, int steps)
+{
+  int taken = 0;
+  while (taken < steps && !(body->sleeping() && taken > 0))
+  {
+    body->step(forces);
+    ++taken;
+  }
+  return taken;
+}
+
+TEST(FreeSoftBody, ABlockOnItsSupportCarriesItsWeightSleepsAndSagsAsAGluedOne)
+{
+  const TetMesh mesh = block5cm();
+  const SoftMaterial material = rubber(0.1, mesh);
+  const Eigen::Vector3d gravity(0, 0, -9.81);
+  ElasticBody body(mesh, material, {}, 1e-3, gravity);
+  SupportPlane plane;
+  plane.friction = 0.8;
+  body.setSupport(plane);
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(3 * body.nodeCount());
+  const int steps = settle(&body, none, 3000);
+  EXPECT_TRUE(body.sleeping()) << "after " << steps << " steps";
+  EXPECT_NEAR(body.supportForce(), 0.1 * 9.81, 1e-6);
+  EXPECT_GE(lowestHeight(body), -1e-8);  // to the contact solver's tolerance: nanometres
+  // Glued by its bottom face, the same block under the same weight: its top sinks as much (the
+  // free one's bottom may spread a little along the plane within its friction).
+  ElasticBody glued(mesh, material, nodesAtHeight(mesh, 0.0, 1e-12), 1e-3, gravity);
+  const Eigen::VectorXd held = glued.staticDisplacement(none);
+  const int top = body.nodeCount() - 1;
+  EXPECT_LT(held(3 * top + 2), -1e-6);
+  EXPECT_NEAR(body.displacement()(3 * top + 2), held(3 * top + 2), 0.1 * std::abs(held(3 * top + 2)));
+  // Asleep, it stays asleep and costs nothing.
+  const long solved = body.solvedSteps();
+  body.step(none);
+  EXPECT_EQ(body.solvedSteps(), solved);
+}
+
+TEST(FreeSoftBody, FrictionHoldsAPushUnderItsBoundAndLetsALargerOneSlide)
+{
+  const TetMesh mesh = block5cm();
+  const double weight = 0.1 * 9.81;
+  const auto pushed = [&](double push)
+  {
+    ElasticBody body(mesh, rubber(0.1, mesh), {}, 1e-3, Eigen::Vector3d(0, 0, -9.81));
+    SupportPlane plane;
+    plane.friction = 0.5;
+    body.setSupport(plane);
+    const Eigen::VectorXd none = Eigen::VectorXd::Zero(3 * body.nodeCount());
+    settle(&body, none, 3000);
+    // The push along x spread over the nodes of its lowest layer (where the friction acts: no
+    // tipping moment).
+    const std::vector<int> bottom = nodesAtHeight(mesh, 0.0, 1e-12);
+    Eigen::VectorXd forces = none;
+    for (int node : bottom)
+    {
+      forces(3 * node) = push / static_cast<double>(bottom.size());
+    }
+    for (int step = 0; step < 300; ++step)
+    {
+      body.step(forces);
+    }
+    double mean_x = 0.0;
+    for (int node = 0; node < body.nodeCount(); ++node)
+    {
+      mean_x += body.displacement()(3 * node) / body.nodeCount();
+    }
+    return mean_x;
+  };
+  const double held = pushed(0.6 * 0.5 * weight);
+  const double slid = pushed(1.5 * 0.5 * weight);
+  EXPECT_LT(std::abs(held), 2e-4) << "under the bound: only the elastic shear";
+  // Over it: (1.5 - 1) friction x weight accelerates 0.1 kg for 0.3 s: 0.11 m (less while it
+  // starts).
+  EXPECT_GT(slid, 0.05);
+}
+
+TEST(FreeSoftBody, TurnedAsAWholeItKeepsItsShape)
+{
+  const TetMesh mesh = ballTetMesh(0.03, 5);
+  ElasticBody body(mesh, rubber(0.1, mesh), {}, 1e-3, Eigen::Vector3d::Zero());
+  // A rigid turn of 60 degrees about x through the ball's centre.
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(M_PI / 3.0, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Vector3d centre(0.0, 0.0, 0.03);
+  Eigen::VectorXd turned(3 * body.nodeCount());
+  for (int node = 0; node < body.nodeCount(); ++node)
+  {
+    turned.segment<3>(3 * node) = turn * (mesh.nodes[node] - centre) + centre - mesh.nodes[node];
+  }
+  body.restAt(turned);
+  EXPECT_LT(body.elasticEnergy(), 1e-15);
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(3 * body.nodeCount());
+  for (int step = 0; step < 50; ++step)
+  {
+    body.step(none);
+  }
+  // Linear elements would take the turn for a strain of 1 - cos 60 = 50 % and swell it back.
+  EXPECT_LT((body.displacement() - turned).lpNorm<Eigen::Infinity>(), 1e-9);
+}
+
+TEST(FreeSoftBody, AStepOnItsSupportAllocatesNothing)
+{
+  const TetMesh mesh = block5cm();
+  ElasticBody body(mesh, rubber(0.1, mesh), {}, 1e-3, Eigen::Vector3d(0, 0, -9.81));
+  SupportPlane plane;
+  plane.friction = 0.8;
+  body.setSupport(plane);
+  Eigen::VectorXd forces = Eigen::VectorXd::Zero(3 * body.nodeCount());
+  body.step(forces);
+  const long before = test::allocationCount();
+  for (int step = 0; step < 20; ++step)
+  {
+    forces(3 * (body.nodeCount() - 1) + 2) = -0.1 * step;  // a changing press on a top corner
+    body.step(forces);
+  }
+  EXPECT_EQ(test::allocationCount() - before, 0);
+}
+
+TEST(FreeSoftBody, RefusesABadSupport)
+{
+  const TetMesh mesh = block5cm();
+  ElasticBody body(mesh, rubber(0.1, mesh), {}, 1e-3, Eigen::Vector3d(0, 0, -9.81));
+  SupportPlane plane;
+  plane.normal = Eigen::Vector3d(0, 0, 2);
+  EXPECT_THROW(body.setSupport(plane), InputError);
+  plane.normal = Eigen::Vector3d::UnitZ();
+  plane.friction = std::nan("");
+  EXPECT_THROW(body.setSupport(plane), InputError);
+  plane.friction = -0.1;
+  EXPECT_THROW(body.setSupport(plane), InputError);
+}
+
+TEST(BallMesh, IsABallOfItsRadiusStandingOnZeroAndRefusesTooFewCells)
+{
+  const double radius = 0.03;
+  const TetMesh ball = ballTetMesh(radius, 8);
+  EXPECT_EQ(ball.nodes.size(), 729u);
+  double volume = 0.0;
+  for (const std::array<int, 4>& tet : ball.tets)
+  {
+    const double v = signedTetVolume(ball.nodes, tet);
+    EXPECT_GT(v, 0.0);
+    volume += v;
+  }
+  // Flat faces inscribed in the sphere: a little less than 4/3 pi r^3.
+  const double sphere = 4.0 / 3.0 * M_PI * radius * radius * radius;
+  EXPECT_LT(volume, sphere);
+  EXPECT_GT(volume, 0.97 * sphere);
+  double lowest = 1.0;
+  double farthest = 0.0;
+  for (const Eigen::Vector3d& node : ball.nodes)
+  {
+    lowest = std::min(lowest, node.z());
+    farthest = std::max(farthest, (node - Eigen::Vector3d(0, 0, radius)).norm());
+  }
+  EXPECT_NEAR(lowest, 0.0, 1e-15);
+  EXPECT_NEAR(farthest, radius, 1e-12);
+  EXPECT_THROW(ballTetMesh(radius, 1), InputError);
+  EXPECT_THROW(ballTetMesh(-radius, 8), InputError);
+  EXPECT_THROW(ballTetMesh(std::nan(""), 8), InputError);
+}
+}  // namespace
+}  // namespace god_finger
