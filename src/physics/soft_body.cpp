@@ -33,6 +33,7 @@ void moveSurface(btCollisionWorld* world, SceneBody* body)
     Eigen::Isometry3d at = volume.rigid_at_rest;
     at.pretranslate(volume.body_in_world.linear() * volume.shift);
     body->rigid->setWorldTransform(toBullet(at));
+    volume.elastic->deformation(&volume.deformation);
   }
   for (std::size_t v = 0; v < volume.vertices.size(); ++v)
   {
@@ -115,6 +116,8 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
         volume.elastic->step(no_load);
       }
       volume.settled = volume.elastic->displacement();
+      volume.elastic->deformation(&volume.settled_deformation);
+      volume.deformation = volume.settled_deformation;
     }
     else
     {
@@ -165,7 +168,15 @@ double softContactStiffness(const WorldContactArea& area, const Eigen::Vector3d&
     return std::numeric_limits<double>::infinity();
   }
   const Eigen::Isometry3d to_body = volume->body_in_world.inverse();
-  volume->sink = volume->elastic->displacement() - volume->settled;
+  if (volume->resting)
+  {
+    volume->elastic->deformation(&volume->deformation);
+    volume->sink = volume->deformation - volume->settled_deformation;
+  }
+  else
+  {
+    volume->sink = volume->elastic->displacement() - volume->settled;
+  }
   // The rest surface's point under the contact: the dimple is along the normal, so the closest
   // point of the rest surface to the dimpled one is where it was.
   const Eigen::Vector3d moved = surfaceDisplacementAt(volume->elastic->restMesh().nodes, volume->elastic->surface(),
@@ -207,7 +218,10 @@ void snapshotSoftSurface(const SceneBody& body, int index, SoftSurfaceState* out
   {
     out->vertices[v] = volume.body_in_world * (volume.vertices[v] + volume.shift);
     const int node = volume.node_of_vertex[v];
-    out->sink[v] = static_cast<float>((displacement.segment<3>(3 * node) - volume.settled.segment<3>(3 * node)).norm());
+    out->sink[v] = static_cast<float>(
+        volume.resting
+            ? (volume.deformation.segment<3>(3 * node) - volume.settled_deformation.segment<3>(3 * node)).norm()
+            : (displacement.segment<3>(3 * node) - volume.settled.segment<3>(3 * node)).norm());
   }
 }
 }  // namespace god_finger::internal

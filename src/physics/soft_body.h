@@ -64,6 +64,10 @@ struct SoftVolume
   // body's transform at shift 0.
   bool resting = false;
   Eigen::Vector3d shift = Eigen::Vector3d::Zero();
+  // A resting body's deformation (ElasticBody::deformation) at the settled start and now (m, 3
+  // per node): what its sink is measured from, its rigid motion taken out.
+  Eigen::VectorXd settled_deformation;
+  Eigen::VectorXd deformation;
   Eigen::Isometry3d rigid_at_rest = Eigen::Isometry3d::Identity();
   // The surface's triangles in walk-mesh vertices, for observers (WorldSnapshot::soft_surfaces).
   std::shared_ptr<const std::vector<Eigen::Vector3i>> triangles;
@@ -92,8 +96,8 @@ bool stepSoftVolume(btCollisionWorld* world, SceneBody* body);
 
 // The stiffness (N/m) the body shows a finger pressing with `force_on_body` (N, world) at `area`:
 // the force's normal part over the surface's sink there since it settled (its displacement
-// along -normal). Infinity when either is too small to measure (under kMinStiffnessForce or
-// kMinStiffnessSink).
+// along -normal; a resting body's deformation since, its rigid motion taken out). Infinity when either is too small to
+// measure (under kMinStiffnessForce or kMinStiffnessSink).
 constexpr double kMinStiffnessForce = 0.05;  // N
 constexpr double kMinStiffnessSink = 1e-5;   // m
 double softContactStiffness(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, SoftVolume* volume);

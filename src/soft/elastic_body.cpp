@@ -581,6 +581,18 @@ void ElasticBody::positions(std::vector<Eigen::Vector3d>* out) const
   }
 }
 
+void ElasticBody::deformation(Eigen::VectorXd* out)
+{
+  if (corotated_)
+  {
+    localDisplacement(out);
+  }
+  else
+  {
+    *out = displacement_;
+  }
+}
+
 void ElasticBody::localDisplacement(Eigen::VectorXd* local)
 {
   // The best-fit rotation of the nodes about their centre of mass (shape matching: the polar

@@ -159,6 +159,10 @@ class ElasticBody
   }
   // Every node's current position (for the surface, the markers and the contact).
   void positions(std::vector<Eigen::Vector3d>* out) const;
+  // Its deformation (m, 3 per node, rest frame): a free body's displacement in its best-fit
+  // rotation about its centre of mass (its rigid motion taken out), a held body's displacement.
+  // RT-safe when `out` has 3 per node already.
+  void deformation(Eigen::VectorXd* out);
 
   double elasticEnergy() const;  // 1/2 u^T K u (J), u in the best-fit rotation for a free body
   double kineticEnergy() const;  // 1/2 v^T M v (J)
