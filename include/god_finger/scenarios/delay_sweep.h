@@ -1,0 +1,89 @@
+// Issue 29's delay sweep: a haptic device talking to the physics across a delayed link (the
+// delay line's own schedule, runtime/delay_line.h: delay, Gaussian jitter, loss), with the
+// passivity controller at the device's port (haptics/passivity_controller.h) on or off, for four
+// tasks and two operators, on simulated time (1 kHz ticks, deterministic).
+//
+// The model, along one axis (x, m; forces N; the handle's own dynamics integrated at each tick):
+//  - The haptic side sends the handle's position and velocity every tick; the physics answers
+//    every tick with the coupling's force (haptics/virtual_coupling.h couplingForce, the package's
+//    default CouplingProfile) between the newest position it received and a god-object proxy
+//    that stops at the surface; the device renders the newest force it received through the
+//    controller, saturated at the profile's max_force. A lost message is never seen; with
+//    jitter, the newest stamp received wins.
+//  - Tasks: kPress (a stiff wall at x = 0; the operator's rest point ramps from 1 cm before it to
+//    2 cm past it in 0.5-2 s and holds until 4 s), kTap (the rest point strikes from 2 cm before
+//    the wall to 1.5 cm past it and back in 0.2 s, at 1 s and at 2.5 s), kGrasp (two devices on
+//    their own links squeeze a free 50 g block 4 cm wide from both sides, each rest point 1.5 cm
+//    past its face by 1.5 s, and hold), kFree (the rest point swings +-3 cm at 1 Hz in free space).
+//  - Operators: kWorstCase, a light handle held by a stiff, barely damped hand (0.1 kg, 300 N/m,
+//    0.2 N s/m: the passive operator that shows a delayed wall's energy best); kHumanLike, a
+//    finger and arm (0.15 kg, 300 N/m, 3 N s/m) with a physiological tremor (0.1 mm at 9 Hz).
+// Metrics per trial (the worst of the ports for the grasp): lowest_energy_J, the device port's
+// observer's lowest energy (passive: >= -1e-4 J, the issue's bound); early/late_hf_rms_N, the
+// rendered force's content above about 5 Hz (the force less its 0.2 s centred moving mean) over
+// the first second after the first contact and over the run's last second; sustained, whether
+// late_hf_rms_N is over kSustainedHfRms (an oscillation that does not die); peak_force_N against
+// the device's max_force; felt_stiffness_N_per_m, the slope of the rendered force against the
+// handle's position over the contact while pressing (kPress, kGrasp; 0 otherwise): transparency
+// against the zero-delay run's; damped_ticks; lost_messages.
+// Not real-time (vectors grow). Units SI.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace god_finger
+{
+enum class DelayTask
+{
+  kPress,
+  kTap,
+  kGrasp,
+  kFree
+};
+enum class DelayOperator
+{
+  kWorstCase,
+  kHumanLike
+};
+const char* delayTaskName(DelayTask task);
+const char* delayOperatorName(DelayOperator op);
+
+// An oscillation whose force content above 5 Hz stays over the no-link run's by more than this
+// (N rms) in the last second, and over half its first second's, is sustained.
+constexpr double kSustainedHfRms = 0.01;
+
+struct DelayTrial
+{
+  DelayTask task = DelayTask::kPress;
+  DelayOperator op = DelayOperator::kWorstCase;
+  double round_trip = 0.0;       // s: both ways' delay together (half each way)
+  double jitter_fraction = 0.0;  // each way's jitter's standard deviation over its delay
+  double loss = 0.0;             // each message's probability of being lost
+  bool controller = true;        // the passivity controller at the device's port (its defaults)
+  int seed = 1;
+};
+
+struct DelayTrialResult
+{
+  double lowest_energy_J = 0.0;
+  double early_hf_rms_N = 0.0;
+  double late_hf_rms_N = 0.0;
+  double baseline_late_hf_rms_N = 0.0;
+  bool sustained = false;
+  double peak_force_N = 0.0;
+  double max_force_N = 0.0;  // the device's limit (the coupling profile's max_force)
+  double felt_stiffness_N_per_m = 0.0;
+  long damped_ticks = 0;
+  long lost_messages = 0;
+};
+
+DelayTrialResult runDelayTrial(const DelayTrial& trial);
+
+// The sweep of the issue: round trips 10, 30, 60, 100 ms x jitter 0, 20, 50 % x loss 0, 2 % x
+// every task x every operator x controller off and on.
+std::vector<DelayTrial> delaySweep();
+
+// One JSON object (one line) of a trial and its result.
+std::string delayTrialJson(const DelayTrial& trial, const DelayTrialResult& result);
+}  // namespace god_finger

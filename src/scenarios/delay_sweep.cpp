@@ -1,0 +1,408 @@
+#include "god_finger/scenarios/delay_sweep.h"
+
+#include "god_finger/haptics/passivity_controller.h"
+#include "god_finger/haptics/virtual_coupling.h"
+#include "god_finger/runtime/delay_line.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <deque>
+
+namespace god_finger
+{
+namespace
+{
+constexpr double kTick = 1e-3;            // s
+constexpr double kDuration = 4.0;         // s
+constexpr int kHighPassHalfWindow = 100;  // ticks: the moving mean's half window (0.2 s in all)
+constexpr double kBlockMass = 0.05;       // kg: the grasp's block
+constexpr double kBlockHalfWidth = 0.02;  // m
+
+struct OperatorModel
+{
+  double mass;       // kg: handle and hand
+  double stiffness;  // N/m: the hand's grip on its rest point
+  double damping;    // N s/m
+  double tremor;     // m: amplitude of the rest point's tremor
+  double tremor_hz;  // Hz
+};
+
+OperatorModel operatorModel(DelayOperator op)
+{
+  return op == DelayOperator::kWorstCase ? OperatorModel{0.1, 300.0, 0.2, 0.0, 0.0}
+                                         : OperatorModel{0.15, 300.0, 3.0, 1e-4, 9.0};
+}
+
+// The operator's rest point (m) for port `port` at time t (s). Port 0 pushes along +x, port 1
+// (the grasp's right finger) along -x.
+double restPoint(DelayTask task, int port, double t)
+{
+  const auto ramp = [](double t, double t0, double t1, double from, double to)
+  { return t <= t0 ? from : (t >= t1 ? to : from + (to - from) * (t - t0) / (t1 - t0)); };
+  switch (task)
+  {
+    case DelayTask::kPress:
+      return ramp(t, 0.5, 2.0, -0.01, 0.02);
+    case DelayTask::kTap:
+      for (const double start : {1.0, 2.5})
+      {
+        const double w = t - start;
+        if (w >= 0.0 && w < 0.2)
+        {
+          return w < 0.05 ? ramp(w, 0.0, 0.05, -0.02, 0.015) : (w < 0.15 ? 0.015 : ramp(w, 0.15, 0.2, 0.015, -0.02));
+        }
+      }
+      return -0.02;
+    case DelayTask::kGrasp:
+    {
+      const double left = ramp(t, 0.5, 1.5, -0.04, -kBlockHalfWidth + 0.015);
+      return port == 0 ? left : -left;
+    }
+    case DelayTask::kFree:
+      return 0.03 * std::sin(2.0 * M_PI * t);
+  }
+  return 0.0;
+}
+
+struct Message
+{
+  double release;  // s
+  double stamp;    // s: when it was sent
+  double a;        // position (m) or force (N)
+  double b;        // velocity (m/s)
+};
+
+// One direction of the link: messages in flight, the newest delivered.
+class Channel
+{
+ public:
+  explicit Channel(const DelayLineParams& params) : schedule_(params) {}
+  void send(double now, double a, double b)
+  {
+    const double release = schedule_.release(now);
+    if (release >= 0.0)
+    {
+      flight_.push_back({release, now, a, b});
+    }
+  }
+  // The newest message released by `now`, if any arrived since the last call.
+  bool receive(double now, Message* newest)
+  {
+    bool any = false;
+    while (!flight_.empty() && flight_.front().release <= now)
+    {
+      if (!any || flight_.front().stamp > newest->stamp)
+      {
+        *newest = flight_.front();
+        any = true;
+      }
+      flight_.pop_front();
+    }
+    return any;
+  }
+  long lost() const
+  {
+    return schedule_.lost();
+  }
+
+ private:
+  DelaySchedule schedule_;
+  std::deque<Message> flight_;
+};
+
+struct Port
+{
+  Port(const DelayLineParams& up_params, const DelayLineParams& down_params, const PassivityParams& passivity)
+      : up(up_params), down(down_params), controller(passivity, kTick)
+  {
+  }
+  Channel up;    // positions to the physics
+  Channel down;  // forces back
+  PassivityController controller;
+  double x = 0.0;                        // m: the handle
+  double v = 0.0;                        // m/s
+  Message seen{0.0, -1.0, 0.0, 0.0};     // at the physics: the newest position
+  Message command{0.0, -1.0, 0.0, 0.0};  // at the device: the newest force
+  std::vector<double> rendered;          // N, per tick
+  std::vector<double> positions;         // m, per tick
+  std::vector<char> pressing;            // per tick: the physics' proxy held by the surface
+};
+
+double rms(const std::vector<double>& values, std::size_t from, std::size_t to)
+{
+  double sum = 0.0;
+  for (std::size_t i = from; i < to; ++i)
+  {
+    sum += values[i] * values[i];
+  }
+  return to > from ? std::sqrt(sum / static_cast<double>(to - from)) : 0.0;
+}
+
+// The force less its centred moving mean: its content above about 5 Hz.
+std::vector<double> highPass(const std::vector<double>& force)
+{
+  const int n = static_cast<int>(force.size());
+  std::vector<double> sums(n + 1, 0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    sums[i + 1] = sums[i] + force[i];
+  }
+  std::vector<double> high(n);
+  for (int i = 0; i < n; ++i)
+  {
+    const int lo = std::max(0, i - kHighPassHalfWindow);
+    const int hi = std::min(n, i + kHighPassHalfWindow + 1);
+    high[i] = force[i] - (sums[hi] - sums[lo]) / (hi - lo);
+  }
+  return high;
+}
+
+// The least-squares slope of -force against position over the samples taken (N/m).
+double feltStiffness(const Port& port, double from, double to)
+{
+  double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (std::size_t i = 0; i < port.rendered.size(); ++i)
+  {
+    const double t = (static_cast<double>(i) + 1.0) * kTick;
+    if (t < from || t > to || !port.pressing[i])
+    {
+      continue;
+    }
+    const double x = std::abs(port.positions[i]);
+    const double y = std::abs(port.rendered[i]);
+    n += 1.0;
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double denominator = n * sxx - sx * sx;
+  return n > 10.0 && denominator > 0.0 ? (n * sxy - sx * sy) / denominator : 0.0;
+}
+}  // namespace
+
+const char* delayTaskName(DelayTask task)
+{
+  switch (task)
+  {
+    case DelayTask::kPress:
+      return "press";
+    case DelayTask::kTap:
+      return "tap";
+    case DelayTask::kGrasp:
+      return "grasp";
+    case DelayTask::kFree:
+      return "free";
+  }
+  return "?";
+}
+
+const char* delayOperatorName(DelayOperator op)
+{
+  return op == DelayOperator::kWorstCase ? "worst_case" : "human_like";
+}
+
+DelayTrialResult runDelayTrial(const DelayTrial& trial)
+{
+  const CouplingProfile coupling;
+  const OperatorModel hand = operatorModel(trial.op);
+  PassivityParams passivity;
+  if (!trial.controller)
+  {
+    passivity.passivity_damping_limit = 0.0;  // the observer only
+  }
+  const int port_count = trial.task == DelayTask::kGrasp ? 2 : 1;
+  std::vector<Port> ports;
+  ports.reserve(port_count);
+  for (int p = 0; p < port_count; ++p)
+  {
+    DelayLineParams link;
+    link.delay = 0.5 * trial.round_trip;
+    link.jitter = trial.jitter_fraction * link.delay;
+    link.loss = trial.loss;
+    link.seed = trial.seed * 4 + 2 * p;
+    DelayLineParams back = link;
+    back.seed = link.seed + 1;
+    ports.emplace_back(link, back, passivity);
+    ports.back().x = restPoint(trial.task, p, 0.0);
+  }
+  double block = 0.0;  // m: the grasp block's centre
+  double block_v = 0.0;
+  const long ticks = std::lround(kDuration / kTick);
+  for (long tick = 0; tick < ticks; ++tick)
+  {
+    const double now = static_cast<double>(tick) * kTick;
+    for (Port& port : ports)
+    {
+      port.up.send(now, port.x, port.v);
+    }
+    // The physics: each port's proxy stops at its surface; the coupling pulls it.
+    double on_block = 0.0;
+    for (int p = 0; p < port_count; ++p)
+    {
+      Port& port = ports[p];
+      Message arrived{};
+      if (port.up.receive(now, &arrived))
+      {
+        port.seen = arrived;
+      }
+      double force_on_hand = 0.0;
+      bool pressing = false;
+      if (port.seen.stamp >= 0.0 && trial.task != DelayTask::kFree)
+      {
+        const double sign = p == 0 ? 1.0 : -1.0;  // port 0 pushes along +x
+        const double surface = trial.task == DelayTask::kGrasp ? block - sign * kBlockHalfWidth : 0.0;
+        pressing = sign * (port.seen.a - surface) > 0.0;
+        const double proxy = pressing ? surface : port.seen.a;
+        const double proxy_v = pressing ? (trial.task == DelayTask::kGrasp ? block_v : 0.0) : port.seen.b;
+        const CouplingForce pull =
+            couplingForce(coupling, Eigen::Vector3d(port.seen.a, 0, 0), Eigen::Vector3d(port.seen.b, 0, 0),
+                          Eigen::Vector3d(proxy, 0, 0), Eigen::Vector3d(proxy_v, 0, 0));
+        force_on_hand = -pull.on_proxy.x();
+        if (pressing)
+        {
+          on_block += pull.on_proxy.x();
+        }
+      }
+      port.down.send(now, force_on_hand, 0.0);
+      port.pressing.push_back(pressing ? 1 : 0);
+    }
+    if (trial.task == DelayTask::kGrasp)
+    {
+      block_v += kTick * on_block / kBlockMass;
+      block += kTick * block_v;
+    }
+    // The devices: the newest force, through the controller; the hands move the handles.
+    for (int p = 0; p < port_count; ++p)
+    {
+      Port& port = ports[p];
+      Message arrived{};
+      if (port.down.receive(now, &arrived))
+      {
+        port.command = arrived;
+      }
+      const double command = port.command.stamp >= 0.0 ? port.command.a : 0.0;
+      const double rendered =
+          port.controller.apply(Eigen::Vector3d(command, 0, 0), Eigen::Vector3d(port.v, 0, 0), coupling.max_force).x();
+      const double rest =
+          restPoint(trial.task, p, now) + hand.tremor * std::sin(2.0 * M_PI * hand.tremor_hz * now) * (p == 0 ? 1 : -1);
+      const double by_hand = hand.stiffness * (rest - port.x) - hand.damping * port.v;
+      port.v += kTick * (by_hand + rendered) / hand.mass;
+      port.x += kTick * port.v;
+      port.rendered.push_back(rendered);
+      port.positions.push_back(trial.task == DelayTask::kGrasp ? port.x - (block - (p == 0 ? 1 : -1) * kBlockHalfWidth)
+                                                               : port.x);
+    }
+  }
+  DelayTrialResult result;
+  result.max_force_N = coupling.max_force;
+  result.lowest_energy_J = 0.0;
+  for (int p = 0; p < port_count; ++p)
+  {
+    const Port& port = ports[p];
+    result.lowest_energy_J = std::min(result.lowest_energy_J, port.controller.lowestEnergy());
+    result.damped_ticks += port.controller.activeTicks();
+    result.lost_messages += port.up.lost() + port.down.lost();
+    for (const double f : port.rendered)
+    {
+      result.peak_force_N = std::max(result.peak_force_N, std::abs(f));
+    }
+    std::size_t first = port.rendered.size();
+    for (std::size_t i = 0; i < port.rendered.size(); ++i)
+    {
+      if (port.rendered[i] != 0.0)
+      {
+        first = i;
+        break;
+      }
+    }
+    if (first < port.rendered.size())
+    {
+      const std::vector<double> high = highPass(port.rendered);
+      const std::size_t n = high.size();
+      result.early_hf_rms_N = std::max(result.early_hf_rms_N, rms(high, first, std::min(n, first + 1000)));
+      result.late_hf_rms_N = std::max(result.late_hf_rms_N, rms(high, n - 1000, n));
+    }
+  }
+  // Sustained: the last second's content above 5 Hz has not fallen to half the first second's,
+  // and is over what the same operator and task give with no link at all (the tremor's own).
+  if (trial.round_trip > 0.0 || trial.jitter_fraction > 0.0 || trial.loss > 0.0)
+  {
+    DelayTrial baseline = trial;
+    baseline.round_trip = 0.0;
+    baseline.jitter_fraction = 0.0;
+    baseline.loss = 0.0;
+    baseline.controller = true;
+    result.baseline_late_hf_rms_N = runDelayTrial(baseline).late_hf_rms_N;
+  }
+  else
+  {
+    result.baseline_late_hf_rms_N = result.late_hf_rms_N;
+  }
+  result.sustained = result.late_hf_rms_N > result.baseline_late_hf_rms_N + kSustainedHfRms &&
+                     result.late_hf_rms_N > 0.5 * result.early_hf_rms_N;
+  if (trial.task == DelayTask::kPress)
+  {
+    result.felt_stiffness_N_per_m = feltStiffness(ports[0], 0.5, 2.0);
+  }
+  else if (trial.task == DelayTask::kGrasp)
+  {
+    result.felt_stiffness_N_per_m = feltStiffness(ports[0], 0.5, 1.5);
+  }
+  return result;
+}
+
+std::vector<DelayTrial> delaySweep()
+{
+  std::vector<DelayTrial> trials;
+  for (const DelayTask task : {DelayTask::kPress, DelayTask::kTap, DelayTask::kGrasp, DelayTask::kFree})
+  {
+    for (const DelayOperator op : {DelayOperator::kWorstCase, DelayOperator::kHumanLike})
+    {
+      for (const double round_trip : {0.0, 0.01, 0.03, 0.06, 0.1})
+      {
+        for (const double jitter : {0.0, 0.2, 0.5})
+        {
+          for (const double loss : {0.0, 0.02})
+          {
+            if (round_trip == 0.0 && (jitter > 0.0 || loss > 0.0))
+            {
+              continue;  // the baseline: no link at all
+            }
+            for (const bool controller : {false, true})
+            {
+              DelayTrial trial;
+              trial.task = task;
+              trial.op = op;
+              trial.round_trip = round_trip;
+              trial.jitter_fraction = jitter;
+              trial.loss = loss;
+              trial.controller = controller;
+              trials.push_back(trial);
+            }
+          }
+        }
+      }
+    }
+  }
+  return trials;
+}
+
+std::string delayTrialJson(const DelayTrial& trial, const DelayTrialResult& result)
+{
+  char line[1024];
+  std::snprintf(line, sizeof(line),
+                "{\"task\": \"%s\", \"operator\": \"%s\", \"round_trip_s\": %.3f, \"jitter_fraction\": %.2f, "
+                "\"loss\": %.3f, \"controller\": %s, \"lowest_energy_J\": %.6g, \"early_hf_rms_N\": %.6g, "
+                "\"late_hf_rms_N\": %.6g, \"baseline_late_hf_rms_N\": %.6g, \"sustained\": %s, \"peak_force_N\": %.6g, "
+                "\"max_force_N\": %.6g, "
+                "\"felt_stiffness_N_per_m\": %.6g, \"damped_ticks\": %ld, \"lost_messages\": %ld}",
+                delayTaskName(trial.task), delayOperatorName(trial.op), trial.round_trip, trial.jitter_fraction,
+                trial.loss, trial.controller ? "true" : "false", result.lowest_energy_J, result.early_hf_rms_N,
+                result.late_hf_rms_N, result.baseline_late_hf_rms_N, result.sustained ? "true" : "false",
+                result.peak_force_N, result.max_force_N, result.felt_stiffness_N_per_m, result.damped_ticks,
+                result.lost_messages);
+  return line;
+}
+}  // namespace god_finger
