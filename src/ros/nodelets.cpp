@@ -1,5 +1,6 @@
-// The three nodes as nodelets (one manager, zero-copy messages between them). A bad
+// The nodes as nodelets (one manager, zero-copy messages between them). A bad
 // parameter, scene or device makes the nodelet fail to load with the node's one-line message.
+#include "god_finger/ros/delay_node.h"
 #include "god_finger/ros/device_driver_node.h"
 #include "god_finger/ros/haptic_node.h"
 #include "god_finger/ros/physics_node.h"
@@ -44,9 +45,13 @@ class DeviceDriverNodelet : public NodeletOf<DeviceDriverNode>
 class ServoNodelet : public NodeletOf<ServoNode>
 {
 };
+class DelayNodelet : public NodeletOf<DelayNode>
+{
+};
 }  // namespace god_finger
 
 PLUGINLIB_EXPORT_CLASS(god_finger::PhysicsNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(god_finger::HapticNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(god_finger::DeviceDriverNodelet, nodelet::Nodelet)
 PLUGINLIB_EXPORT_CLASS(god_finger::ServoNodelet, nodelet::Nodelet)
+PLUGINLIB_EXPORT_CLASS(god_finger::DelayNodelet, nodelet::Nodelet)
