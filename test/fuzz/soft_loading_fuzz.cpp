@@ -5,7 +5,8 @@
 // that loads must keep tet_mesh.h's invariants (finite nodes, every node used, positive and
 // not degenerate tetrahedra, a surface whose every edge is shared by faces of both windings, a
 // walk mesh of that surface whose vertices are its nodes),
-// and a small one must step as a soft body to finite positions. Run by scripts/fuzz.
+// and a small one must step as a soft body to finite positions, glued and free on a support
+// plane (never below it). Run by scripts/fuzz.
 #include "god_finger/scene/deformable_object.h"
 #include "god_finger/soft/elastic_body.h"
 #include "god_finger/soft/soft_surface.h"
@@ -14,6 +15,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -85,6 +87,28 @@ void checkMesh(const god_finger::TetMesh& mesh)
     if (!body.displacement().allFinite())
     {
       std::abort();
+    }
+    // Free, on its support (a resting body): it stays finite and no node goes below the plane by
+    // more than the contact solver's tolerance.
+    god_finger::ElasticBody free_body(mesh, material, {}, 1e-3, Eigen::Vector3d(0, 0, -9.81));
+    god_finger::SupportPlane plane;
+    plane.offset = mesh.nodes.front().z();
+    for (const Eigen::Vector3d& node : mesh.nodes)
+    {
+      plane.offset = std::min(plane.offset, node.z());
+    }
+    plane.friction = 0.5;
+    free_body.setSupport(plane);
+    for (int step = 0; step < 5; ++step)
+    {
+      free_body.step(none);
+    }
+    for (int node = 0; node < free_body.nodeCount(); ++node)
+    {
+      if (!free_body.position(node).allFinite() || free_body.position(node).z() < plane.offset - 1e-6)
+      {
+        std::abort();
+      }
     }
   }
 }
