@@ -9,7 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 namespace god_finger
 {
@@ -94,6 +99,40 @@ TEST(SoftScenarios, APinchLiftsAFreeSoftBallOffTheTableAndHoldsIt)
     EXPECT_GT(m.at("hand_force_N"), 2.0) << result.model;
     EXPECT_LE(m.at("penetration_p99_m"), 1e-3) << result.model;
   }
+}
+
+TEST(SoftScenarios, AtAFrictionTooLowForItsWeightThePadsDropTheBall)
+{
+  // The same scene with the ball's friction 0.1: two pads squeezing about 3.4 N hold at most
+  // 2 x 0.1 x 3.4 = 0.68 N, less than its 0.98 N. A scene folder of its own (its volume by path).
+  char folder[] = "/tmp/god_finger_soft_scenarios_XXXXXX";
+  ASSERT_NE(mkdtemp(folder), nullptr);
+  std::ifstream in(std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/soft_ball.urdf");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scene = text.str();
+  const auto replace = [&scene](const std::string& from, const std::string& to)
+  {
+    const std::size_t at = scene.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    scene.replace(at, from.size(), to);
+  };
+  replace("<friction value=\"0.8\"/>", "<friction value=\"0.1\"/>");
+  replace("../objects/soft_ball.vtk", std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/objects/soft_ball.vtk");
+  std::ofstream(std::string(folder) + "/soft_ball.urdf") << scene;
+  for (const ContactModel model : {ContactModel::kGodFinger, ContactModel::kSoftFinger})
+  {
+    ExperimentOptions options;
+    options.scenario = Scenario::kPinchSoft;
+    options.model = model;
+    options.scenes_dir = folder;
+    const ExperimentResult result = runExperiment(options);
+    std::printf("friction 0.1: %s\n", toJson(result).c_str());
+    EXPECT_EQ(result.metrics.at("held"), 0.0) << result.model;
+    EXPECT_LT(result.metrics.at("lift_height_m"), 0.005) << result.model;
+  }
+  std::remove((std::string(folder) + "/soft_ball.urdf").c_str());
+  rmdir(folder);
 }
 }  // namespace
 }  // namespace god_finger
