@@ -364,10 +364,15 @@ TEST_F(Safety, DriverRampsToZeroWhenThePhysicsDiesAndResumesAfterItsRespawn)
   ASSERT_GT(zero, 0u);
   const double zero_age = states[zero].command_age;
   EXPECT_GE(zero_age, kCommandTimeout + kRampTime) << "the force went to zero before the watchdog's time";
-  // Back from the zero, the same command's states: their ages fall tick by tick (a newer command
-  // would start again near zero).
+  // Back from the zero, the same command's states: from one to the next its age grows by the
+  // time between their reads (a newer command's age starts again from its own arrival: on a
+  // loaded machine commands come unevenly, and a newer one read 0.7 ms after it came can follow
+  // an older one read 0.3 ms after it came, so a growing age alone does not tell them apart).
+  constexpr double kSameCommand = 2.5e-4;  // s: the reads' stamps are taken just after the reads
   std::size_t first = zero;
-  while (first > 0 && states[first - 1].command_age >= 0.0 && states[first - 1].command_age < states[first].command_age)
+  while (first > 0 && states[first - 1].command_age >= 0.0 &&
+         std::abs((states[first].command_age - states[first - 1].command_age) -
+                  (states[first].stamp - states[first - 1].stamp)) < kSameCommand)
   {
     --first;
   }
