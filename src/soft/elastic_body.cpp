@@ -283,11 +283,11 @@ void ElasticBody::step(const Eigen::VectorXd& external_forces)
   const int free_count = static_cast<int>(free_dofs_.size());
   if (corotated_)
   {
-    localDisplacement(&local_displacement_);
+    const Eigen::Matrix3d rotation = localDisplacement(&local_displacement_);
     applyStiffness(local_displacement_, &ku_);
     for (int node = 0; node < nodeCount(); ++node)
     {
-      ku_.segment<3>(3 * node) = rotation_ * ku_.segment<3>(3 * node).eval();
+      ku_.segment<3>(3 * node) = rotation * ku_.segment<3>(3 * node).eval();
     }
   }
   else
@@ -581,7 +581,7 @@ void ElasticBody::positions(std::vector<Eigen::Vector3d>* out) const
   }
 }
 
-void ElasticBody::deformation(Eigen::VectorXd* out)
+void ElasticBody::deformation(Eigen::VectorXd* out) const
 {
   if (corotated_)
   {
@@ -593,7 +593,7 @@ void ElasticBody::deformation(Eigen::VectorXd* out)
   }
 }
 
-void ElasticBody::localDisplacement(Eigen::VectorXd* local)
+Eigen::Matrix3d ElasticBody::localDisplacement(Eigen::VectorXd* local) const
 {
   // The best-fit rotation of the nodes about their centre of mass (shape matching: the polar
   // factor of sum m (x - c)(X - C)^T).
@@ -616,12 +616,13 @@ void ElasticBody::localDisplacement(Eigen::VectorXd* local)
   {
     u.col(2) *= -1.0;
   }
-  rotation_ = u * svd.matrixV().transpose();
+  const Eigen::Matrix3d rotation = u * svd.matrixV().transpose();
   local->resize(3 * nodeCount());
   for (int node = 0; node < nodeCount(); ++node)
   {
-    local->segment<3>(3 * node) = rotation_.transpose() * (position(node) - centre) + rest_centre_ - mesh_.nodes[node];
+    local->segment<3>(3 * node) = rotation.transpose() * (position(node) - centre) + rest_centre_ - mesh_.nodes[node];
   }
+  return rotation;
 }
 
 double ElasticBody::elasticEnergy() const
@@ -629,7 +630,7 @@ double ElasticBody::elasticEnergy() const
   if (corotated_)
   {
     Eigen::VectorXd local;
-    const_cast<ElasticBody*>(this)->localDisplacement(&local);
+    localDisplacement(&local);
     return 0.5 * local.dot(stiffness_ * local);
   }
   return 0.5 * displacement_.dot(stiffness_ * displacement_);

@@ -162,7 +162,7 @@ class ElasticBody
   // Its deformation (m, 3 per node, rest frame): a free body's displacement in its best-fit
   // rotation about its centre of mass (its rigid motion taken out), a held body's displacement.
   // RT-safe when `out` has 3 per node already.
-  void deformation(Eigen::VectorXd* out);
+  void deformation(Eigen::VectorXd* out) const;
 
   double elasticEnergy() const;  // 1/2 u^T K u (J), u in the best-fit rotation for a free body
   double kineticEnergy() const;  // 1/2 v^T M v (J)
@@ -182,8 +182,8 @@ class ElasticBody
  private:
   // The support's contact impulses on this step's velocities (before they move the nodes).
   void holdOnSupport();
-  // A free body's displacement in its best-fit rotation (sets rotation_).
-  void localDisplacement(Eigen::VectorXd* local);
+  // A free body's displacement in its best-fit rotation, and that rotation (body frame).
+  Eigen::Matrix3d localDisplacement(Eigen::VectorXd* local) const;
 
   TetMesh mesh_;
   std::vector<std::array<int, 3>> surface_;
@@ -215,7 +215,6 @@ class ElasticBody
   // The support (has_support_ false: none) and its force in the last step.
   bool corotated_ = false;
   Eigen::Vector3d rest_centre_ = Eigen::Vector3d::Zero();  // m, the nodes' centre of mass at rest
-  Eigen::Matrix3d rotation_ = Eigen::Matrix3d::Identity();
   Eigen::VectorXd local_displacement_;
   bool has_support_ = false;
   SupportPlane support_;
