@@ -54,6 +54,7 @@ Eigen::Vector3d PassivityController::apply(const Eigen::Vector3d& force, const E
                                            double max_force)
 {
   damping_ = 0.0;
+  cut_ = 0.0;
   if (!force.allFinite() || !velocity.allFinite())
   {
     return force;
@@ -62,18 +63,35 @@ Eigen::Vector3d PassivityController::apply(const Eigen::Vector3d& force, const E
   const double asked = force.isZero(0.0) ? 0.0 : params_.passivity_min_damping * speed2_dt;
   Eigen::Vector3d rendered = force;
   const double unmodified = bank_ - force.dot(velocity) * period_ - asked;
-  if (unmodified < 0.0 && params_.passivity_damping_limit > 0.0 && speed2_dt > kStill)
+  if (params_.passivity_damping_limit > 0.0)
   {
-    damping_ = std::min(params_.passivity_damping_limit, -unmodified / speed2_dt);
-    rendered -= damping_ * velocity;
-    ++active_ticks_;
+    if (unmodified < 0.0 && speed2_dt > kStill)
+    {
+      damping_ = std::min(params_.passivity_damping_limit, -unmodified / speed2_dt);
+      rendered -= damping_ * velocity;
+    }
+    // The observer's energy about to go below zero (the damper capped, the loop giving the hand
+    // more than it ever put in): that much of the force's push along the motion is taken away,
+    // never more than the push itself (E >= 0 before this tick). A debt of the bank alone is
+    // left to the damper, which pays it over the next ticks.
+    const double made_up = rendered.dot(velocity) * period_ - energy_;  // J
+    if (made_up > 0.0)
+    {
+      const double speed = velocity.norm();
+      cut_ = std::min(rendered.dot(velocity) / speed, made_up / (speed * period_));
+      rendered -= (cut_ / speed) * velocity;
+    }
+    if (damping_ > 0.0 || cut_ > 0.0)
+    {
+      ++active_ticks_;
+    }
   }
   const double length = rendered.norm();
   if (length > max_force)
   {
     rendered *= max_force / length;
   }
-  const double taken = (force - rendered).dot(velocity) * period_;  // J: what the damper took out
+  const double taken = (force - rendered).dot(velocity) * period_;  // J: what the controller took out
   dissipated_ += std::max(0.0, taken);
   const double tick = -rendered.dot(velocity) * period_;
   bank_ = std::min(params_.passivity_reservoir, bank_ + tick - asked);
@@ -85,6 +103,7 @@ Eigen::Vector3d PassivityController::apply(const Eigen::Vector3d& force, const E
 void PassivityController::reset()
 {
   bank_ = 0.0;
+  cut_ = 0.0;
   energy_ = 0.0;
   lowest_energy_ = 0.0;
   damping_ = 0.0;

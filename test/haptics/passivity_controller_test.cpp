@@ -101,11 +101,12 @@ TEST(PassivityController, ADelayedWallBuzzesWithoutItAndSettlesPassiveWithIt)
     EXPECT_LT(off.lowest_energy, -1.0) << round_trip;
     EXPECT_GT(off.late_amplitude, 0.1) << round_trip;
     // On: the buzz dies, and the hand rests on the wall (the coupling's equilibrium with the
-    // hand: 300 (0.02 - x) = 400 x, x = 8.57 mm). Passive up to 60 ms; at 100 ms the first
-    // contact asks more damping than the 50 N s/m limit for a few ticks (measured -0.070 J).
+    // hand: 300 (0.02 - x) = 400 x, x = 8.57 mm). Passive at every round trip: where the first
+    // contact asks more damping than the 50 N s/m limit (at 100 ms it went to -0.070 J with the
+    // damper alone), the push along the motion is cut.
     EXPECT_LT(on.late_amplitude, 1e-5) << round_trip;
     EXPECT_NEAR(on.settled_position, 0.02 * 300.0 / 700.0, 1e-4) << round_trip;
-    EXPECT_GE(on.lowest_energy, round_trip <= 0.06 ? -1e-4 : -0.1) << round_trip;
+    EXPECT_GE(on.lowest_energy, -1e-4) << round_trip;
     EXPECT_GT(on.active_ticks, 0) << round_trip;
   }
 }
@@ -120,7 +121,7 @@ TEST(PassivityController, APassiveLoopIsLeftAlone)
   EXPECT_EQ(none.peak_force, off.peak_force);
 }
 
-TEST(PassivityController, TheDampingIsTheLeastThatRestoresTheEnergyAndIsCapped)
+TEST(PassivityController, TheDampingIsTheLeastThatRestoresTheEnergyIsCappedAndThePushIsCutBeyondIt)
 {
   PassivityParams params;
   params.passivity_damping_limit = 10.0;
@@ -137,32 +138,40 @@ TEST(PassivityController, TheDampingIsTheLeastThatRestoresTheEnergyAndIsCapped)
   out = controller.apply(Eigen::Vector3d(1.0, 0.0, 0.0), Eigen::Vector3d(0.2, 0.0, 0.0), 20.0);
   EXPECT_NEAR(controller.damping(), 5.0, 1e-9);
   EXPECT_NEAR(controller.energy(), 0.0, 1e-15);
-  // Ten times the deficit of the limit's reach: capped, E goes below zero by what is left.
-  out = controller.apply(Eigen::Vector3d(10.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.0, 0.0), 20.0);
+  // The hand pushes against the force: 5e-4 J in a tick; the bank fills to passivity_reservoir,
+  // the observer's energy by all that came in.
+  for (int i = 0; i < 3; ++i)
+  {
+    out = controller.apply(Eigen::Vector3d(-5.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.0, 0.0), 100.0);
+    EXPECT_EQ(controller.damping(), 0.0);
+  }
+  EXPECT_NEAR(controller.energy(), 1.5e-3, 1e-15);
+  EXPECT_EQ(controller.bank(), 1e-3);
+  // The network gives 20 N along 0.1 m/s (2e-3 J, 1e-3 J beyond the bank): 100 N s/m asked,
+  // capped at 10 (19 N, 1.9e-3 J). That would take the observer's energy 4e-4 J below zero, so
+  // 4 N more of the push along the motion is taken away: 15 N, the energy exactly 0, and the
+  // bank in a debt of 5e-4 J (what it let out beyond what it held).
+  out = controller.apply(Eigen::Vector3d(20.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.0, 0.0), 100.0);
   EXPECT_EQ(controller.damping(), 10.0);
-  EXPECT_NEAR(out.x(), 9.0, 1e-12);
-  EXPECT_NEAR(controller.energy(), -9.0 * 0.1 * 1e-3, 1e-15);
-  // No force (the hand moved off the wall), slowly: the debt is still paid (10 N s/m at 0.03 m/s
-  // takes 9e-6 J a tick) and nothing is asked for the free motion itself.
+  EXPECT_NEAR(controller.cut(), 4.0, 1e-12);
+  EXPECT_NEAR(out.x(), 15.0, 1e-12);
+  EXPECT_NEAR(controller.energy(), 0.0, 1e-15);
+  EXPECT_NEAR(controller.bank(), -5e-4, 1e-15);
+  // No force (the hand moved off the wall), slowly: the debt is still paid by the damper (10 N
+  // s/m at 0.03 m/s takes 9e-6 J a tick); a damper never pushes, so nothing is cut.
   out = controller.apply(Eigen::Vector3d::Zero(), Eigen::Vector3d(0.03, 0.0, 0.0), 20.0);
   EXPECT_EQ(controller.damping(), 10.0);
+  EXPECT_EQ(controller.cut(), 0.0);
   EXPECT_NEAR(out.x(), -0.3, 1e-12);
-  EXPECT_NEAR(controller.bank(), -9e-4 + 9e-6, 1e-15);
-  // The hand pushing against the force puts 5e-4 J in, which does not pay the 9e-4 J debt: the
-  // controller damps on, capped (40 N s/m asked): -5 - 10 * 0.1 = -6 N, 6e-4 J in.
-  out = controller.apply(Eigen::Vector3d(-5.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.0, 0.0), 100.0);
+  EXPECT_NEAR(controller.bank(), -5e-4 + 9e-6, 1e-15);
+  EXPECT_NEAR(controller.energy(), 9e-6, 1e-15);
+  // A push along the motion with the bank in debt and the observer's energy at 9e-6 J: the damper
+  // capped (-1 N), and the rest of the push cut to what the energy holds (9e-6 J: 0.09 N).
+  out = controller.apply(Eigen::Vector3d(5.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.0, 0.0), 100.0);
   EXPECT_EQ(controller.damping(), 10.0);
-  EXPECT_NEAR(out.x(), -6.0, 1e-12);
-  EXPECT_NEAR(controller.energy(), -9e-4 + 9e-6 + 6e-4, 1e-15);
-  EXPECT_NEAR(controller.bank(), -9e-4 + 9e-6 + 6e-4, 1e-15);
-  // Then it fills: the observer's energy by all that comes in, the bank up to passivity_reservoir.
-  for (int i = 0; i < 10; ++i)
-  {
-    controller.apply(Eigen::Vector3d(-5.0, 0.0, 0.0), Eigen::Vector3d(0.1, 0.0, 0.0), 100.0);
-  }
-  EXPECT_EQ(controller.damping(), 0.0);
-  EXPECT_NEAR(controller.energy(), -9e-4 + 9e-6 + 6e-4 + 10 * 5e-4, 1e-15);
-  EXPECT_EQ(controller.bank(), 1e-3);
+  EXPECT_NEAR(out.x(), 0.09, 1e-12);
+  EXPECT_NEAR(controller.energy(), 0.0, 1e-15);
+  EXPECT_GE(controller.energy(), 0.0);
 }
 
 TEST(PassivityController, WhilePushingTheLoopMustDissipateAsTheLeastDamperWouldAndFreeMotionIsFree)
