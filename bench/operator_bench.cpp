@@ -9,20 +9,20 @@
 // per squeeze in the list and at the layout's target squeeze.
 // Second, the paper's pencil-versus-finger example (scenarios/sheet_push_task.h): `--seeds`
 // operators drag a sheet by its corner per press in the list.
-// Third, a cylinder pinched and turned 90 degrees about its axis (scenarios/cylinder_turn_task.h)
-// and a mug lifted by three fingers (scenarios/mug_grasp_task.h): `--seeds` operators per squeeze
-// in their lists.
-// Prints one JSON line per layout ({"kind":"limit"}) and per run ({"kind":"run"}, with its
+// Third, a cylinder pinched and turned 90 degrees about its axis (scenarios/cylinder_turn_task.h),
+// by 3-DOF fingers and then by oriented ones turning with the hand ("oriented": true, the
+// operator's wrist tremor on), and a mug lifted by three fingers (scenarios/mug_grasp_task.h): `--seeds` operators per
+// squeeze in their lists. Prints one JSON line per layout ({"kind":"limit"}) and per run ({"kind":"run"}, with its
 // "task": "pick_place", "sheet_push", "cylinder_turn" or "mug_grasp"), in that order.
 //
 // usage: operator_bench [--seeds N] [--squeezes MM[,MM...]] [--presses MM[,MM...]]
 //                       [--turn-squeezes MM[,MM...]] [--mug-squeezes MM[,MM...]]
-#include "god_finger/support/text_numbers.h"
 #include "god_finger/scenarios/cylinder_turn_task.h"
 #include "god_finger/scenarios/grip_task.h"
 #include "god_finger/scenarios/mug_grasp_task.h"
 #include "god_finger/scenarios/pad_fidelity.h"
 #include "god_finger/scenarios/sheet_push_task.h"
+#include "god_finger/support/text_numbers.h"
 #include "operator_pick_place.h"
 
 #include <nlohmann/json.hpp>
@@ -125,32 +125,37 @@ int main(int argc, char** argv)
       }
     }
   }
-  for (const PadLayout& layout : kPadLayouts)
+  for (const bool oriented : {false, true})
   {
-    for (const double squeeze : turn_squeezes)
+    for (const PadLayout& layout : kPadLayouts)
     {
-      for (int seed = 1; seed <= seeds; ++seed)
+      for (const double squeeze : turn_squeezes)
       {
-        CylinderTurnOptions options;
-        options.model = layout.model;
-        options.params.pad_solver = layout.pad_solver;
-        options.squeeze = squeeze;
-        options.hand = drawOperator(static_cast<std::uint64_t>(seed), Eigen::Vector3d::UnitY());
-        const CylinderTurnResult r = runCylinderTurn(options);
-        std::cout << nlohmann::json{{"kind", "run"},
-                                    {"task", "cylinder_turn"},
-                                    {"layout", layout.name},
-                                    {"squeeze_m", squeeze},
-                                    {"seed", seed},
-                                    {"held", r.held},
-                                    {"turned", r.turned},
-                                    {"turn_rad", r.turn_rad},
-                                    {"final_tilt_rad", r.final_tilt_rad},
-                                    {"max_tilt_rad", r.max_tilt_rad},
-                                    {"max_slip_m", r.max_slip_m},
-                                    {"mean_grip_force_N", r.mean_grip_force_N}}
-                         .dump()
-                  << std::endl;
+        for (int seed = 1; seed <= seeds; ++seed)
+        {
+          CylinderTurnOptions options;
+          options.model = layout.model;
+          options.params.pad_solver = layout.pad_solver;
+          options.squeeze = squeeze;
+          options.hand = drawOperator(static_cast<std::uint64_t>(seed), Eigen::Vector3d::UnitY());
+          options.oriented = oriented;
+          const CylinderTurnResult r = runCylinderTurn(options);
+          std::cout << nlohmann::json{{"kind", "run"},
+                                      {"task", "cylinder_turn"},
+                                      {"layout", layout.name},
+                                      {"oriented", oriented},
+                                      {"squeeze_m", squeeze},
+                                      {"seed", seed},
+                                      {"held", r.held},
+                                      {"turned", r.turned},
+                                      {"turn_rad", r.turn_rad},
+                                      {"final_tilt_rad", r.final_tilt_rad},
+                                      {"max_tilt_rad", r.max_tilt_rad},
+                                      {"max_slip_m", r.max_slip_m},
+                                      {"mean_grip_force_N", r.mean_grip_force_N}}
+                           .dump()
+                    << std::endl;
+        }
       }
     }
   }

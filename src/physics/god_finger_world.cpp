@@ -583,7 +583,8 @@ struct GodFingerWorld::Impl
     }
     proxy.reference_tangents[body_index] = scratch.first_tangent;
     // The object's rotation relative to the pad since the contact began.
-    const Eigen::Matrix3d object_to_pad = objectTurnSinceContact(to_world, steps, &proxy.pads[body_index]);
+    const Eigen::Matrix3d object_to_pad =
+        objectTurnSinceContact(to_world, steps, proxy.orientation.oriented, &proxy.pads[body_index]);
 
     WorldContactArea& area = state.contacts[state.contact_count++];
     area.body = body_index;
@@ -616,6 +617,26 @@ struct GodFingerWorld::Impl
     area_contact.area = &area;
     area_contact.radial_index = radial_index.data();
     response->respond(params, area_contact, &proxy, steps, {injector.get(), &pads});
+  }
+
+  // An oriented finger's hand feels what its pads' rows gave the objects, turned back on it
+  // (pad_state.h: the pad turns with the finger, so what it holds resists the finger's turn).
+  void feelPadTorques(double dt)
+  {
+    for (Proxy& proxy : proxies)
+    {
+      if (!proxy.orientation.oriented)
+      {
+        continue;
+      }
+      for (const PadState& pad : proxy.pads)
+      {
+        if (pad.linear.step == steps)
+        {
+          proxy.state.user_torque -= pad.object_side * pad.torque_impulse / dt;
+        }
+      }
+    }
   }
 
   void step()
@@ -678,6 +699,7 @@ struct GodFingerWorld::Impl
     world->stepSimulation(dt, 0);
     injector->recordImpulses(&proxies, steps);
     pads.recordImpulses(steps);
+    feelPadTorques(dt);
     time = (steps + 1) * dt;
     ++steps;
     for (const int index : awake)

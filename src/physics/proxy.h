@@ -54,6 +54,24 @@ struct Proxy
   int soft_load_body = -1;  // the body soft_load was given to (scene index), -1: none
 };
 
+// The pad's frame on the proxy, at the proxy body's origin (`proxy_object`'s), for a contact of
+// normal `normal` (unit, world, out of the object): the body's own (it never turns) for a 3-DOF
+// finger. For an oriented finger, the finger's orientation swung by the shortest arc that
+// turns its pulp (z) onto -normal: it turns with the finger's twist about the normal and with
+// the normal itself, not with the finger's roll on the surface (the pulp rolls there,
+// pad_state.h). An oriented pad's material points are kept in this frame. Real-time safe.
+inline btTransform padFrame(const Proxy& proxy, const btCollisionObject& proxy_object, const Eigen::Vector3d& normal)
+{
+  if (!proxy.orientation.oriented)
+  {
+    return proxy_object.getWorldTransform();
+  }
+  const Eigen::Quaterniond& finger = proxy.orientation.proxy;
+  const Eigen::Quaterniond pad =
+      Eigen::Quaterniond::FromTwoVectors(finger * Eigen::Vector3d::UnitZ(), -normal) * finger;
+  return btTransform(btQuaternion(pad.x(), pad.y(), pad.z(), pad.w()), proxy_object.getWorldTransform().getOrigin());
+}
+
 // Builds the proxy's sphere and rigid body at `proxy.initial` (index `index`, touching
 // `body_count` bodies) and resets its per-step state; the caller adds it to the world.
 void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, int index, int body_count,

@@ -73,6 +73,20 @@ CylinderTurnResult runCylinderTurn(const CylinderTurnOptions& options)
     }
     return position;
   };
+  // An oriented finger: its pulp (z) towards the axis, its tip (x) down, turned with the hand.
+  auto fingerOrientation = [&](double t, int finger) -> Eigen::Quaterniond
+  {
+    const double turned = kTurnAngle * minimumJerkRamp(t, kLiftEnd, kTurnEnd);
+    Eigen::Matrix3d frame;
+    frame.col(0) = -Eigen::Vector3d::UnitZ();
+    frame.col(2) = -around(start_angle[finger] + turned);
+    frame.col(1) = frame.col(2).cross(frame.col(0));
+    const Eigen::Vector3d shake = wristTremorAt(traits, t, finger);
+    const double angle = shake.norm();
+    const Eigen::Matrix3d wrist =
+        angle > 0.0 ? Eigen::AngleAxisd(angle, shake / angle).toRotationMatrix() : Eigen::Matrix3d::Identity();
+    return Eigen::Quaterniond(wrist * frame);
+  };
   std::array<int, 2> fingers{};
   for (int k = 0; k < 2; ++k)
   {
@@ -83,6 +97,9 @@ CylinderTurnResult runCylinderTurn(const CylinderTurnOptions& options)
   CylinderTurnResult result;
   result.held = true;
   std::array<double, 2> slip{0.0, 0.0};  // m, sliding path per finger since the lift's start
+  // Each finger's proxy orientation at the last step (the identity for a 3-DOF finger).
+  std::array<Eigen::Quaterniond, 2> last_finger_orientation{Eigen::Quaterniond::Identity(),
+                                                            Eigen::Quaterniond::Identity()};
   double extra = 0.0;
   double force_sum = 0.0;
   long force_samples = 0;
@@ -94,7 +111,14 @@ CylinderTurnResult runCylinderTurn(const CylinderTurnOptions& options)
     const double factor = fluctuationAt(traits, t) + extra;
     for (int k = 0; k < 2; ++k)
     {
-      world.setInterfaceTarget(fingers[k], target(t, factor, k));
+      if (options.oriented)
+      {
+        world.setInterfaceTarget(fingers[k], target(t, factor, k), fingerOrientation(t, k));
+      }
+      else
+      {
+        world.setInterfaceTarget(fingers[k], target(t, factor, k));
+      }
     }
     world.step();
     const BodyState state = world.bodyState(cylinder);
@@ -102,6 +126,14 @@ CylinderTurnResult runCylinderTurn(const CylinderTurnOptions& options)
     const double now = heading(state.pose);
     turn += std::remainder(now - last_heading, 2.0 * kPi);
     last_heading = now;
+    std::array<Eigen::Vector3d, 2> finger_spin;  // rad/s, world: each proxy's turn this step
+    for (int k = 0; k < 2; ++k)
+    {
+      const Eigen::Quaterniond& now_orientation = world.interfaceState(fingers[k]).proxy_orientation;
+      const Eigen::AngleAxisd finger_turn(now_orientation * last_finger_orientation[k].conjugate());
+      last_finger_orientation[k] = now_orientation;
+      finger_spin[k] = finger_turn.angle() / dt * finger_turn.axis();
+    }
     if (t < kLiftStart)
     {
       continue;
@@ -116,9 +148,11 @@ CylinderTurnResult runCylinderTurn(const CylinderTurnOptions& options)
       radial.normalize();
       // The mantle's point under the finger; slip is the finger's velocity against it, along the
       // surface (rolling is no slip; tremor in and out of the mantle is none either).
+      // An oriented finger's pad turns with it (pad_state.h): its material point there moves
+      // with the finger's turn too.
       const Eigen::Vector3d contact = finger.proxy_position - options.params.coupling.proxy_radius * radial;
-      Eigen::Vector3d relative =
-          finger.proxy_velocity - state.linear_velocity - state.angular_velocity.cross(contact - state.center_of_mass);
+      Eigen::Vector3d relative = finger.proxy_velocity + finger_spin[k].cross(contact - finger.proxy_position) -
+                                 state.linear_velocity - state.angular_velocity.cross(contact - state.center_of_mass);
       relative -= relative.dot(radial) * radial;
       slip[k] += relative.norm() * dt;
       fastest = std::max(fastest, relative.norm());

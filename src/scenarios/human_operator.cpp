@@ -42,6 +42,7 @@ OperatorTraits drawOperator(std::uint64_t seed, const Eigen::Vector3d& pinch_axi
   traits.fluctuation_frequency = uniform(&generator, 0.8, 1.2);
   traits.fluctuation_phase = uniform(&generator, 0.0, kTwoPi);
   traits.reaction_delay = uniform(&generator, 0.1, 0.15);
+  traits.wrist_tremor = uniform(&generator, 0.002, 0.01);
   return traits;
 }
 
@@ -54,6 +55,17 @@ Eigen::Vector3d tremorAt(const OperatorTraits& traits, double t, int finger)
         traits.tremor_amplitude * std::sin(kTwoPi * traits.tremor_frequency * t + traits.tremor_phase[axis] + finger);
   }
   return offset;
+}
+
+Eigen::Vector3d wristTremorAt(const OperatorTraits& traits, double t, int finger)
+{
+  Eigen::Vector3d turn;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    turn[axis] =
+        traits.wrist_tremor * std::cos(kTwoPi * traits.tremor_frequency * t + traits.tremor_phase[axis] + finger);
+  }
+  return turn;
 }
 
 double fluctuationAt(const OperatorTraits& traits, double t)

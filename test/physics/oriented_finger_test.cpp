@@ -2,10 +2,10 @@
 // offset one on the side, a point on the nail), the area moving as the finger rolls, the
 // rotational coupling and its torque, the roll_finger scenario, and bad input.
 #include "god_finger/physics/oriented_finger.h"
-#include "god_finger/support/input_error.h"
 #include "god_finger/haptics/orientation_path.h"
-#include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/scenarios/experiment.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -255,6 +255,85 @@ TEST(OrientedFinger, ATurnOfTheDeviceIsFeltAsTheSpringsTorqueAgainstIt)
   EXPECT_NEAR(torque.x(), -expected, 1e-9);
   EXPECT_NEAR(torque.y(), 0.0, 1e-12);
   EXPECT_NEAR(torque.z(), 0.0, 1e-12);
+}
+
+// The plane with a box of `mass` kg (10 x 10 x 2 cm, friction 0.8) lying on it at the origin;
+// the plane's friction `table_friction`.
+SceneDescription boxOnPlane(double mass, double table_friction)
+{
+  SceneDescription scene = planeScene();
+  scene.bodies[0].material.friction = table_friction;
+  BodyDescription box;
+  box.name = "box";
+  box.geometry.kind = GeometryKind::kBox;
+  box.geometry.size = Eigen::Vector3d(0.1, 0.1, 0.02);
+  box.mass = mass;
+  box.inertia =
+      Eigen::Vector3d(mass / 12.0 * (0.01 + 0.0004), mass / 12.0 * (0.01 + 0.0004), mass / 12.0 * 0.02).asDiagonal();
+  box.material.friction = 0.8;
+  box.pose.translation() = Eigen::Vector3d(0, 0, 0.01);
+  scene.bodies.push_back(box);
+  return scene;
+}
+
+struct TwistResult
+{
+  double box_turn = 0.0;     // rad about z, at the end
+  double hand_torque = 0.0;  // N m about z on the hand, mean over the hold's last 0.2 s
+  double pad_bound = 0.0;    // N m: mu N a, the pad's torsional capacity at its widest lever
+};
+
+// An oriented finger presses the box's top centre pulp down (1 cm into it: about 4 N), then the
+// device twists 0.3 rad about z in 0.3 s and holds 0.5 s.
+TwistResult twistOnBox(double mass, double table_friction)
+{
+  const WorldParams params;
+  GodFingerWorld world(boxOnPlane(mass, table_friction), params);
+  const Eigen::Vector3d press(0, 0, 0.02 + params.coupling.proxy_radius - 0.01);
+  const int finger = world.addInterface(Eigen::Vector3d(0, 0, 0.05));
+  const double dt = params.time_step;
+  TwistResult result;
+  int samples = 0;
+  for (long i = 0; i < std::lround(1.8 / dt); ++i)
+  {
+    const double t = (i + 1) * dt;
+    const double reach = std::min(1.0, t / 0.5);
+    const double twist = 0.3 * std::clamp((t - 1.0) / 0.3, 0.0, 1.0);
+    world.setInterfaceTarget(finger, Eigen::Vector3d(0, 0, 0.05) + reach * (press - Eigen::Vector3d(0, 0, 0.05)),
+                             Eigen::Quaterniond(Eigen::AngleAxisd(twist, Eigen::Vector3d::UnitZ())) * pulpDown());
+    world.step();
+    const InterfaceState& state = world.interfaceState(finger);
+    if (t > 1.6)
+    {
+      result.hand_torque += state.user_torque.z();
+      result.pad_bound += 0.8 * state.user_force.z() * (state.contact_count > 0 ? state.contacts[0].radius : 0.0);
+      ++samples;
+    }
+  }
+  result.hand_torque /= samples;
+  result.pad_bound /= samples;
+  const Eigen::Matrix3d box = world.bodyState(1).pose.linear();
+  result.box_turn = std::atan2(box(1, 0), box(0, 0));
+  std::printf(
+      "[ twist on a %.2f kg box, table friction %.1f ] box turned %.4f rad, hand torque %.5f N m, mu N a %.5f N m\n",
+      mass, table_friction, result.box_turn, result.hand_torque, result.pad_bound);
+  return result;
+}
+
+TEST(OrientedFinger, ThePadTurnsWhatItHoldsAndTheHandFeelsWhatResistsIt)
+{
+  // A light box on a frictionless table: the pad sticks and turns it with the finger.
+  const TwistResult free = twistOnBox(0.05, 0.0);
+  EXPECT_NEAR(free.box_turn, 0.3, 0.03);
+  // A heavy box held by the table's friction (about 0.3 N m against the twist): the pad slips at
+  // its torsional capacity (below mu N a, the capacity at the area's rim), and the hand feels it
+  // against the twist; the rotational spring alone, its proxy long at rest with the device, gives
+  // none of it.
+  const TwistResult held = twistOnBox(0.5, 0.8);
+  EXPECT_LT(std::abs(held.box_turn), 0.01);
+  EXPECT_LT(held.hand_torque, -0.3 * held.pad_bound);
+  EXPECT_GT(held.hand_torque, -held.pad_bound);
+  EXPECT_GT(std::abs(held.hand_torque), 20.0 * std::abs(free.hand_torque));
 }
 
 TEST(OrientedFinger, BadOrientationsAreIgnoredAndCounted)

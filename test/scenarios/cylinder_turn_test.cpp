@@ -2,9 +2,9 @@
 // fingers, a point (a ball that keeps its orientation) rolls on the mantle and swings it about
 // the pinch line, a light squeeze drops it, and a 3-DOF pad resists the mantle's roll until the
 // hand's pull, which a harder squeeze shortens, no longer overcomes it.
-#include "god_finger/support/input_error.h"
 #include "god_finger/scenarios/cylinder_turn_task.h"
 #include "god_finger/scenarios/pad_fidelity.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -19,19 +19,21 @@ namespace
 constexpr const PadLayout& kPoint = kPadLayouts[0];
 constexpr const PadLayout& kPad = kPadLayouts[2];
 
-CylinderTurnResult turn(const PadLayout& layout, double squeeze, const OperatorTraits& hand = perfectOperator())
+CylinderTurnResult turn(const PadLayout& layout, double squeeze, const OperatorTraits& hand = perfectOperator(),
+                        bool oriented = false)
 {
   CylinderTurnOptions options;
   options.model = layout.model;
   options.params.pad_solver = layout.pad_solver;
   options.squeeze = squeeze;
   options.hand = hand;
+  options.oriented = oriented;
   const CylinderTurnResult r = runCylinderTurn(options);
   std::printf(
-      "[ turn %-17s squeeze %.1f mm ] held %d turned %d, turn %.4f rad, tilt %.4f (max %.4f) rad, slip "
+      "[ turn %-17s squeeze %.1f mm%s ] held %d turned %d, turn %.4f rad, tilt %.4f (max %.4f) rad, slip "
       "%.5f m, grip %.3f N\n",
-      layout.name, squeeze * 1e3, r.held, r.turned, r.turn_rad, r.final_tilt_rad, r.max_tilt_rad, r.max_slip_m,
-      r.mean_grip_force_N);
+      layout.name, squeeze * 1e3, oriented ? " oriented" : "", r.held, r.turned, r.turn_rad, r.final_tilt_rad,
+      r.max_tilt_rad, r.max_slip_m, r.mean_grip_force_N);
   return r;
 }
 
@@ -108,6 +110,26 @@ TEST(CylinderTurn, TheHandsPullNotFrictionStopsTheTurn)
   EXPECT_LT(1.5 * params.contact.max_radius, kTurnCylinderFriction * kTurnCylinderRadius);
   EXPECT_LT(pull, 0.6 * kTurnCylinderFriction * hard.mean_grip_force_N);
   EXPECT_LT(hard.max_slip_m, 0.003);
+}
+
+TEST(CylinderTurn, OrientedFingersTurnItWithTheirPadsAtEverySqueeze)
+{
+  // The fingers turn with the hand and their pads with them (physics/solver/pad_state.h): the
+  // cylinder turns exactly with them, however hard they squeeze (3-DOF: 1.60, 1.44 and 0.62 rad
+  // at 5, 10 and 20 mm, above).
+  for (const double squeeze : {0.005, 0.01, 0.02})
+  {
+    const CylinderTurnResult r = turn(kPad, squeeze, perfectOperator(), true);
+    EXPECT_TRUE(r.turned) << squeeze;
+    EXPECT_NEAR(r.turn_rad, kTurnAngle, 0.005) << squeeze;
+    EXPECT_LT(r.max_tilt_rad, 0.005) << squeeze;
+  }
+  // A human-like hand (tremor, the wrist's too, misalignment, fluctuating squeeze, reflex) at
+  // 20 mm, where a 3-DOF pad turns it 37 degrees (bench/REPORT.md section 10).
+  const CylinderTurnResult human = turn(kPad, 0.02, drawOperator(1, Eigen::Vector3d::UnitY()), true);
+  EXPECT_TRUE(human.turned);
+  EXPECT_NEAR(human.turn_rad, kTurnAngle, 0.02);
+  EXPECT_LT(human.max_tilt_rad, 0.02);
 }
 
 TEST(CylinderTurn, ABadSqueezeIsRefused)

@@ -11,10 +11,10 @@
 //     coupling is (the torque from the state at the start of the step, then symplectic Euler):
 //       tau = k_r rotvec(q_I q_GO^-1) + b_r (w_I - w_GO)  (N m, world, on the proxy),
 //       the hand feels -tau. Stable in free space iff (k_r dt + 2 b_r) dt / I < 4.
-//     The proxy's orientation is not yet limited by its contacts: nothing a flat pad touches
-//     resists the finger's roll, so the torque is the spring's lag only. The torque is
-//     InterfaceState::user_torque; the servo loop sends it to a device on its profile's
-//     torque_axes, saturated at max_torque (haptics/device_profile.h; the Omni/Touch and the
+//     The proxy's orientation is not limited by its contacts: the pads it holds turn with it
+//     (src/physics/solver/pad_state.h), and what resists them (their rows' torque on the
+//     objects, turned back) is added to the hand's torque, InterfaceState::user_torque; the
+//     servo loop sends it to a device on its profile's torque_axes, saturated at max_torque (haptics/device_profile.h; the Omni/Touch and the
 //     Falcon render force only: none).
 //  2. The pad sits on the pulp: with phi the angle between the pulp normal (finger z) and the
 //     inward surface normal (-c_n), the contact radius is the Eq. 1 radius times

@@ -41,8 +41,9 @@ struct InterfaceState
   bool saturated = false;                                        // coupling force hit max_force
   // An oriented (6-DOF) finger (oriented_finger.h: the finger frame has z out of the pulp, x
   // towards the tip): false until the interface is given an orientation, and then the three
-  // below are the device's and the proxy's orientation and the rotational coupling's torque on
-  // the hand (N m, world). A 3-DOF finger keeps identities and zero.
+  // below are the device's and the proxy's orientation and the torque on the hand (N m, world):
+  // the rotational coupling's, plus what its pads' rows gave the objects it holds, turned back
+  // on it (physics/solver/pad_state.h). A 3-DOF finger keeps identities and zero.
   bool oriented = false;
   Eigen::Quaterniond interface_orientation = Eigen::Quaterniond::Identity();
   Eigen::Quaterniond proxy_orientation = Eigen::Quaterniond::Identity();

@@ -13,22 +13,23 @@
 // from above) in 2, hold until 5.5. With the fingers stuck on the mantle the cylinder turns 90
 // degrees with them (a point contact, a ball that does not turn, rolls on the mantle: the
 // cylinder turns kTurnAngle (r + proxy radius) / r); a slip turns it less, and a point contact lets
-// it swing about the pinch line. The fingers are 3-DOF: they keep their orientation, so the
-// mantle rolls under each pad, and a pad that resists a tilt (god_finger's tilt rows, up to N a,
+// it swing about the pinch line. The fingers are 3-DOF unless `oriented`: they keep their
+// orientation, so the mantle rolls under each pad, and a pad that resists a tilt (god_finger's tilt rows, up to N a,
 // and its centre of pressure shifted against the pull: N a_eff) resists the turn. What turns it
 // is the hand's pull, not friction: the target circles at R - s from the axis (R = r + proxy
 // radius), so a pad stuck on the mantle, lagging its target by `lag`, is pulled along it with
 // k (R - s) sin(lag) <= k (R - s); the turn stops where k (R - s) sin(lag) r = N a_eff. A harder
 // squeeze raises N and shortens R - s: the harder, the less it turns (god_finger at 20 mm:
-// a_eff 12 mm, far under mu r = 24 mm; cylinder_turn_test).
+// a_eff 12 mm, far under mu r = 24 mm; cylinder_turn_test). Oriented fingers turn with the hand:
+// their pads turn with them (pad_state.h), and nothing resists the turn but the cylinder's inertia.
 // Deterministic: the same options give the same result, bit for bit. Units SI, frames world
 // (z up). Not real-time (builds a world).
 #pragma once
 
 #include "god_finger/physics/contact_model.h"
+#include "god_finger/physics/world_params.h"
 #include "god_finger/scenarios/human_operator.h"
 #include "god_finger/scene/scene_description.h"
-#include "god_finger/physics/world_params.h"
 
 namespace god_finger
 {
@@ -49,6 +50,10 @@ struct CylinderTurnOptions
   double squeeze = 0.01;  // m, nominal
   OperatorTraits hand = perfectOperator();
   WorldParams params;  // the world's (its pad solver too); the model above is set on it
+  // Oriented (6-DOF) fingers (physics/oriented_finger.h): each finger's pulp faces the axis, its
+  // tip points down, and the hand turns it about z with its target (a hand turning a knob).
+  // False: 3-DOF fingers that keep their orientation.
+  bool oriented = false;
 };
 
 struct CylinderTurnResult

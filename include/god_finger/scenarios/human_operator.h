@@ -1,5 +1,7 @@
 // A human-like operator for scripted hands: what a person's pinch adds to a perfect script.
-// - physiological tremor: a sinusoid per axis and finger, 8-12 Hz, 0.1-1 mm amplitude;
+// - physiological tremor: a sinusoid per axis and finger, 8-12 Hz, 0.1-1 mm amplitude; an
+//   oriented finger's wrist shakes with it, 2-10 mrad per axis (at a finger's 5-10 cm from the
+//   wrist, the same 0.1-1 mm);
 // - misalignment: the second finger off the first's line by up to 3 mm;
 // - grip force fluctuating about its nominal value by +-25 % at about 1 Hz;
 // - a grip reflex with a 100-150 ms reaction delay: when the held object slips against the
@@ -24,17 +26,21 @@ struct OperatorTraits
   double fluctuation_frequency = 1.0;                      // Hz
   double fluctuation_phase = 0.0;                          // rad
   double reaction_delay = 0.0;                             // s; 0: no grip reflex
+  double wrist_tremor = 0.0;                               // rad, per axis (oriented fingers)
 };
 
 // A perfect hand: no tremor, no misalignment, a steady squeeze, no reflex.
 OperatorTraits perfectOperator();
 // Tremor 0.1-1 mm at 8-12 Hz, misalignment up to `max_misalignment` (m) in a random direction
 // across the pinch (the plane normal to `pinch_axis`), fluctuation +-25 % at 0.8-1.2 Hz, delay
-// 100-150 ms.
+// 100-150 ms, wrist tremor 2-10 mrad (drawn last: the earlier draws are the same as without it).
 OperatorTraits drawOperator(std::uint64_t seed, const Eigen::Vector3d& pinch_axis, double max_misalignment = 0.003);
 
 // The tremor's displacement of finger `finger` at time t (s).
 Eigen::Vector3d tremorAt(const OperatorTraits& traits, double t, int finger);
+// The wrist tremor's turn of finger `finger` at time t (s): a rotation vector (rad, world), at
+// the tremor's frequency, a quarter period after the displacement's phase.
+Eigen::Vector3d wristTremorAt(const OperatorTraits& traits, double t, int finger);
 // The squeeze's factor on its nominal value at time t, without the reflex: 1 + a sin(2 pi f t + phi).
 double fluctuationAt(const OperatorTraits& traits, double t);
 

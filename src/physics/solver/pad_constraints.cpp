@@ -8,10 +8,15 @@ namespace god_finger::internal
 {
 namespace
 {
+Eigen::Quaterniond padOrientation(const btTransform& frame)
+{
+  const btQuaternion q = frame.getRotation();
+  return Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z());
+}
+
 Eigen::Quaterniond orientationOf(const btCollisionObject& object)
 {
-  const btQuaternion q = object.getWorldTransform().getRotation();
-  return Eigen::Quaterniond(q.w(), q.x(), q.y(), q.z());
+  return padOrientation(object.getWorldTransform());
 }
 }  // namespace
 
@@ -25,6 +30,7 @@ void PadConstraints::add(const AreaSolverInput& c, Proxy* proxy, long step)
   PadState& state = proxy->pads[c.body_index];
   const bool continued = state.linear.step == step - 1;
   const PadGeometry pad = padGeometry(c.point_world, c.normal_world, *c.area);
+  const btTransform pad_frame = padFrame(*proxy, *proxy_object, c.normal_world);
   // The solver point at the centre of pressure, at its tilt-corrected distance, anchored as a
   // sub-god-object is.
   const double distance = tiltCorrectedDistance(contact.getDistance(), c.normal_world, c.object_to_pad,
@@ -33,7 +39,7 @@ void PadConstraints::add(const AreaSolverInput& c, Proxy* proxy, long step)
   btVector3 on_proxy = on_object + toBullet(c.normal_world) * distance;
   if (continued)
   {
-    anchorIfSticking(state.linear, *proxy_object, *object, c.area->radius, &on_object, &on_proxy);
+    anchorIfSticking(state.linear, pad_frame, *object, c.area->radius, &on_object, &on_proxy);
   }
   contact.m_positionWorldOnA = c.proxy_is_a ? on_proxy : on_object;
   contact.m_positionWorldOnB = c.proxy_is_a ? on_object : on_proxy;
@@ -60,24 +66,48 @@ void PadConstraints::add(const AreaSolverInput& c, Proxy* proxy, long step)
   }
   // The orientation anchor, and the object's turn since (as body B's turn relative to A).
   const Eigen::Quaterniond now = orientationOf(*object);
-  if (!continued || state.twist_slipped)
+  const FingerOrientation& finger = proxy->orientation;
+  // A 3-DOF pad lets its anchor go when a row slipped; an oriented one drags it (below).
+  if (!continued || (state.twist_slipped && !finger.oriented))
   {
     state.object_at_twist_anchor = now;
+    state.finger_at_twist_anchor = finger.proxy;
     state.torque_impulse.setZero();
   }
-  const Eigen::AngleAxisd turn(now * state.object_at_twist_anchor.conjugate());
+  const double sign = c.proxy_is_a ? 1.0 : -1.0;  // B relative to A
+  state.object_side = sign;
   StepPad rows;
   rows.point = &contact;
   rows.body0 = a;
   rows.body1 = b;
   rows.state = &state;
-  rows.turn_since_anchor = (c.proxy_is_a ? 1.0 : -1.0) * turn.angle() * turn.axis();
+  if (finger.oriented)
+  {
+    // Where the finger's turn since the anchor carried the object, and the object's turn from
+    // there; beyond kPadStickAngle the anchor is dragged along (pad_state.h).
+    const Eigen::Quaterniond carried =
+        finger.proxy * state.finger_at_twist_anchor.conjugate() * state.object_at_twist_anchor;
+    Eigen::AngleAxisd turn(now * carried.conjugate());
+    if (turn.angle() > kPadStickAngle)
+    {
+      turn.angle() = kPadStickAngle;
+      state.object_at_twist_anchor =
+          state.finger_at_twist_anchor * finger.proxy.conjugate() * Eigen::Quaterniond(turn).conjugate() * now;
+    }
+    rows.turn_since_anchor = sign * turn.angle() * turn.axis();
+    rows.follow_velocity = sign * finger.angular_velocity;
+  }
+  else
+  {
+    const Eigen::AngleAxisd turn(now * state.object_at_twist_anchor.conjugate());
+    rows.turn_since_anchor = sign * turn.angle() * turn.axis();
+  }
   rows.warm_torque_impulse = state.torque_impulse;
   state.twist_slipped = false;
   state.torque_impulse.setZero();
   pads_.push_back(rows);
   // The anchor as material points, as for a sub-god-object.
-  state.linear.anchor_on_proxy = toEigen(proxy_object->getWorldTransform().invXform(on_proxy));
+  state.linear.anchor_on_proxy = toEigen(pad_frame.invXform(on_proxy));
   state.linear.anchor_on_object = toEigen(object->getWorldTransform().invXform(on_object));
 }
 

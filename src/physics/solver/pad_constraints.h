@@ -25,8 +25,8 @@
 #pragma once
 
 #include "area_solver_input.h"
-#include "solver/pad_state.h"
 #include "proxy.h"
+#include "solver/pad_state.h"
 
 #include <btBulletDynamicsCommon.h>
 
@@ -42,8 +42,12 @@ struct StepPad
   const btCollisionObject* body0 = nullptr;  // the point's manifold's bodies
   const btCollisionObject* body1 = nullptr;
   PadState* state = nullptr;
-  // Body B's turn relative to body A since the orientation anchor (rad, world rotation vector).
+  // Body B's turn relative to body A since the orientation anchor (rad, world rotation vector);
+  // an oriented finger's: relative to where the finger's turn carried it (pad_state.h).
   Eigen::Vector3d turn_since_anchor = Eigen::Vector3d::Zero();
+  // The rows' target speed of B relative to A (rad/s, world): an oriented finger's angular
+  // velocity (its pad turns with it), zero for a 3-DOF finger.
+  Eigen::Vector3d follow_velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d warm_torque_impulse = Eigen::Vector3d::Zero();  // N m s on B, world
 };
 

@@ -26,6 +26,10 @@ void preparePadTorsionalRow(const StepPad& pad, const btSolverConstraint& contac
   const btVector3& axis = row->m_relpos2CrossNormal;
   const double turned = toBullet(pad.turn_since_anchor).dot(axis);
   row->m_rhs -= turned * info.m_frictionERP / info.m_timeStep * row->m_jacDiagABInv;
+  if (!pad.follow_velocity.isZero(0.0))
+  {
+    row->m_rhs += toBullet(pad.follow_velocity).dot(axis) * row->m_jacDiagABInv;
+  }
   // Warm start inside this step's bound (from the normal row's warm impulse, as the
   // iterations will bound it).
   if (info.m_solverMode & SOLVER_USE_WARMSTARTING)

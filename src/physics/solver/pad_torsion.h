@@ -3,7 +3,8 @@
 // this step's external torques (torsional_rows.h). Internal to physics.
 //
 // Before the iterations, each row is corrected towards the pad's orientation anchor at Bullet's
-// friction ERP and warm-started from the pad's last torque impulse; after them (and the support
+// friction ERP (an oriented finger's rows also given the finger's own turning speed as their target)
+// and warm-started from the pad's last torque impulse; after them (and the support
 // passes) it is bounded by its contact's final normal impulse, its impulse goes back to the
 // pad's state, and a row at its bound marks the pad's twist as slipped (its anchor is let go in
 // the next step).

@@ -33,6 +33,7 @@ void SubGodObjectInjector::inject(const AreaSolverInput& c, const Proxy& proxy, 
     const btVector3 fresh_on_proxy = fresh_on_object + toBullet(c.normal_world) * distance;
     const btCollisionObject* proxy_object = c.proxy_is_a ? a : b;
     const btCollisionObject* object = c.proxy_is_a ? b : a;
+    const btTransform pad_frame = padFrame(proxy, *proxy_object, c.normal_world);
     // The friction anchor: the pad's and the object's material points where this
     // sub-god-object began to stick, kept while it sticks; it starts again where the
     // sub-god-object is now when it is new, slipped in the last step (friction at its cone) or
@@ -43,7 +44,7 @@ void SubGodObjectInjector::inject(const AreaSolverInput& c, const Proxy& proxy, 
     btVector3 on_proxy = fresh_on_proxy;
     if (warm.step == step - 1)
     {
-      anchorIfSticking(warm, *proxy_object, *object, c.area->radius, &on_object, &on_proxy);
+      anchorIfSticking(warm, pad_frame, *object, c.area->radius, &on_object, &on_proxy);
     }
     const btVector3 on_a = c.proxy_is_a ? on_proxy : on_object;
     const btVector3 on_b = c.proxy_is_a ? on_object : on_proxy;
@@ -74,8 +75,7 @@ void SubGodObjectInjector::inject(const AreaSolverInput& c, const Proxy& proxy, 
     const int slot = target->addManifoldPoint(point);
     // The anchor as material points, in each body's frame at this step (before the solver moves
     // them): what the next step places back in the world.
-    points_.push_back({target, slot, c.proxy_index, c.body_index, sgo_index,
-                       toEigen(proxy_object->getWorldTransform().invXform(on_proxy)),
+    points_.push_back({target, slot, c.proxy_index, c.body_index, sgo_index, toEigen(pad_frame.invXform(on_proxy)),
                        toEigen(object->getWorldTransform().invXform(on_object))});
   }
 }

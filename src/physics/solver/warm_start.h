@@ -21,14 +21,15 @@ struct WarmStart
   double lateral1 = 0.0;
   double lateral2 = 0.0;
   double friction = 0.0;                                       // the point's combined friction
-  Eigen::Vector3d anchor_on_proxy = Eigen::Vector3d::Zero();   // m, in the proxy's frame
+  Eigen::Vector3d anchor_on_proxy = Eigen::Vector3d::Zero();   // m, in the pad's frame (padFrame, proxy.h)
   Eigen::Vector3d anchor_on_object = Eigen::Vector3d::Zero();  // m, in the object's (centre of mass) frame
 };
 
 // Replaces the fresh solver points (m, world) by the anchored material points of `warm` (the
 // step before) unless that point slipped (a friction row at its bound: Bullet bounds each
 // direction by mu times the normal impulse) or its anchor lies away from the fresh point (the
-// area, of radius `area_radius` m, moved on).
-void anchorIfSticking(const WarmStart& warm, const btCollisionObject& proxy_object, const btCollisionObject& object,
+// area, of radius `area_radius` m, moved on). `pad_frame`: the proxy's frame that anchor_on_proxy
+// is in (padFrame, proxy.h: an oriented finger's turns with it).
+void anchorIfSticking(const WarmStart& warm, const btTransform& pad_frame, const btCollisionObject& object,
                       double area_radius, btVector3* on_object, btVector3* on_proxy);
 }  // namespace god_finger::internal
