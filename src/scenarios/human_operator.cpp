@@ -46,26 +46,30 @@ OperatorTraits drawOperator(std::uint64_t seed, const Eigen::Vector3d& pinch_axi
   return traits;
 }
 
-Eigen::Vector3d tremorAt(const OperatorTraits& traits, double t, int finger)
+namespace
 {
-  Eigen::Vector3d offset;
+// The tremor's phase per axis of finger `finger` at time t (s): rad.
+Eigen::Array3d tremorPhases(const OperatorTraits& traits, double t, int finger)
+{
+  Eigen::Array3d phases;
   for (int axis = 0; axis < 3; ++axis)
   {
-    offset[axis] =
-        traits.tremor_amplitude * std::sin(kTwoPi * traits.tremor_frequency * t + traits.tremor_phase[axis] + finger);
+    phases[axis] = kTwoPi * traits.tremor_frequency * t + traits.tremor_phase[axis] + finger;
   }
-  return offset;
+  return phases;
+}
+}  // namespace
+
+Eigen::Vector3d tremorAt(const OperatorTraits& traits, double t, int finger)
+{
+  const Eigen::Array3d phases = tremorPhases(traits, t, finger);
+  return traits.tremor_amplitude * Eigen::Vector3d(std::sin(phases[0]), std::sin(phases[1]), std::sin(phases[2]));
 }
 
 Eigen::Vector3d wristTremorAt(const OperatorTraits& traits, double t, int finger)
 {
-  Eigen::Vector3d turn;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    turn[axis] =
-        traits.wrist_tremor * std::cos(kTwoPi * traits.tremor_frequency * t + traits.tremor_phase[axis] + finger);
-  }
-  return turn;
+  const Eigen::Array3d phases = tremorPhases(traits, t, finger);
+  return traits.wrist_tremor * Eigen::Vector3d(std::cos(phases[0]), std::cos(phases[1]), std::cos(phases[2]));
 }
 
 double fluctuationAt(const OperatorTraits& traits, double t)
