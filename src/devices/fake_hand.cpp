@@ -22,7 +22,10 @@ class FakeHand : public HandSource
 {
  public:
   explicit FakeHand(const FakeHandParams& params)
-      : names_(fakeHandFingerNames(params.fingers)), paths_(fakeHandPaths(params)), cycle_(params.cycle)
+      : names_(fakeHandFingerNames(params.fingers)),
+        paths_(fakeHandPaths(params)),
+        orientations_(fakeHandOrientations(params)),
+        cycle_(params.cycle)
   {
   }
   std::string name() const override
@@ -56,12 +59,18 @@ class FakeHand : public HandSource
       reading.velocity = (reading.position - paths_[i].at(t - dt)) / dt;
       reading.buttons = 0;
       reading.tracked = true;
+      if (!orientations_.empty())
+      {
+        reading.has_orientation = true;
+        reading.orientation = orientations_[i];
+      }
     }
   }
 
  private:
   std::vector<std::string> names_;
   std::vector<WaypointPath> paths_;
+  std::vector<Eigen::Quaterniond> orientations_;
   double start_ = NAN;
   double cycle_;
 };
@@ -86,6 +95,22 @@ const ParameterTable<FakeHandParams>& fakeHandParameterTable()
       realRow<P>("cycle", "s", closed(0.0, 3600.0),
                  "0 grasps once; else grasps again every cycle s (>= 5.8, the grasp's length)",
                  [](P& p) -> double& { return p.cycle; }),
+      choiceRow<P>(
+          "orientation", "pulp_in, none",
+          "pulp_in: oriented (6-DOF) fingertips, pulp towards the axis, tip down; none: positions only (3-DOF)",
+          [](const P& p) -> std::string { return p.oriented ? "pulp_in" : "none"; },
+          [](P* p, const std::string& text)
+          {
+            if (text != "pulp_in" && text != "none")
+            {
+              return false;
+            }
+            p->oriented = text == "pulp_in";
+            return true;
+          }),
+      realRow<P>("finger_pitch", "rad", closed(0.0, 1.2),
+                 "pulp_in: each finger's body leans out from the wall by this (0: along it)",
+                 [](P& p) -> double& { return p.finger_pitch; }),
   };
   return table;
 }
@@ -155,6 +180,31 @@ std::vector<WaypointPath> fakeHandPaths(const FakeHandParams& params)
     paths.push_back(path(angle, params.grasp_radius));
   }
   return paths;
+}
+
+std::vector<Eigen::Quaterniond> fakeHandOrientations(const FakeHandParams& params)
+{
+  std::vector<Eigen::Quaterniond> orientations;
+  if (!params.oriented)
+  {
+    return orientations;
+  }
+  const std::vector<WaypointPath> paths = fakeHandPaths(params);
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  const double lean = params.finger_pitch;
+  for (const WaypointPath& path : paths)
+  {
+    // Out from the axis towards where the finger opens (its script's start), horizontal.
+    Eigen::Vector3d out = path.at(0.0) - params.grasp_center;
+    out.z() = 0.0;
+    out.normalize();
+    Eigen::Matrix3d frame;
+    frame.col(0) = -std::cos(lean) * up - std::sin(lean) * out;  // the tip: down, the body out
+    frame.col(2) = -std::cos(lean) * out + std::sin(lean) * up;  // the pulp: towards the axis
+    frame.col(1) = frame.col(2).cross(frame.col(0));
+    orientations.emplace_back(frame);
+  }
+  return orientations;
 }
 
 std::shared_ptr<HandSource> makeFakeHand(const FakeHandParams& params)

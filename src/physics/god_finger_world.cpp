@@ -639,6 +639,19 @@ struct GodFingerWorld::Impl
     }
   }
 
+  // The oriented proxy's body cannot turn through what its tip touched at the last step
+  // (oriented_finger.h, limitFingerByContacts).
+  static void limitByLastContacts(Proxy* proxy)
+  {
+    std::array<Eigen::Vector3d, InterfaceState::kMaxContacts> normals;
+    const int count = proxy->state.contact_count;
+    for (int c = 0; c < count; ++c)
+    {
+      normals[c] = proxy->state.contacts[c].normal;
+    }
+    limitFingerByContacts(normals.data(), count, &proxy->orientation);
+  }
+
   void step()
   {
     const double dt = params.time_step;
@@ -670,6 +683,7 @@ struct GodFingerWorld::Impl
       {
         proxy.state.interface_orientation = proxy.orientation.target;
         proxy.state.user_torque = -stepFingerOrientation(params.finger, dt, &proxy.orientation);
+        limitByLastContacts(&proxy);
         proxy.state.proxy_orientation = proxy.orientation.proxy;
       }
     }

@@ -51,6 +51,54 @@ Eigen::Vector3d stepFingerOrientation(const OrientedFingerParams& params, double
   return torque;
 }
 
+bool limitFingerByContacts(const Eigen::Vector3d* normals, int count, FingerOrientation* state)
+{
+  constexpr int kPasses = 3;
+  bool turned = false;
+  for (int pass = 0; pass < kPasses; ++pass)
+  {
+    bool inside = false;
+    for (int i = 0; i < count; ++i)
+    {
+      const Eigen::Vector3d& normal = normals[i];
+      const Eigen::Vector3d axis = state->proxy * Eigen::Vector3d::UnitX();
+      const double into = axis.dot(normal);  // sin of the angle the body went into the surface
+      if (!(into > kFingerBodyTolerance))
+      {
+        continue;
+      }
+      inside = true;
+      turned = true;
+      Eigen::Vector3d on_plane = axis - into * normal;
+      if (on_plane.norm() < 1e-9)
+      {
+        // The body straight into the surface (a finger arriving backwards): lay it down
+        // along its own pulp's side of the plane.
+        on_plane = state->proxy * Eigen::Vector3d::UnitZ();
+        on_plane -= on_plane.dot(normal) * normal;
+        if (on_plane.norm() < 1e-9)
+        {
+          on_plane = normal.unitOrthogonal();
+        }
+      }
+      state->proxy = (Eigen::Quaterniond::FromTwoVectors(axis, on_plane.normalized()) * state->proxy).normalized();
+      // d(x . n)/dt = w . (x x n): keep none of w that turns the body further in.
+      const Eigen::Vector3d lever = (state->proxy * Eigen::Vector3d::UnitX()).cross(normal);
+      const double lever_norm2 = lever.squaredNorm();
+      const double inward = state->angular_velocity.dot(lever);
+      if (lever_norm2 > 1e-18 && inward > 0.0)
+      {
+        state->angular_velocity -= (inward / lever_norm2) * lever;
+      }
+    }
+    if (!inside)
+    {
+      break;
+    }
+  }
+  return turned;
+}
+
 PulpContact pulpContact(const Eigen::Quaterniond& finger, const Eigen::Vector3d& surface_normal,
                         const OrientedFingerParams& params)
 {

@@ -1,10 +1,10 @@
 // Hands in the device registry: fake_hand and pose_source are input only (their rows say they
 // render no force), carry one device per finger, read their parameters with clear errors;
 // a pose source without a pose subscriber (no ROS) is refused.
-#include "god_finger/support/input_error.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/devices/fake_hand.h"
 #include "god_finger/devices/pose_source.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -64,6 +64,52 @@ TEST(HandDevices, AreInputOnlyAndCarryOneDevicePerFinger)
   const DeviceReading index = fingers[1].device->update(1.0, Eigen::Vector3d::Zero());
   EXPECT_NEAR(index.position.head<2>().norm(), 0.033, 1e-12);
   EXPECT_LT(index.position.y(), 0.0);
+}
+
+// The fake hand's fingertips are oriented (6-DOF) fingers as a hand holds a mug: the pulp (z)
+// towards the axis tilted up by finger_pitch, the tip (x) down, the body (-x) leaning out; the
+// same through the script. `orientation: none` gives positions only.
+TEST(HandDevices, TheFakeHandsFingersHoldThePulpTowardsTheAxis)
+{
+  for (const double pitch : {0.0, 0.5, 1.2})
+  {
+    SCOPED_TRACE(pitch);
+    MapParameterSource params("/hand/");
+    params.set("finger_pitch", ParameterValue::of(pitch));
+    DeviceContext context(params, kMaxForce);
+    auto hand = makeDevice(findDeviceBackend("fake_hand", "backend"), context);
+    std::vector<DeviceFinger> fingers = hand->fingers();
+    ASSERT_EQ(fingers.size(), 3u);
+    hand->setScriptStart(0.0);
+    for (DeviceFinger& finger : fingers)
+    {
+      finger.device->start();
+      for (const double t : {0.0, 1.0, 3.0})
+      {
+        const DeviceReading reading = finger.device->update(t, Eigen::Vector3d::Zero());
+        ASSERT_TRUE(reading.has_orientation);
+        Eigen::Vector3d out = reading.position - Eigen::Vector3d(0.0, 0.0, reading.position.z());
+        out.normalize();
+        const Eigen::Vector3d tip = reading.orientation * Eigen::Vector3d::UnitX();
+        const Eigen::Vector3d pulp = reading.orientation * Eigen::Vector3d::UnitZ();
+        EXPECT_NEAR(pulp.dot(-out), std::cos(pitch), 1e-12);
+        EXPECT_NEAR(pulp.z(), std::sin(pitch), 1e-12);
+        EXPECT_NEAR(tip.z(), -std::cos(pitch), 1e-12);
+        EXPECT_NEAR(tip.dot(out), -std::sin(pitch), 1e-12);  // the body behind the tip: out
+        EXPECT_NEAR(reading.orientation.norm(), 1.0, 1e-12);
+      }
+    }
+  }
+  MapParameterSource params("/hand/");
+  params.set("orientation", ParameterValue::of(std::string("none")));
+  DeviceContext context(params, kMaxForce);
+  auto hand = makeDevice(findDeviceBackend("fake_hand", "backend"), context);
+  std::vector<DeviceFinger> fingers = hand->fingers();
+  fingers[1].device->start();
+  EXPECT_FALSE(fingers[1].device->update(0.5, Eigen::Vector3d::Zero()).has_orientation);
+  MapParameterSource bad("/hand/");
+  bad.set("orientation", ParameterValue::of(std::string("pulp_out")));
+  EXPECT_NE(errorOf("fake_hand", bad).find("/hand/orientation"), std::string::npos) << errorOf("fake_hand", bad);
 }
 
 TEST(HandDevices, CheckTheirParameters)

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -115,6 +116,125 @@ TEST(FingerOrientation, TheRotationalSpringPullsTheProxyToTheDeviceAndTheHandFee
   }
   EXPECT_LT(state.proxy.angularDistance(state.target), 1e-4);
   EXPECT_LT(state.angular_velocity.norm(), 1e-2);
+}
+
+TEST(FingerOrientation, TheBodyIsLaidBackOnTheSurfaceAndStopsTurningIntoIt)
+{
+  FingerOrientation state;
+  state.oriented = true;
+  // The tip lifted 0.3 rad off a floor (normal +z): the body behind it 0.3 rad into the floor.
+  state.proxy = Eigen::Quaterniond(Eigen::AngleAxisd(-0.3, Eigen::Vector3d::UnitY())) * pulpDown();
+  state.angular_velocity = Eigen::Vector3d(0.5, -2.0, 0.25);  // turning it further in about -y
+  const Eigen::Vector3d floor = Eigen::Vector3d::UnitZ();
+  ASSERT_NEAR((state.proxy * Eigen::Vector3d::UnitX()).dot(floor), std::sin(0.3), 1e-12);
+  EXPECT_TRUE(limitFingerByContacts(&floor, 1, &state));
+  // Turned back by the least rotation (about y) onto the plane: the pulp faces down again.
+  EXPECT_LT(state.proxy.angularDistance(pulpDown()), 1e-9);
+  // The part of w along x x n (here -y) that turns the body in is gone; the rest is kept.
+  EXPECT_NEAR(state.angular_velocity.x(), 0.5, 1e-12);
+  EXPECT_NEAR(state.angular_velocity.y(), 0.0, 1e-12);
+  EXPECT_NEAR(state.angular_velocity.z(), 0.25, 1e-12);
+  // Already on or above the plane: untouched, bit for bit.
+  const FingerOrientation before = state;
+  EXPECT_FALSE(limitFingerByContacts(&floor, 1, &state));
+  EXPECT_EQ(state.proxy.coeffs(), before.proxy.coeffs());
+  // A corner (a floor and a wall of normal -x ahead of the tip... its normal +x behind the
+  // tip's direction is what the body meets): both planes hold after the passes.
+  state.proxy = Eigen::Quaterniond(Eigen::AngleAxisd(-0.4, Eigen::Vector3d::UnitY()) *
+                                   Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())) *
+                pulpDown();
+  const std::array<Eigen::Vector3d, 2> corner = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d(0.6, 0.8, 0.0)};
+  EXPECT_TRUE(limitFingerByContacts(corner.data(), 2, &state));
+  const Eigen::Vector3d axis = state.proxy * Eigen::Vector3d::UnitX();
+  EXPECT_LE(axis.dot(corner[0]), kFingerBodyTolerance);
+  EXPECT_LE(axis.dot(corner[1]), 1e-6);
+  EXPECT_NEAR(state.proxy.norm(), 1.0, 1e-12);
+}
+
+// Ortega et al.'s 6-DOF god-object on a fingertip, pressing pulp-down on a plane:
+//  - the device lifts the finger's tip 81 degrees (its body into the plane): the proxy stays
+//    flat and the hand feels the spring stretched by all of it;
+//  - the device lifts it 162 degrees (the body, then the nail, through the plane): the proxy
+//    never turns its body in; it slides along the plane's bound (a turn about the normal and a
+//    roll) to the nearest orientation that keeps the body out, 18 degrees from the device's,
+//    on its nail;
+//  - the device curls the tip down 162 degrees (the way a real finger reaches its nail): the
+//    proxy follows, the body stays out, and the nail touches: a point contact.
+TEST(OrientedFinger, TheFingersBodyAndNailCannotTurnThroughTheSurface)
+{
+  const WorldParams params;
+  const double k_r = params.finger.orientation_stiffness;
+  struct Case
+  {
+    const char* name;
+    double angle;  // rad about world y: < 0 lifts the tip (x towards +z), > 0 curls it down
+  };
+  for (const Case& turn : {Case{"tip lifted 81 deg", -0.45 * kPi}, Case{"tip lifted 162 deg", -0.9 * kPi},
+                           Case{"tip curled down 162 deg", 0.9 * kPi}})
+  {
+    SCOPED_TRACE(turn.name);
+    GodFingerWorld world(planeScene(), params);
+    const Eigen::Vector3d target = pressTarget(params);
+    const int finger = world.addInterface(Eigen::Vector3d(0, 0, 0.01));
+    world.setInterfaceTarget(finger, target, pulpDown());
+    run(&world, 0.5);
+    const InterfaceState& state = world.interfaceState(finger);
+    ASSERT_EQ(state.contact_count, 1);
+    const double full_radius = state.contacts[0].radius;
+    double deepest = -1.0;  // sin of the angle the body went into the plane, worst step
+    auto step = [&]()
+    {
+      world.step();
+      deepest = std::max(deepest, (state.proxy_orientation * Eigen::Vector3d::UnitX()).z());
+    };
+    const Eigen::Quaterniond device = Eigen::AngleAxisd(turn.angle, Eigen::Vector3d::UnitY()) * pulpDown();
+    const int steps = 1000;
+    for (int i = 1; i <= steps; ++i)
+    {
+      world.setInterfaceTarget(finger, target,
+                               Eigen::AngleAxisd(turn.angle * i / steps, Eigen::Vector3d::UnitY()) * pulpDown());
+      step();
+    }
+    for (int i = 0; i < 1000; ++i)
+    {
+      step();
+    }
+    ASSERT_EQ(state.contact_count, 1);
+    if (turn.angle < 0.0)
+    {
+      EXPECT_LE(deepest, kFingerBodyTolerance);
+    }
+    else
+    {
+      EXPECT_LT(deepest, 1e-12);
+    }
+    const double lifted = -turn.angle;
+    if (turn.angle > -0.5 * kPi && turn.angle < 0.0)
+    {
+      // Held flat: the pulp still faces the plane with the full area; the hand feels k_r times
+      // the whole lift, about +y, turning the tip back down.
+      EXPECT_LT(state.proxy_orientation.angularDistance(pulpDown()), 1e-3);
+      EXPECT_NEAR(state.contacts[0].radius, full_radius, 1e-3 * full_radius);
+      EXPECT_NEAR(state.user_torque.y(), k_r * lifted, 0.01 * k_r * lifted);
+      EXPECT_NEAR(state.user_torque.x(), 0.0, 1e-3 * k_r);
+      EXPECT_NEAR(state.user_torque.z(), 0.0, 1e-3 * k_r);
+    }
+    else if (turn.angle < 0.0)
+    {
+      // The nearest orientation with the body out: the device's, its tip laid back down by its
+      // elevation pi - lift (body flat, reversed, on the nail).
+      const double elevation = kPi - lifted;
+      EXPECT_NEAR(state.proxy_orientation.angularDistance(device), elevation, 1e-3);
+      EXPECT_NEAR(state.user_torque.norm(), k_r * elevation, 0.01 * k_r * elevation);
+      EXPECT_EQ(state.contacts[0].radius, 0.0);
+    }
+    else
+    {
+      EXPECT_LT(state.proxy_orientation.angularDistance(device), 1e-3);
+      EXPECT_EQ(state.contacts[0].radius, 0.0);
+      EXPECT_LT(state.user_torque.norm(), 1e-3 * k_r);
+    }
+  }
 }
 
 TEST(OrientedFinger, AFingerNeverGivenAnOrientationStaysThreeDof)

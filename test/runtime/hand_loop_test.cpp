@@ -230,14 +230,16 @@ TEST(HandLoop, StaleStampsLetEveryFingerGo)
 }
 
 // The mug's height (m, its origin) at 4 s: closed, lifted by 10 cm at 3.5 s, held.
-double mugHeightAfterLift(int fingers)
+double mugHeightAfterLift(int fingers, bool oriented = true)
 {
   FakeHandParams params;
   params.fingers = fingers;
+  params.oriented = oriented;
   auto source = makeFakeHand(params);
   source->setScriptStart(0.0);
   auto loop = makeLoop(kMug, fingersOf(makeHandDevice(source)));
   EXPECT_EQ(loop->interfaces().size(), static_cast<std::size_t>(fingers + 1));
+  bool checked_orientation = false;
   double mug_z = 0.0;
   WorldSnapshot snapshot;
   ServoSample sample;
@@ -246,6 +248,21 @@ double mugHeightAfterLift(int fingers)
     loop->tick(k * loop->period());
     while (loop->samples().tryPop(&sample))
     {
+    }
+    if (k == 1000 && !checked_orientation)
+    {
+      // Closed on the mug: every finger oriented (or none), its proxy at the hand's orientation.
+      checked_orientation = true;
+      const std::vector<Eigen::Quaterniond> held = fakeHandOrientations(params);
+      for (int i = 0; i <= fingers; ++i)
+      {
+        const InterfaceState& state = loop->world().interfaceState(i);
+        EXPECT_EQ(state.oriented, oriented);
+        if (oriented)
+        {
+          EXPECT_LT(state.proxy_orientation.angularDistance(held[i]), 1e-3);
+        }
+      }
     }
     while (loop->snapshots().tryPop(&snapshot))
     {
@@ -295,6 +312,7 @@ TEST(HandLoop, FakeHandGraspsAndLiftsTheMug)
   // The mug's origin starts 0.5 mm above the table: carried up ~10 cm by a thumb and 2 or 4 fingers.
   EXPECT_GT(mugHeightAfterLift(2), 0.08);
   EXPECT_GT(mugHeightAfterLift(4), 0.08);
+  EXPECT_GT(mugHeightAfterLift(2, false), 0.08);  // 3-DOF fingers (orientation: none)
 }
 }  // namespace
 }  // namespace god_finger

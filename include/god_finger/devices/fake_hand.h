@@ -10,14 +10,21 @@
 // mug is not shoved); 1.5 to 3.5 lift by `lift`; hold until 4.5; open back to open_radius by
 // 4.8; back down to the start by 5.8; stays there, or with `cycle` > 0 grasps again every
 // `cycle` seconds. Deterministic: a pure function of the script time.
+//
+// Orientations (`orientation` pulp_in, the default): every fingertip is an oriented (6-DOF)
+// finger (physics/oriented_finger.h) held the way a hand holds a mug: its pulp (z) towards the
+// axis, its tip (x) down, its body leaning out from the wall by `finger_pitch` (so the pulp
+// meets the wall tilted by that angle, and the body stays clear of it). `none`: positions only,
+// 3-DOF fingers.
 #pragma once
 
+#include "god_finger/devices/hand_device.h"
+#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/support/parameter_source.h"
 #include "god_finger/support/parameter_table.h"
-#include "god_finger/haptics/waypoint_path.h"
-#include "god_finger/devices/hand_device.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,6 +40,8 @@ struct FakeHandParams
   double object_radius = 0.04;  // m: the grasped object's radius (the mug's), to balance the thumb
   double lift = 0.1;            // m
   double cycle = 0.0;           // s: 0 grasps once; else again every cycle s (>= 5.8, the grasp's length)
+  bool oriented = true;         // `orientation`: pulp_in (true) or none
+  double finger_pitch = 0.5;    // rad: the finger's body's lean out from the wall (0: along it)
 };
 
 // The numeric parameters' one table (names, units, ranges, meanings; defaults: the struct's
@@ -46,6 +55,9 @@ FakeHandParams readFakeHandParams(const ParameterSource& source);
 // Each finger's path (thumb first), in script time; names thumb, index, middle, ring, little.
 std::vector<std::string> fakeHandFingerNames(int fingers);
 std::vector<WaypointPath> fakeHandPaths(const FakeHandParams& params);
+// Each finger's orientation (thumb first; the finger frame in the device frame, fixed through the
+// script); empty when `oriented` is false.
+std::vector<Eigen::Quaterniond> fakeHandOrientations(const FakeHandParams& params);
 
 std::shared_ptr<HandSource> makeFakeHand(const FakeHandParams& params);
 }  // namespace god_finger

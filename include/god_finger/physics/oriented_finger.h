@@ -11,11 +11,20 @@
 //     coupling is (the torque from the state at the start of the step, then symplectic Euler):
 //       tau = k_r rotvec(q_I q_GO^-1) + b_r (w_I - w_GO)  (N m, world, on the proxy),
 //       the hand feels -tau. Stable in free space iff (k_r dt + 2 b_r) dt / I < 4.
-//     The proxy's orientation is not limited by its contacts: the pads it holds turn with it
+//     The proxy's orientation is limited by its contacts (limitFingerByContacts): behind the
+//     tip runs the finger's body (the distal phalanx, along -x, as wide as the tip), which
+//     cannot pass through a surface the tip touches. So the proxy turns towards the device's
+//     orientation only as far as x . c_n <= 0 for each contact normal c_n (the surface's plane
+//     at the contact): neither the finger's body nor its nail turns through the surface. A
+//     finger reaches nail-down by curling its tip down, through pointing straight in, never by
+//     lifting its tip and sweeping its body through the object. Held at that bound, the
+//     spring above is stretched and the hand feels it (-tau), as a god-object's hand feels its
+//     stopped proxy.
+//     The pads the proxy holds turn with it
 //     (src/physics/solver/pad_state.h), and what resists them (their rows' torque on the
 //     objects, turned back) is added to the hand's torque, InterfaceState::user_torque; the
-//     servo loop sends it to a device on its profile's torque_axes, saturated at max_torque (haptics/device_profile.h; the Omni/Touch and the
-//     Falcon render force only: none).
+//     servo loop sends it to a device on its profile's torque_axes, saturated at max_torque (haptics/device_profile.h;
+//     the Omni/Touch and the Falcon render force only: none).
 //  2. The pad sits on the pulp: with phi the angle between the pulp normal (finger z) and the
 //     inward surface normal (-c_n), the contact radius is the Eq. 1 radius times
 //     cos(pi/2 phi / nail_angle) (1 when the pulp faces the surface, smaller on the side, 0 from
@@ -61,6 +70,14 @@ struct FingerOrientation
 // advances the proxy's orientation and angular velocity; the previous target becomes the
 // current one.
 Eigen::Vector3d stepFingerOrientation(const OrientedFingerParams& params, double dt, FingerOrientation* state);
+
+// The contact limit of item 1: for each of `count` contact normals (unit, world, out of the
+// objects the tip touches), turns the proxy by the least rotation that brings its finger axis x
+// back onto the surface's plane (x . n <= kFingerBodyTolerance) when it went past it, and stops
+// its angular velocity's part that would turn it further in. A few passes for several normals
+// (corners); returns whether it turned the proxy. Real-time safe.
+constexpr double kFingerBodyTolerance = 1e-9;  // sin of the angle (rad) the body may go past
+bool limitFingerByContacts(const Eigen::Vector3d* normals, int count, FingerOrientation* state);
 
 // How the finger meets a surface (item 2 above).
 struct PulpContact
