@@ -54,6 +54,7 @@ Eigen::Vector3d stepFingerOrientation(const OrientedFingerParams& params, double
 bool limitFingerByContacts(const Eigen::Vector3d* normals, int count, FingerOrientation* state)
 {
   constexpr int kPasses = 3;
+  const double bound = std::sin(kFingerBodyClearance);
   bool turned = false;
   for (int pass = 0; pass < kPasses; ++pass)
   {
@@ -63,13 +64,13 @@ bool limitFingerByContacts(const Eigen::Vector3d* normals, int count, FingerOrie
       const Eigen::Vector3d& normal = normals[i];
       const Eigen::Vector3d axis = state->proxy * Eigen::Vector3d::UnitX();
       const double into = axis.dot(normal);  // sin of the angle the body went into the surface
-      if (!(into > kFingerBodyTolerance))
+      if (!(into > bound))
       {
         continue;
       }
       inside = true;
       turned = true;
-      Eigen::Vector3d on_plane = axis - into * normal;
+      Eigen::Vector3d on_plane = axis - into * normal;  // then tilted back in by the clearance
       if (on_plane.norm() < 1e-9)
       {
         // The body straight into the surface (a finger arriving backwards): lay it down
@@ -81,7 +82,8 @@ bool limitFingerByContacts(const Eigen::Vector3d* normals, int count, FingerOrie
           on_plane = normal.unitOrthogonal();
         }
       }
-      state->proxy = (Eigen::Quaterniond::FromTwoVectors(axis, on_plane.normalized()) * state->proxy).normalized();
+      const Eigen::Vector3d allowed = std::sqrt(1.0 - bound * bound) * on_plane.normalized() + bound * normal;
+      state->proxy = (Eigen::Quaterniond::FromTwoVectors(axis, allowed) * state->proxy).normalized();
       // d(x . n)/dt = w . (x x n): keep none of w that turns the body further in.
       const Eigen::Vector3d lever = (state->proxy * Eigen::Vector3d::UnitX()).cross(normal);
       const double lever_norm2 = lever.squaredNorm();

@@ -128,8 +128,9 @@ TEST(FingerOrientation, TheBodyIsLaidBackOnTheSurfaceAndStopsTurningIntoIt)
   const Eigen::Vector3d floor = Eigen::Vector3d::UnitZ();
   ASSERT_NEAR((state.proxy * Eigen::Vector3d::UnitX()).dot(floor), std::sin(0.3), 1e-12);
   EXPECT_TRUE(limitFingerByContacts(&floor, 1, &state));
-  // Turned back by the least rotation (about y) onto the plane: the pulp faces down again.
-  EXPECT_LT(state.proxy.angularDistance(pulpDown()), 1e-9);
+  // Turned back by the least rotation (about y) to the body's clearance past the plane.
+  EXPECT_NEAR(state.proxy.angularDistance(pulpDown()), kFingerBodyClearance, 1e-9);
+  EXPECT_NEAR((state.proxy * Eigen::Vector3d::UnitX()).dot(floor), std::sin(kFingerBodyClearance), 1e-12);
   // The part of w along x x n (here -y) that turns the body in is gone; the rest is kept.
   EXPECT_NEAR(state.angular_velocity.x(), 0.5, 1e-12);
   EXPECT_NEAR(state.angular_velocity.y(), 0.0, 1e-12);
@@ -138,26 +139,27 @@ TEST(FingerOrientation, TheBodyIsLaidBackOnTheSurfaceAndStopsTurningIntoIt)
   const FingerOrientation before = state;
   EXPECT_FALSE(limitFingerByContacts(&floor, 1, &state));
   EXPECT_EQ(state.proxy.coeffs(), before.proxy.coeffs());
-  // A corner (a floor and a wall of normal -x ahead of the tip... its normal +x behind the
-  // tip's direction is what the body meets): both planes hold after the passes.
+  // A corner, the floor and a wall the body leans into (normal (0.6, 0.8, 0)): both hold after
+  // the passes (to 1e-9: the passes end once none is past its bound by more than round-off).
   state.proxy = Eigen::Quaterniond(Eigen::AngleAxisd(-0.4, Eigen::Vector3d::UnitY()) *
                                    Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ())) *
                 pulpDown();
   const std::array<Eigen::Vector3d, 2> corner = {Eigen::Vector3d::UnitZ(), Eigen::Vector3d(0.6, 0.8, 0.0)};
   EXPECT_TRUE(limitFingerByContacts(corner.data(), 2, &state));
   const Eigen::Vector3d axis = state.proxy * Eigen::Vector3d::UnitX();
-  EXPECT_LE(axis.dot(corner[0]), kFingerBodyTolerance);
-  EXPECT_LE(axis.dot(corner[1]), 1e-6);
+  EXPECT_LE(axis.dot(corner[0]), std::sin(kFingerBodyClearance) + 1e-9);
+  EXPECT_LE(axis.dot(corner[1]), std::sin(kFingerBodyClearance) + 1e-9);
   EXPECT_NEAR(state.proxy.norm(), 1.0, 1e-12);
 }
 
 // Ortega et al.'s 6-DOF god-object on a fingertip, pressing pulp-down on a plane:
 //  - the device lifts the finger's tip 81 degrees (its body into the plane): the proxy stays
-//    flat and the hand feels the spring stretched by all of it;
+//    flat, but for the body's clearance (kFingerBodyClearance), and the hand feels the spring
+//    stretched by the rest;
 //  - the device lifts it 162 degrees (the body, then the nail, through the plane): the proxy
 //    never turns its body in; it slides along the plane's bound (a turn about the normal and a
-//    roll) to the nearest orientation that keeps the body out, 18 degrees from the device's,
-//    on its nail;
+//    roll) to the nearest orientation that keeps the body out, 18 degrees less the clearance
+//    from the device's, on its nail;
 //  - the device curls the tip down 162 degrees (the way a real finger reaches its nail): the
 //    proxy follows, the body stays out, and the nail touches: a point contact.
 TEST(OrientedFinger, TheFingersBodyAndNailCannotTurnThroughTheSurface)
@@ -202,7 +204,7 @@ TEST(OrientedFinger, TheFingersBodyAndNailCannotTurnThroughTheSurface)
     ASSERT_EQ(state.contact_count, 1);
     if (turn.angle < 0.0)
     {
-      EXPECT_LE(deepest, kFingerBodyTolerance);
+      EXPECT_LE(deepest, std::sin(kFingerBodyClearance) + 1e-12);
     }
     else
     {
@@ -211,11 +213,13 @@ TEST(OrientedFinger, TheFingersBodyAndNailCannotTurnThroughTheSurface)
     const double lifted = -turn.angle;
     if (turn.angle > -0.5 * kPi && turn.angle < 0.0)
     {
-      // Held flat: the pulp still faces the plane with the full area; the hand feels k_r times
-      // the whole lift, about +y, turning the tip back down.
-      EXPECT_LT(state.proxy_orientation.angularDistance(pulpDown()), 1e-3);
-      EXPECT_NEAR(state.contacts[0].radius, full_radius, 1e-3 * full_radius);
-      EXPECT_NEAR(state.user_torque.y(), k_r * lifted, 0.01 * k_r * lifted);
+      // Held at the body's clearance: the pulp still faces the plane, tilted by the clearance
+      // (the area 0.999 of the full one); the hand feels k_r times the rest of the lift, about
+      // +y, turning the tip back down.
+      EXPECT_NEAR(state.proxy_orientation.angularDistance(pulpDown()), kFingerBodyClearance, 1e-3);
+      EXPECT_NEAR(state.contacts[0].radius, full_radius, 2e-3 * full_radius);
+      const double stretched = lifted - kFingerBodyClearance;
+      EXPECT_NEAR(state.user_torque.y(), k_r * stretched, 0.01 * k_r * stretched);
       EXPECT_NEAR(state.user_torque.x(), 0.0, 1e-3 * k_r);
       EXPECT_NEAR(state.user_torque.z(), 0.0, 1e-3 * k_r);
     }
@@ -223,7 +227,7 @@ TEST(OrientedFinger, TheFingersBodyAndNailCannotTurnThroughTheSurface)
     {
       // The nearest orientation with the body out: the device's, its tip laid back down by its
       // elevation pi - lift (body flat, reversed, on the nail).
-      const double elevation = kPi - lifted;
+      const double elevation = kPi - lifted - kFingerBodyClearance;
       EXPECT_NEAR(state.proxy_orientation.angularDistance(device), elevation, 1e-3);
       EXPECT_NEAR(state.user_torque.norm(), k_r * elevation, 0.01 * k_r * elevation);
       EXPECT_EQ(state.contacts[0].radius, 0.0);
