@@ -123,7 +123,8 @@ struct Port
   double x = 0.0;                        // m: the handle
   double v = 0.0;                        // m/s
   Message seen{0.0, -1.0, 0.0, 0.0};     // at the physics: the newest position
-  Message command{0.0, -1.0, 0.0, 0.0};  // at the device: the newest force
+  Message command{0.0, -1.0, 0.0, 0.0};  // at the device: the newest force (or god-object)
+  double proxy_velocity = 0.0;           // m/s, local coupling: from the last two god-objects
   std::vector<double> rendered;          // N, per tick
   std::vector<double> positions;         // m, per tick
   std::vector<char> pressing;            // per tick: the physics' proxy held by the surface
@@ -264,8 +265,19 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
         {
           on_block += pull.on_proxy.x();
         }
+        if (trial.local_coupling)
+        {
+          port.down.send(now, proxy, 0.0);
+        }
       }
-      port.down.send(now, force_on_hand, 0.0);
+      else if (trial.local_coupling && port.seen.stamp >= 0.0)
+      {
+        port.down.send(now, port.seen.a, 0.0);  // free space: the god-object is where the hand was seen
+      }
+      if (!trial.local_coupling)
+      {
+        port.down.send(now, force_on_hand, 0.0);
+      }
       port.pressing.push_back(pressing ? 1 : 0);
     }
     if (trial.task == DelayTask::kGrasp)
@@ -280,9 +292,22 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       Message arrived{};
       if (port.down.receive(now, &arrived))
       {
+        if (trial.local_coupling && port.command.stamp >= 0.0 && arrived.stamp > port.command.stamp)
+        {
+          port.proxy_velocity = (arrived.a - port.command.a) / (arrived.stamp - port.command.stamp);
+        }
         port.command = arrived;
       }
-      const double command = port.command.stamp >= 0.0 ? port.command.a : 0.0;
+      double command = 0.0;
+      if (port.command.stamp >= 0.0)
+      {
+        command =
+            trial.local_coupling
+                ? -couplingForce(coupling, Eigen::Vector3d(port.x, 0, 0), Eigen::Vector3d(port.v, 0, 0),
+                                 Eigen::Vector3d(port.command.a, 0, 0), Eigen::Vector3d(port.proxy_velocity, 0, 0))
+                       .on_proxy.x()
+                : port.command.a;
+      }
       const double rendered =
           port.controller.apply(Eigen::Vector3d(command, 0, 0), Eigen::Vector3d(port.v, 0, 0), coupling.max_force).x();
       const double rest =
@@ -403,6 +428,11 @@ std::string delayTrialJson(const DelayTrial& trial, const DelayTrialResult& resu
                 result.late_hf_rms_N, result.baseline_late_hf_rms_N, result.sustained ? "true" : "false",
                 result.peak_force_N, result.max_force_N, result.felt_stiffness_N_per_m, result.damped_ticks,
                 result.lost_messages);
-  return line;
+  std::string json = line;
+  if (trial.local_coupling)
+  {
+    json.insert(json.size() - 1, ", \"local_coupling\": true");  // delaySweep()'s rows have none
+  }
+  return json;
 }
 }  // namespace god_finger

@@ -1,20 +1,25 @@
 // The delay sweep's model (scenarios/delay_sweep.h) shows what the issue asks of it: without the
 // passivity controller a delayed link makes energy and the contact buzzes on, with it the device
-// port stays passive up to a 30 ms round trip (jitter and loss included) and no oscillation is
-// sustained; free motion is untouched; a trial repeats bit for bit.
+// port stays passive through 10-100 ms round trips (jitter and loss included); free motion is
+// untouched when forces are forwarded; a trial repeats bit for bit. And what the local coupling
+// (the haptic node's default) gives: passive on a wall, a drag in free motion.
 #include "god_finger/scenarios/delay_sweep.h"
+#include "god_finger/haptics/virtual_coupling.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace god_finger
 {
 namespace
 {
-DelayTrialResult run(DelayTask task, DelayOperator op, double round_trip, double jitter, double loss, bool controller)
+DelayTrialResult run(DelayTask task, DelayOperator op, double round_trip, double jitter, double loss, bool controller,
+                     bool local_coupling = false)
 {
   DelayTrial trial;
+  trial.local_coupling = local_coupling;
   trial.task = task;
   trial.op = op;
   trial.round_trip = round_trip;
@@ -95,6 +100,41 @@ TEST(DelaySweep, ATrialRepeatsBitForBit)
   EXPECT_EQ(delayTrialJson(trial, runDelayTrial(trial)), delayTrialJson(trial, runDelayTrial(trial)));
   // 4 tasks x 2 operators x (the no-link baseline + 4 round trips x 3 jitters x 2 losses) x off, on.
   EXPECT_EQ(delaySweep().size(), 4u * 2u * (1u + 4u * 3u * 2u) * 2u);
+}
+
+// The haptic node's default across processes, the local coupling (the spring rendered on the
+// device's side against the last god-object received), measured here because the sweep's rows
+// forward forces. Pressing a stiff wall through a 30 ms round trip it stays passive with the
+// controller off (what link.test shows through ROS). In free motion its god-object lags the hand
+// by the round trip, so the hand feels a drag of about k T: this pins what the default does
+// today (docs/devices.md; issue 29's note), until the god-object is predicted or the spring held
+// off while the physics reports it free. (The human-like hand also rings against that delayed
+// spring from 30 ms on: the run's last second holds 0.40 N rms above 5 Hz at 30 ms, 0.44 N at
+// 100 ms, printed as "sustained" in the [ measured ] lines; not asserted here.)
+TEST(DelaySweep, TheLocalCouplingIsPassiveOnAWallButDragsInFreeMotion)
+{
+  for (const double round_trip : {0.03, 0.1})
+  {
+    const DelayTrialResult press =
+        run(DelayTask::kPress, DelayOperator::kWorstCase, round_trip, 0.0, 0.0, false, /*local_coupling=*/true);
+    EXPECT_GE(press.lowest_energy_J, -1e-4) << round_trip;
+    EXPECT_FALSE(press.sustained) << round_trip;
+    EXPECT_GT(press.felt_stiffness_N_per_m, 300.0) << round_trip;
+  }
+  const CouplingProfile coupling;
+  for (const double round_trip : {0.01, 0.03, 0.1})
+  {
+    const DelayTrialResult forwarded = run(DelayTask::kFree, DelayOperator::kHumanLike, round_trip, 0.0, 0.0, true);
+    const DelayTrialResult local =
+        run(DelayTask::kFree, DelayOperator::kHumanLike, round_trip, 0.0, 0.0, true, /*local_coupling=*/true);
+    EXPECT_EQ(forwarded.peak_force_N, 0.0);
+    // The hand's rest point swings +-3 cm at 1 Hz (0.19 m/s at most): k T v.
+    const double drag = coupling.stiffness * round_trip * 0.03 * 2.0 * M_PI;
+    // Measured: 1.30, 3.02 and 7.74 N against k T v's 0.75, 2.26 and 7.54 N (the rest: the
+    // damper's term on the god-object's velocity taken from two delayed samples).
+    EXPECT_GT(local.peak_force_N, 0.9 * drag) << round_trip;
+    EXPECT_LT(local.peak_force_N, 2.0 * drag) << round_trip;
+  }
 }
 }  // namespace
 }  // namespace god_finger

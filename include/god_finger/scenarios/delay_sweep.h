@@ -61,6 +61,12 @@ struct DelayTrial
   double jitter_fraction = 0.0;  // each way's jitter's standard deviation over its delay
   double loss = 0.0;             // each message's probability of being lost
   bool controller = true;        // the passivity controller at the device's port (its defaults)
+  // false: the physics sends the coupling's force and the device renders the newest received
+  // (the haptic node's local_coupling:=false; every row of delaySweep()). true: the physics sends
+  // its god-object (position; the device side takes its velocity from the last two received, as
+  // the haptic node does) and the device renders the coupling between its own handle, now, and
+  // that god-object (the haptic node's default, local_coupling:=true), through couplingForce.
+  bool local_coupling = false;
   int seed = 1;
 };
 
