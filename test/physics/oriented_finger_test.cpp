@@ -58,6 +58,15 @@ Eigen::Vector3d pressTarget(const WorldParams& params)
   return Eigen::Vector3d(0, 0, params.coupling.proxy_radius - 0.01);
 }
 
+// One oriented finger pressed pulp-down at pressTarget() and settled for 0.5 s: its index.
+int pressPulpDown(GodFingerWorld* world)
+{
+  const int finger = world->addInterface(Eigen::Vector3d(0, 0, 0.01));
+  world->setInterfaceTarget(finger, pressTarget(world->params()), pulpDown());
+  run(world, 0.5);
+  return finger;
+}
+
 ExperimentOptions rollOptions(ContactModel model)
 {
   ExperimentOptions options;
@@ -177,9 +186,7 @@ TEST(OrientedFinger, TheFingersBodyAndNailCannotTurnThroughTheSurface)
     SCOPED_TRACE(turn.name);
     GodFingerWorld world(planeScene(), params);
     const Eigen::Vector3d target = pressTarget(params);
-    const int finger = world.addInterface(Eigen::Vector3d(0, 0, 0.01));
-    world.setInterfaceTarget(finger, target, pulpDown());
-    run(&world, 0.5);
+    const int finger = pressPulpDown(&world);
     const InterfaceState& state = world.interfaceState(finger);
     ASSERT_EQ(state.contact_count, 1);
     const double full_radius = state.contacts[0].radius;
@@ -302,9 +309,7 @@ TEST(OrientedFinger, RollingMovesTheAreaAcrossTheSurfaceByTheFingertipRadiusTime
   const WorldParams params;
   GodFingerWorld world(planeScene(), params);
   const Eigen::Vector3d target = pressTarget(params);
-  const int finger = world.addInterface(Eigen::Vector3d(0, 0, 0.01));
-  world.setInterfaceTarget(finger, target, pulpDown());
-  run(&world, 0.5);
+  const int finger = pressPulpDown(&world);
   const InterfaceState& state = world.interfaceState(finger);
   ASSERT_EQ(state.contact_count, 1);
   const Eigen::Vector3d before = state.contacts[0].point;
