@@ -13,8 +13,11 @@ namespace god_finger
 {
 namespace
 {
-constexpr double kTick = 1e-3;            // s
-constexpr double kDuration = 4.0;         // s
+constexpr double kTick = 1e-3;     // s
+constexpr double kDuration = 4.0;  // s
+// The run's last kQuietTail seconds have no tremor (delay_sweep.h): its last second shows what
+// the loop does on its own; the 0.5 s before it lets the moving mean (0.2 s) forget the tremor.
+constexpr double kQuietTail = 1.5;        // s
 constexpr int kHighPassHalfWindow = 100;  // ticks: the moving mean's half window (0.2 s in all)
 constexpr double kBlockMass = 0.05;       // kg: the grasp's block
 constexpr double kBlockHalfWidth = 0.02;  // m
@@ -311,7 +314,9 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       const double rendered =
           port.controller.apply(Eigen::Vector3d(command, 0, 0), Eigen::Vector3d(port.v, 0, 0), coupling.max_force).x();
       const double rest =
-          restPoint(trial.task, p, now) + hand.tremor * std::sin(2.0 * M_PI * hand.tremor_hz * now) * (p == 0 ? 1 : -1);
+          restPoint(trial.task, p, now) +
+          (now < kDuration - kQuietTail ? hand.tremor * std::sin(2.0 * M_PI * hand.tremor_hz * now) : 0.0) *
+              (p == 0 ? 1 : -1);
       const double by_hand = hand.stiffness * (rest - port.x) - hand.damping * port.v;
       port.v += kTick * (by_hand + rendered) / hand.mass;
       port.x += kTick * port.v;
@@ -348,10 +353,12 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       const std::size_t n = high.size();
       result.early_hf_rms_N = std::max(result.early_hf_rms_N, rms(high, first, std::min(n, first + 1000)));
       result.late_hf_rms_N = std::max(result.late_hf_rms_N, rms(high, n - 1000, n));
+      const std::size_t quiet = n - static_cast<std::size_t>(std::lround(kQuietTail / kTick));
+      result.tremor_hf_rms_N = std::max(result.tremor_hf_rms_N, rms(high, quiet - 1000, quiet));
     }
   }
-  // Sustained: the last second's content above 5 Hz has not fallen to half the first second's,
-  // and is over what the same operator and task give with no link at all (the tremor's own).
+  // Sustained: the last second's content above 5 Hz (the hand no longer trembling) has not fallen
+  // to half the first second's, and is over what the same operator and task give with no link.
   if (trial.round_trip > 0.0 || trial.jitter_fraction > 0.0 || trial.loss > 0.0)
   {
     DelayTrial baseline = trial;
@@ -359,11 +366,14 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
     baseline.jitter_fraction = 0.0;
     baseline.loss = 0.0;
     baseline.controller = true;
-    result.baseline_late_hf_rms_N = runDelayTrial(baseline).late_hf_rms_N;
+    const DelayTrialResult alone = runDelayTrial(baseline);
+    result.baseline_late_hf_rms_N = alone.late_hf_rms_N;
+    result.baseline_tremor_hf_rms_N = alone.tremor_hf_rms_N;
   }
   else
   {
     result.baseline_late_hf_rms_N = result.late_hf_rms_N;
+    result.baseline_tremor_hf_rms_N = result.tremor_hf_rms_N;
   }
   result.sustained = result.late_hf_rms_N > result.baseline_late_hf_rms_N + kSustainedHfRms &&
                      result.late_hf_rms_N > 0.5 * result.early_hf_rms_N;
@@ -422,12 +432,13 @@ std::string delayTrialJson(const DelayTrial& trial, const DelayTrialResult& resu
                 "\"loss\": %.3f, \"controller\": %s, \"lowest_energy_J\": %.6g, \"early_hf_rms_N\": %.6g, "
                 "\"late_hf_rms_N\": %.6g, \"baseline_late_hf_rms_N\": %.6g, \"sustained\": %s, \"peak_force_N\": %.6g, "
                 "\"max_force_N\": %.6g, "
-                "\"felt_stiffness_N_per_m\": %.6g, \"damped_ticks\": %ld, \"lost_messages\": %ld}",
+                "\"felt_stiffness_N_per_m\": %.6g, \"damped_ticks\": %ld, \"lost_messages\": %ld, "
+                "\"tremor_hf_rms_N\": %.6g, \"baseline_tremor_hf_rms_N\": %.6g}",
                 delayTaskName(trial.task), delayOperatorName(trial.op), trial.round_trip, trial.jitter_fraction,
                 trial.loss, trial.controller ? "true" : "false", result.lowest_energy_J, result.early_hf_rms_N,
                 result.late_hf_rms_N, result.baseline_late_hf_rms_N, result.sustained ? "true" : "false",
                 result.peak_force_N, result.max_force_N, result.felt_stiffness_N_per_m, result.damped_ticks,
-                result.lost_messages);
+                result.lost_messages, result.tremor_hf_rms_N, result.baseline_tremor_hf_rms_N);
   std::string json = line;
   if (trial.local_coupling)
   {
