@@ -19,11 +19,12 @@
 //    0.2 N s/m: the passive operator that shows a delayed wall's energy best); kHumanLike, a
 //    finger and arm (0.15 kg, 300 N/m, 3 N s/m) with a physiological tremor (0.1 mm at 9 Hz)
 //    that stops 1.5 s before the run's end (4 s). A tremor is a forcing, and the loop answers it
-//    as long as it goes on, more so through a delay (through 10 ms the press's 9 Hz answer is 1.4
-//    times the no-link run's: the delayed loop's resonance, near 11 Hz, is less damped); the last
-//    second, the hand still, shows whether the loop oscillates on its own. With the tremor to the
-//    end, that stronger answer counted as sustained in 8 of the sweep's settings (10 ms, jitter
-//    20-50 %); stopped, it dies: the worst of them keeps 0.28 of its first second's content.
+//    as long as it goes on, more so through a delay: through 10 ms the press's and the grasp's
+//    9 Hz answer is 1.3-2.4 times the no-link run's (the delayed loop's resonance, near 11 Hz, is
+//    less damped). The last second, the hand still, shows whether the loop oscillates on its own.
+//    With the tremor to the end, that stronger answer counted as sustained in 8 of the sweep's
+//    settings (10 ms, jitter 20-50 %); stopped, it dies: the worst of them keeps 0.28 of its first
+//    second's content.
 // Metrics per trial (the worst of the ports for the grasp): lowest_energy_J, the device port's
 // observer's lowest energy (passive: >= -1e-4 J, the bound); early/late_hf_rms_N, the
 // rendered force's content above about 5 Hz (the force less its 0.2 s centred moving mean) over
