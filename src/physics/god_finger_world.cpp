@@ -733,6 +733,31 @@ struct GodFingerWorld::Impl
     overlap.update(params, &proxies);
   }
 
+  // The fingers' friction anchors on soft body `index` (material points of it, kept in its
+  // centre-of-mass frame: WarmStart::anchor_on_object) go where its surface took them in the
+  // step it just made (soft_body.h materialMotion), for the anchors of this step and the last,
+  // the ones the next step may hold. Left in place, a glued body's anchor stays where the surface
+  // was: the friction rows then see the material slide under the pad by the dimple's own motion.
+  void carryFrictionAnchors(int index)
+  {
+    const Body& body = bodies[index];
+    const auto carry = [&](WarmStart* warm)
+    {
+      if (warm->step >= steps - 2)
+      {
+        warm->anchor_on_object += materialMotion(body, warm->anchor_on_object);
+      }
+    };
+    for (Proxy& proxy : proxies)
+    {
+      carry(&proxy.pads[index].linear);
+      for (WarmStart& warm : proxy.warm_starts[index])
+      {
+        carry(&warm);
+      }
+    }
+  }
+
   // After the solve: each finger's contact force loads the soft bodies it touches, and they step.
   // The force the solver put on proxy i is m dv/dt minus what was applied to it; a finger touching
   // one body gives it all (reversed), one touching several gives each soft body the part along
@@ -798,7 +823,11 @@ struct GodFingerWorld::Impl
     bool moved = false;
     for (const int index : soft_bodies)
     {
-      moved = stepSoftVolume(world.get(), &bodies[index]) || moved;
+      if (stepSoftVolume(world.get(), &bodies[index]))
+      {
+        moved = true;
+        carryFrictionAnchors(index);
+      }
     }
     if (!moved)
     {

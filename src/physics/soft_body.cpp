@@ -35,6 +35,7 @@ void moveSurface(btCollisionWorld* world, SceneBody* body)
     body->rigid->setWorldTransform(toBullet(at));
     volume.elastic->deformation(&volume.deformation);
   }
+  volume.previous_vertices = volume.vertices;
   for (std::size_t v = 0; v < volume.vertices.size(); ++v)
   {
     volume.vertices[v] = volume.nodes[volume.node_of_vertex[v]] - volume.shift;
@@ -197,6 +198,23 @@ bool stepSoftVolume(btCollisionWorld* world, SceneBody* body)
   }
   moveSurface(world, body);
   return true;
+}
+
+Eigen::Vector3d materialMotion(const SceneBody& body, const Eigen::Vector3d& point)
+{
+  const SoftVolume& volume = *body.soft;
+  const SurfaceLocation on = body.locator->closest(body.geometry_in_com.inverse() * point);
+  Eigen::Vector3d moved = Eigen::Vector3d::Zero();
+  if (on.face < 0 || volume.previous_vertices.size() != volume.vertices.size())
+  {
+    return moved;
+  }
+  const Eigen::Vector3i& face = body.walk->triangles()[on.face];
+  for (int k = 0; k < 3; ++k)
+  {
+    moved += on.barycentric[k] * (volume.vertices[face[k]] - volume.previous_vertices[face[k]]);
+  }
+  return body.geometry_in_com.linear() * moved;
 }
 
 void resetSoftVolume(btCollisionWorld* world, SceneBody* body)

@@ -53,12 +53,13 @@ struct SceneBody;
 struct SoftVolume
 {
   std::unique_ptr<ElasticBody> elastic;
-  std::vector<int> node_of_vertex;        // by walk-mesh vertex: the volume's node
-  Eigen::VectorXd settled;                // m, 3 per node: at rest under gravity, the start
-  Eigen::VectorXd loads;                  // N, 3 per node, body frame: this step's finger loads
-  std::vector<Eigen::Vector3d> nodes;     // m, body frame: where the nodes are now
-  std::vector<Eigen::Vector3d> vertices;  // m, body frame: the walk mesh's, now
-  Eigen::VectorXd sink;                   // m, 3 per node: scratch, the displacement since settling
+  std::vector<int> node_of_vertex;                 // by walk-mesh vertex: the volume's node
+  Eigen::VectorXd settled;                         // m, 3 per node: at rest under gravity, the start
+  Eigen::VectorXd loads;                           // N, 3 per node, body frame: this step's finger loads
+  std::vector<Eigen::Vector3d> nodes;              // m, body frame: where the nodes are now
+  std::vector<Eigen::Vector3d> vertices;           // m, body frame: the walk mesh's, now
+  std::vector<Eigen::Vector3d> previous_vertices;  // m: the walk mesh's before the last step
+  Eigen::VectorXd sink;                            // m, 3 per node: scratch, the displacement since settling
   Eigen::Isometry3d body_in_world = Eigen::Isometry3d::Identity();
   // A resting body's mean displacement (m, body frame; 0 for a glued body), and its Bullet
   // body's transform at shift 0.
@@ -101,6 +102,13 @@ bool stepSoftVolume(btCollisionWorld* world, SceneBody* body);
 constexpr double kMinStiffnessForce = 0.05;  // N
 constexpr double kMinStiffnessSink = 1e-5;   // m
 double softContactStiffness(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, SoftVolume* volume);
+
+// How far the material point at `point` (m, the body's centre-of-mass frame, on or near its
+// surface) moved in the last elastic step, in that frame: the walk mesh's face nearest to it, its
+// vertices' motion by the point's barycentric weights (a resting body's rigid motion excluded:
+// its frame moves with it). The fingers' friction anchors on a soft body are such points: carried
+// with it, they see the surface move under them, as the solver's rows would see a moving body.
+Eigen::Vector3d materialMotion(const SceneBody& body, const Eigen::Vector3d& point);
 
 // Back to the settled start, the surface with it.
 void resetSoftVolume(btCollisionWorld* world, SceneBody* body);

@@ -760,7 +760,8 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   std::unique_ptr<PinchMetrics> pinch;
   if (options.scenario == Scenario::kPinchCard || options.scenario == Scenario::kPinchSoft)
   {
-    pinch = std::make_unique<PinchMetrics>(object, timesOf(script), world.bodyState(object));
+    pinch = std::make_unique<PinchMetrics>(object, timesOf(script), world.bodyState(object),
+                                           /*turn=*/options.scenario != Scenario::kPinchSoft);
   }
   // door, drawer: the joint's (joint_metrics.h).
   std::unique_ptr<JointMetrics> joint;

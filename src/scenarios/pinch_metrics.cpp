@@ -4,8 +4,8 @@
 
 namespace god_finger
 {
-PinchMetrics::PinchMetrics(int object, const ScenarioTimes& times, const BodyState& start)
-    : object_(object), times_(times), start_height_(start.center_of_mass.z())
+PinchMetrics::PinchMetrics(int object, const ScenarioTimes& times, const BodyState& start, bool turn)
+    : object_(object), times_(times), start_height_(start.center_of_mass.z()), measure_turn_(turn)
 {
 }
 
@@ -34,6 +34,11 @@ void PinchMetrics::add(double time, const GodFingerWorld& world)
 
 std::map<std::string, double> PinchMetrics::metrics() const
 {
-  return {{"held", gripped_ && held_ ? 1.0 : 0.0}, {"slip_m", slip_}, {"turn_rad", turn_}};
+  std::map<std::string, double> result{{"held", gripped_ && held_ ? 1.0 : 0.0}, {"slip_m", slip_}};
+  if (measure_turn_)
+  {
+    result["turn_rad"] = turn_;
+  }
+  return result;
 }
 }  // namespace god_finger

@@ -5,6 +5,8 @@
 #include "god_finger/support/input_error.h"
 #include "god_finger/support/text_numbers.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <limits>
 
@@ -15,6 +17,17 @@ namespace
 constexpr double kMeasuredHold = 0.5;  // s: press_soft's metrics come from the run's last 0.5 s
 constexpr double kStuckSpeed = 1e-3;   // m/s
 constexpr double kSlipSpeed = 5e-3;    // m/s
+
+// The best-fit rigid motion (Eigen's umeyama, no scaling) taking `from` onto `to` (same vertices).
+Eigen::Isometry3d bestFitMotion(const std::vector<Eigen::Vector3d>& from, const std::vector<Eigen::Vector3d>& to)
+{
+  const auto n = static_cast<Eigen::Index>(from.size());
+  const Eigen::Map<const Eigen::Matrix3Xd> a(from.front().data(), 3, n);
+  const Eigen::Map<const Eigen::Matrix3Xd> b(to.front().data(), 3, n);
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
+  motion.matrix() = Eigen::umeyama(a, b, false);
+  return motion;
+}
 }  // namespace
 
 SoftContactMetrics::SoftContactMetrics(Scenario scenario, int object, const ScenarioTimes& times,
@@ -53,6 +66,18 @@ double SoftContactMetrics::deepestSink(const GodFingerWorld& world) const
   for (std::size_t v = 0; v < now.size(); ++v)
   {
     deepest = std::max(deepest, (now[v] - untouched_[v]).norm());
+  }
+  return deepest;
+}
+
+double SoftContactMetrics::deepestDeformation(const GodFingerWorld& world) const
+{
+  const std::vector<Eigen::Vector3d>& now = world.walkMesh(object_).vertices();
+  const Eigen::Isometry3d motion = bestFitMotion(untouched_, now);
+  double deepest = 0.0;
+  for (std::size_t v = 0; v < now.size(); ++v)
+  {
+    deepest = std::max(deepest, (now[v] - motion * untouched_[v]).norm());
   }
   return deepest;
 }
@@ -98,7 +123,16 @@ void SoftContactMetrics::add(double time, const GodFingerWorld& world)
         force_sum_ += world.interfaceState(i).user_force.norm();
         ++samples_;
       }
-      sink_ = std::max(sink_, deepestSink(world));
+      sink_ = std::max(sink_, deepestDeformation(world));
+    }
+    if (time >= times_.lift_start)
+    {
+      const std::vector<Eigen::Vector3d>& now = world.walkMesh(object_).vertices();
+      if (grip_vertices_.empty())
+      {
+        grip_vertices_ = now;
+      }
+      turn_ = std::max(turn_, Eigen::AngleAxisd(bestFitMotion(grip_vertices_, now).linear()).angle());
     }
     lift_ = world.bodyState(object_).pose.translation().z() - start_height_;
   }
@@ -159,6 +193,7 @@ std::map<std::string, double> SoftContactMetrics::metrics() const
   {
     result["squash"] = squash_;
     result["lift_height_m"] = lift_;
+    result["turn_rad"] = turn_;
   }
   else
   {

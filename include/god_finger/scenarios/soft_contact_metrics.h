@@ -15,7 +15,10 @@
 //    fingers: 1 - its width now over its width untouched, its width in the frame that follows
 //    its mean displacement); lift_height_m, its frame's rise at the end; over the hold after
 //    the lift (from ScenarioTimes::lift_end on), hand_force_N, the fingers' mean force, and
-//    sink_m, the deepest sink;
+//    sink_m, the deepest deformation (its best-fit rigid motion since untouched taken out:
+//    Eigen's umeyama); turn_rad, its largest best-fit rotation from the lift's start on (its
+//    Bullet body only translates: pinch_metrics.h cannot see it turn). Before stop 43 sink_m
+//    counted the turn too: 8.1 mm of a 3 cm ball that had turned 0.25 rad in god_finger's grip;
 //  - all, over every step with a finger on the body: penetration_max_m and
 //    penetration_p99_m, how far a proxy's sphere reached into the deformed surface (its
 //    radius less its centre's distance to the surface, 0 when outside).
@@ -45,6 +48,9 @@ class SoftContactMetrics
 
  private:
   double deepestSink(const GodFingerWorld& world) const;
+  // pinch_soft's free ball: its deepest deformation with its best-fit rigid motion since it was
+  // untouched taken out (a turn in the grip moves its surface too, and is no sink).
+  double deepestDeformation(const GodFingerWorld& world) const;
   static double widthAlongX(const std::vector<Eigen::Vector3d>& vertices);
 
   Scenario scenario_;
@@ -70,6 +76,8 @@ class SoftContactMetrics
   double untouched_width_ = 0.0;  // m
   double start_height_ = 0.0;     // m
   double squash_ = 0.0;
-  double lift_ = 0.0;  // m
+  double lift_ = 0.0;                           // m
+  std::vector<Eigen::Vector3d> grip_vertices_;  // the surface at the lift's start (body frame)
+  double turn_ = 0.0;                           // rad
 };
 }  // namespace god_finger
