@@ -735,15 +735,16 @@ struct GodFingerWorld::Impl
 
   // The fingers' friction anchors on soft body `index` (material points of it, kept in its
   // centre-of-mass frame: WarmStart::anchor_on_object) go where its surface took them in the
-  // step it just made (soft_body.h materialMotion), for the anchors of this step and the last,
-  // the ones the next step may hold. Left in place, a glued body's anchor stays where the surface
-  // was: the friction rows then see the material slide under the pad by the dimple's own motion.
+  // step it just made (soft_body.h materialMotion): the anchors of this step, the only ones the
+  // next step may hold (pad_constraints.cpp, sub_god_object_injection.cpp: step - 1). Left in
+  // place, a glued body's anchor stays where the surface was: the friction rows then see the
+  // material slide under the pad by the dimple's own motion.
   void carryFrictionAnchors(int index)
   {
     const Body& body = bodies[index];
     const auto carry = [&](WarmStart* warm)
     {
-      if (warm->step >= steps - 2)
+      if (warm->step == steps - 1)
       {
         warm->anchor_on_object += materialMotion(body, warm->anchor_on_object);
       }

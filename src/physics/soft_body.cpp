@@ -30,9 +30,12 @@ void moveSurface(btCollisionWorld* world, SceneBody* body)
   {
     const Eigen::VectorXd& u = volume.elastic->displacement();
     volume.shift = u.reshaped(3, u.size() / 3).rowwise().mean();
-    Eigen::Isometry3d at = volume.rigid_at_rest;
-    at.pretranslate(volume.body_in_world.linear() * volume.shift);
-    body->rigid->setWorldTransform(toBullet(at));
+    if (body->rigid)  // none between a reset's teardown and its rebuild (makeSoftVolume places it)
+    {
+      Eigen::Isometry3d at = volume.rigid_at_rest;
+      at.pretranslate(volume.body_in_world.linear() * volume.shift);
+      body->rigid->setWorldTransform(toBullet(at));
+    }
     volume.elastic->deformation(&volume.deformation);
   }
   volume.previous_vertices = volume.vertices;
@@ -66,6 +69,14 @@ void moveSurface(btCollisionWorld* world, SceneBody* body)
     world->updateSingleAabb(body->rigid.get());
   }
 }
+// A resting body's Bullet body is kinematic: Bullet takes its velocity from its transform's
+// change each step (the volume's mean motion), so the fingers' contacts see the surface move
+// with it.
+void makeKinematic(btRigidBody* rigid)
+{
+  rigid->setCollisionFlags(rigid->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+  rigid->setActivationState(DISABLE_DEACTIVATION);
+}
 }  // namespace
 
 std::unique_ptr<TriangleMesh> makeSoftWalkMesh(const BodyDescription& description, std::vector<int>* node_of_vertex)
@@ -81,7 +92,15 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
   SoftVolume& volume = *body->soft;
   if (volume.elastic && volume.elastic->timeStep() == time_step)
   {
-    return;  // made already (a scene change rebuilds the world around it)
+    // Made already: a reset or a scene change rebuilt its Bullet body at the scene's pose. A
+    // resting body's follows the volume again (kinematic, where its mean motion took it).
+    if (volume.resting)
+    {
+      makeKinematic(body->rigid.get());
+      moveSurface(nullptr, body);
+      volume.previous_vertices = volume.vertices;
+    }
+    return;
   }
   const DeformableDescription& soft = *description.soft;
   volume.body_in_world = description.pose * description.collision_origin;
@@ -91,10 +110,7 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
   volume.rigid_at_rest = toEigen(body->rigid->getWorldTransform());
   if (soft.resting)
   {
-    // Kinematic: Bullet takes its velocity from its transform's change each step (the volume's
-    // mean motion), so the fingers' contacts see the surface move with it.
-    body->rigid->setCollisionFlags(body->rigid->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
-    body->rigid->setActivationState(DISABLE_DEACTIVATION);
+    makeKinematic(body->rigid.get());
   }
   try
   {
@@ -139,6 +155,7 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
   auto triangles = std::make_shared<std::vector<Eigen::Vector3i>>(body->walk->triangles());
   volume.triangles = std::move(triangles);
   moveSurface(nullptr, body);
+  volume.previous_vertices = volume.vertices;
 }
 
 void addSoftContactLoad(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, bool as_pad,
@@ -222,6 +239,7 @@ void resetSoftVolume(btCollisionWorld* world, SceneBody* body)
   body->soft->elastic->restAt(body->soft->settled);
   body->soft->loads.setZero();
   moveSurface(world, body);
+  body->soft->previous_vertices = body->soft->vertices;
 }
 
 void snapshotSoftSurface(const SceneBody& body, int index, SoftSurfaceState* out)

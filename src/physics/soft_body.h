@@ -58,7 +58,7 @@ struct SoftVolume
   Eigen::VectorXd loads;                           // N, 3 per node, body frame: this step's finger loads
   std::vector<Eigen::Vector3d> nodes;              // m, body frame: where the nodes are now
   std::vector<Eigen::Vector3d> vertices;           // m, body frame: the walk mesh's, now
-  std::vector<Eigen::Vector3d> previous_vertices;  // m: the walk mesh's before the last step
+  std::vector<Eigen::Vector3d> previous_vertices;  // m: the walk mesh's before the last step (made, reset: now's)
   Eigen::VectorXd sink;                            // m, 3 per node: scratch, the displacement since settling
   Eigen::Isometry3d body_in_world = Eigen::Isometry3d::Identity();
   // A resting body's mean displacement (m, body frame; 0 for a glued body), and its Bullet

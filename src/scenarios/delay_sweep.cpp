@@ -19,6 +19,9 @@ constexpr double kDuration = 4.0;  // s
 // the loop does on its own; the 0.5 s before it lets the moving mean (0.2 s) forget the tremor.
 constexpr double kQuietTail = 1.5;        // s
 constexpr int kHighPassHalfWindow = 100;  // ticks: the moving mean's half window (0.2 s in all)
+// Ticks before the tremor stops over which its answer is measured (tremor_hf_rms_N): from 2.1 s,
+// after the press's ramp ends at 2 s and the moving mean has left that corner.
+constexpr std::size_t kTremorWindow = 400;
 constexpr double kBlockMass = 0.05;       // kg: the grasp's block
 constexpr double kBlockHalfWidth = 0.02;  // m
 
@@ -354,7 +357,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       result.early_hf_rms_N = std::max(result.early_hf_rms_N, rms(high, first, std::min(n, first + 1000)));
       result.late_hf_rms_N = std::max(result.late_hf_rms_N, rms(high, n - 1000, n));
       const std::size_t quiet = n - static_cast<std::size_t>(std::lround(kQuietTail / kTick));
-      result.tremor_hf_rms_N = std::max(result.tremor_hf_rms_N, rms(high, quiet - 1000, quiet));
+      result.tremor_hf_rms_N = std::max(result.tremor_hf_rms_N, rms(high, quiet - kTremorWindow, quiet));
     }
   }
   // Sustained: the last second's content above 5 Hz (the hand no longer trembling) has not fallen

@@ -272,7 +272,7 @@ TEST_F(SoftBodyWorld, APadThatSticksRidesTheMaterialTheSurfaceCarries)
   // onto it only in part (the anchor's positional error), against the coupling's spring.
   EXPECT_GT(material_moved, 1e-4);
   EXPECT_GT(proxy_moved, 0.5 * material_moved);
-  EXPECT_LT(material_moved - proxy_moved, 0.5 * material_moved);
+  EXPECT_LE(proxy_moved, material_moved);  // dragged by the material, never past it
 }
 
 TEST_F(SoftBodyWorld, ReleasedItSpringsBackAndSleepsAndAResetRestoresItBitForBit)

@@ -30,8 +30,8 @@
 // rendered force's content above about 5 Hz (the force less its 0.2 s centred moving mean) over
 // the first second after the first contact and over the run's last second; sustained, whether
 // late_hf_rms_N is over kSustainedHfRms (an oscillation that does not die); tremor_hf_rms_N, the
-// same content over the last second of the tremor (what the hand feels of its own tremor, the
-// link's transparency to it, against the no-link run's); peak_force_N against
+// same content over the tremor's last 0.4 s (2.1-2.5 s: what the hand feels of its own tremor,
+// the link's transparency to it, against the no-link run's); peak_force_N against
 // the device's max_force; felt_stiffness_N_per_m, the slope of the rendered force against the
 // handle's position over the contact while pressing (kPress, kGrasp; 0 otherwise): transparency
 // against the zero-delay run's; damped_ticks; lost_messages.
@@ -86,7 +86,7 @@ struct DelayTrialResult
   double late_hf_rms_N = 0.0;
   double baseline_late_hf_rms_N = 0.0;
   bool sustained = false;
-  double tremor_hf_rms_N = 0.0;  // N rms above 5 Hz over the tremor's last second (delay_sweep.h)
+  double tremor_hf_rms_N = 0.0;  // N rms above 5 Hz over the tremor's last 0.4 s (above)
   double baseline_tremor_hf_rms_N = 0.0;
   double peak_force_N = 0.0;
   double max_force_N = 0.0;  // the device's limit (the coupling profile's max_force)

@@ -18,7 +18,7 @@
 //    sink_m, the deepest deformation (its best-fit rigid motion since untouched taken out:
 //    Eigen's umeyama); turn_rad, its largest best-fit rotation from the lift's start on (its
 //    Bullet body only translates: pinch_metrics.h cannot see it turn). Before stop 43 sink_m
-//    counted the turn too: 8.1 mm of a 3 cm ball that had turned 0.25 rad in god_finger's grip;
+//    counted the turn too: 8.1 mm of a 3 cm ball turned 0.25 rad from its untouched shape;
 //  - all, over every step with a finger on the body: penetration_max_m and
 //    penetration_p99_m, how far a proxy's sphere reached into the deformed surface (its
 //    radius less its centre's distance to the surface, 0 when outside).
