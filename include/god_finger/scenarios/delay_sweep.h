@@ -20,7 +20,7 @@
 //    finger and arm (0.15 kg, 300 N/m, 3 N s/m) with a physiological tremor (0.1 mm at 9 Hz)
 //    that stops 1.5 s before the run's end (4 s). A tremor is a forcing, and the loop answers it
 //    as long as it goes on, more so through a delay: through 10 ms the press's and the grasp's
-//    9 Hz answer is 1.3-2.4 times the no-link run's (the delayed loop's resonance, near 11 Hz, is
+//    9 Hz answer is 1.3-3.1 times the no-link run's (the delayed loop's resonance, near 11 Hz, is
 //    less damped). The last second, the hand still, shows whether the loop oscillates on its own.
 //    With the tremor to the end, that stronger answer counted as sustained in 8 of the sweep's
 //    settings (10 ms, jitter 20-50 %); stopped, it dies: the worst of them keeps 0.28 of its first
