@@ -27,6 +27,11 @@ const ParameterTable<PassivityParams>& passivityParameterTable()
       realRow<P>("passivity_reservoir", "J", closed(0.0, 10.0),
                  "the most energy the passivity observer banks for the loop to give back later",
                  [](P& p) -> double& { return p.passivity_reservoir; }),
+      realRow<P>("passivity_drift_return", "1/s", closed(0.0, 100.0),
+                 "how fast the physics side of the two-port passivity controller (the delay sweep's two-port form; "
+                 "not in the nodes yet) returns the hand's position it moved out of a contact, as far as the energy "
+                 "the device put in allows",
+                 [](P& p) -> double& { return p.passivity_drift_return; }),
   };
   return table;
 }

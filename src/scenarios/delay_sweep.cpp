@@ -1,6 +1,7 @@
 #include "god_finger/scenarios/delay_sweep.h"
 
 #include "god_finger/haptics/passivity_controller.h"
+#include "god_finger/haptics/two_port_passivity.h"
 #include "god_finger/haptics/virtual_coupling.h"
 #include "god_finger/runtime/delay_line.h"
 
@@ -77,6 +78,7 @@ struct Message
   double stamp;    // s: when it was sent
   double a;        // position (m) or force (N)
   double b;        // velocity (m/s)
+  double energy;   // J: the sender's port's E_in as of `stamp` (the two-port's packet)
 };
 
 // One direction of the link: messages in flight, the newest delivered.
@@ -84,12 +86,12 @@ class Channel
 {
  public:
   explicit Channel(const DelayLineParams& params) : schedule_(params) {}
-  void send(double now, double a, double b)
+  void send(double now, double a, double b, double energy)
   {
     const double release = schedule_.release(now);
     if (release >= 0.0)
     {
-      flight_.push_back({release, now, a, b});
+      flight_.push_back({release, now, a, b, energy});
     }
   }
   // The newest message released by `now`, if any arrived since the last call.
@@ -119,21 +121,29 @@ class Channel
 
 struct Port
 {
-  Port(const DelayLineParams& up_params, const DelayLineParams& down_params, const PassivityParams& passivity)
-      : up(up_params), down(down_params), controller(passivity, kTick)
+  Port(const DelayLineParams& up_params, const DelayLineParams& down_params, const PassivityParams& one_port,
+       const PassivityParams& two_port)
+      : up(up_params),
+        down(down_params),
+        controller(one_port, kTick),
+        device_port(two_port, kTick),
+        physics_port(two_port, kTick)
   {
   }
-  Channel up;    // positions to the physics
-  Channel down;  // forces back
-  PassivityController controller;
-  double x = 0.0;                        // m: the handle
-  double v = 0.0;                        // m/s
-  Message seen{0.0, -1.0, 0.0, 0.0};     // at the physics: the newest position
-  Message command{0.0, -1.0, 0.0, 0.0};  // at the device: the newest force (or god-object)
-  double proxy_velocity = 0.0;           // m/s, local coupling: from the last two god-objects
-  std::vector<double> rendered;          // N, per tick
-  std::vector<double> positions;         // m, per tick
-  std::vector<char> pressing;            // per tick: the physics' proxy held by the surface
+  Channel up;                                 // positions to the physics
+  Channel down;                               // forces back
+  PassivityController controller;             // the one-port form, at the device
+  DevicePortPassivity device_port;            // the two-port form's device side
+  PhysicsPortPassivity physics_port;          // and its physics side
+  double max_drift = 0.0;                     // m
+  double x = 0.0;                             // m: the handle
+  double v = 0.0;                             // m/s
+  Message seen{0.0, -1.0, 0.0, 0.0, 0.0};     // at the physics: the newest position
+  Message command{0.0, -1.0, 0.0, 0.0, 0.0};  // at the device: the newest force (or god-object)
+  double proxy_velocity = 0.0;                // m/s, local coupling: from the last two god-objects
+  std::vector<double> rendered;               // N, per tick
+  std::vector<double> positions;              // m, per tick
+  std::vector<char> pressing;                 // per tick: the physics' proxy held by the surface
 };
 
 double rms(const std::vector<double>& values, std::size_t from, std::size_t to)
@@ -210,6 +220,11 @@ const char* delayOperatorName(DelayOperator op)
   return op == DelayOperator::kWorstCase ? "worst_case" : "human_like";
 }
 
+const char* passivityFormName(PassivityForm form)
+{
+  return form == PassivityForm::kDevicePort ? "device_port" : "two_port";
+}
+
 DelayTrialResult runDelayTrial(const DelayTrial& trial)
 {
   const CouplingProfile coupling;
@@ -219,6 +234,9 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
   {
     passivity.passivity_damping_limit = 0.0;  // the observer only
   }
+  PassivityParams observer_only = passivity;
+  observer_only.passivity_damping_limit = 0.0;
+  const bool two_port = trial.form == PassivityForm::kTwoPort;
   const int port_count = trial.task == DelayTask::kGrasp ? 2 : 1;
   std::vector<Port> ports;
   ports.reserve(port_count);
@@ -231,7 +249,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
     link.seed = trial.seed * 4 + 2 * p;
     DelayLineParams back = link;
     back.seed = link.seed + 1;
-    ports.emplace_back(link, back, passivity);
+    ports.emplace_back(link, back, two_port ? observer_only : passivity, two_port ? passivity : observer_only);
     ports.back().x = restPoint(trial.task, p, 0.0);
   }
   double block = 0.0;  // m: the grasp block's centre
@@ -242,7 +260,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
     const double now = static_cast<double>(tick) * kTick;
     for (Port& port : ports)
     {
-      port.up.send(now, port.x, port.v);
+      port.up.send(now, port.x, port.v, port.device_port.observer().in());
     }
     // The physics: each port's proxy stops at its surface; the coupling pulls it.
     double on_block = 0.0;
@@ -253,6 +271,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       if (port.up.receive(now, &arrived))
       {
         port.seen = arrived;
+        port.physics_port.remote().receive({arrived.stamp, arrived.energy});
       }
       double force_on_hand = 0.0;
       bool pressing = false;
@@ -260,12 +279,30 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       {
         const double sign = p == 0 ? 1.0 : -1.0;  // port 0 pushes along +x
         const double surface = trial.task == DelayTask::kGrasp ? block - sign * kBlockHalfWidth : 0.0;
-        pressing = sign * (port.seen.a - surface) > 0.0;
-        const double proxy = pressing ? surface : port.seen.a;
-        const double proxy_v = pressing ? (trial.task == DelayTask::kGrasp ? block_v : 0.0) : port.seen.b;
-        const CouplingForce pull =
-            couplingForce(coupling, Eigen::Vector3d(port.seen.a, 0, 0), Eigen::Vector3d(port.seen.b, 0, 0),
-                          Eigen::Vector3d(proxy, 0, 0), Eigen::Vector3d(proxy_v, 0, 0));
+        // The coupling's force on the hand at (x, v): its proxy stops at the surface.
+        const auto pull_at = [&](const Eigen::Vector3d& x, const Eigen::Vector3d& v)
+        {
+          const bool in = sign * (x.x() - surface) > 0.0;
+          const double proxy = in ? surface : x.x();
+          const double proxy_v = in ? (trial.task == DelayTask::kGrasp ? block_v : 0.0) : v.x();
+          return couplingForce(coupling, x, v, Eigen::Vector3d(proxy, 0, 0), Eigen::Vector3d(proxy_v, 0, 0));
+        };
+        // The hand where the physics takes it: as seen, or as the two-port's physics side moves it.
+        Eigen::Vector3d hand_x(port.seen.a, 0, 0);
+        Eigen::Vector3d hand_v(port.seen.b, 0, 0);
+        CouplingForce pull = pull_at(hand_x, hand_v);
+        if (!trial.local_coupling)
+        {
+          port.physics_port.answer(
+              Eigen::Vector3d(port.seen.a, 0, 0), Eigen::Vector3d(port.seen.b, 0, 0),
+              [&](const Eigen::Vector3d& x, const Eigen::Vector3d& v) -> Eigen::Vector3d
+              { return -pull_at(x, v).on_proxy; },
+              &hand_x, &hand_v);
+          pull = pull_at(hand_x, hand_v);
+          port.max_drift = std::max(port.max_drift, port.physics_port.drift().norm());
+        }
+        pressing = sign * (hand_x.x() - surface) > 0.0;
+        const double proxy = pressing ? surface : hand_x.x();
         force_on_hand = -pull.on_proxy.x();
         if (pressing)
         {
@@ -273,16 +310,24 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
         }
         if (trial.local_coupling)
         {
-          port.down.send(now, proxy, 0.0);
+          port.down.send(now, proxy, 0.0, 0.0);
         }
       }
       else if (trial.local_coupling && port.seen.stamp >= 0.0)
       {
-        port.down.send(now, port.seen.a, 0.0);  // free space: the god-object is where the hand was seen
+        port.down.send(now, port.seen.a, 0.0, 0.0);  // free space: the god-object is where the hand was seen
+      }
+      if (port.seen.stamp >= 0.0 && !trial.local_coupling && trial.task == DelayTask::kFree)
+      {
+        Eigen::Vector3d hand_x, hand_v;  // free space: no force, nothing to settle
+        port.physics_port.answer(
+            Eigen::Vector3d(port.seen.a, 0, 0), Eigen::Vector3d(port.seen.b, 0, 0),
+            [](const Eigen::Vector3d&, const Eigen::Vector3d&) -> Eigen::Vector3d { return Eigen::Vector3d::Zero(); },
+            &hand_x, &hand_v);
       }
       if (!trial.local_coupling)
       {
-        port.down.send(now, force_on_hand, 0.0);
+        port.down.send(now, force_on_hand, 0.0, port.physics_port.observer().in());
       }
       port.pressing.push_back(pressing ? 1 : 0);
     }
@@ -303,6 +348,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
           port.proxy_velocity = (arrived.a - port.command.a) / (arrived.stamp - port.command.stamp);
         }
         port.command = arrived;
+        port.device_port.remote().receive({arrived.stamp, arrived.energy});
       }
       double command = 0.0;
       if (port.command.stamp >= 0.0)
@@ -314,8 +360,19 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
                        .on_proxy.x()
                 : port.command.a;
       }
-      const double rendered =
-          port.controller.apply(Eigen::Vector3d(command, 0, 0), Eigen::Vector3d(port.v, 0, 0), coupling.max_force).x();
+      // Both forms' device sides see the force rendered; the one not in use only counts.
+      const Eigen::Vector3d handle_v(port.v, 0, 0);
+      double rendered = 0.0;
+      if (two_port)
+      {
+        rendered = port.device_port.apply(Eigen::Vector3d(command, 0, 0), handle_v, coupling.max_force).x();
+        port.controller.apply(Eigen::Vector3d(rendered, 0, 0), handle_v, coupling.max_force);
+      }
+      else
+      {
+        rendered = port.controller.apply(Eigen::Vector3d(command, 0, 0), handle_v, coupling.max_force).x();
+        port.device_port.apply(Eigen::Vector3d(rendered, 0, 0), handle_v, coupling.max_force);
+      }
       const double rest =
           restPoint(trial.task, p, now) +
           (now < kDuration - kQuietTail ? hand.tremor * std::sin(2.0 * M_PI * hand.tremor_hz * now) : 0.0) *
@@ -335,7 +392,11 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
   {
     const Port& port = ports[p];
     result.lowest_energy_J = std::min(result.lowest_energy_J, port.controller.lowestEnergy());
-    result.damped_ticks += port.controller.activeTicks();
+    result.device_margin_J = std::min(result.device_margin_J, port.device_port.lowestMargin());
+    result.physics_margin_J = std::min(result.physics_margin_J, port.physics_port.lowestMargin());
+    result.max_drift_m = std::max(result.max_drift_m, port.max_drift);
+    result.damped_ticks +=
+        port.controller.activeTicks() + port.device_port.activeTicks() + port.physics_port.activeTicks();
     result.lost_messages += port.up.lost() + port.down.lost();
     for (const double f : port.rendered)
     {
@@ -424,24 +485,37 @@ std::vector<DelayTrial> delaySweep()
       }
     }
   }
+  // The two-port form, on: every setting again.
+  const std::size_t one_port_rows = trials.size();
+  for (std::size_t i = 0; i < one_port_rows; ++i)
+  {
+    if (trials[i].controller)
+    {
+      DelayTrial trial = trials[i];
+      trial.form = PassivityForm::kTwoPort;
+      trials.push_back(trial);
+    }
+  }
   return trials;
 }
 
 std::string delayTrialJson(const DelayTrial& trial, const DelayTrialResult& result)
 {
-  char line[1024];
+  char line[1536];
   std::snprintf(line, sizeof(line),
                 "{\"task\": \"%s\", \"operator\": \"%s\", \"round_trip_s\": %.3f, \"jitter_fraction\": %.2f, "
                 "\"loss\": %.3f, \"controller\": %s, \"lowest_energy_J\": %.6g, \"early_hf_rms_N\": %.6g, "
                 "\"late_hf_rms_N\": %.6g, \"baseline_late_hf_rms_N\": %.6g, \"sustained\": %s, \"peak_force_N\": %.6g, "
                 "\"max_force_N\": %.6g, "
                 "\"felt_stiffness_N_per_m\": %.6g, \"damped_ticks\": %ld, \"lost_messages\": %ld, "
-                "\"tremor_hf_rms_N\": %.6g, \"baseline_tremor_hf_rms_N\": %.6g}",
+                "\"tremor_hf_rms_N\": %.6g, \"baseline_tremor_hf_rms_N\": %.6g, \"passivity\": \"%s\", "
+                "\"device_margin_J\": %.6g, \"physics_margin_J\": %.6g, \"max_drift_m\": %.6g}",
                 delayTaskName(trial.task), delayOperatorName(trial.op), trial.round_trip, trial.jitter_fraction,
                 trial.loss, trial.controller ? "true" : "false", result.lowest_energy_J, result.early_hf_rms_N,
                 result.late_hf_rms_N, result.baseline_late_hf_rms_N, result.sustained ? "true" : "false",
                 result.peak_force_N, result.max_force_N, result.felt_stiffness_N_per_m, result.damped_ticks,
-                result.lost_messages, result.tremor_hf_rms_N, result.baseline_tremor_hf_rms_N);
+                result.lost_messages, result.tremor_hf_rms_N, result.baseline_tremor_hf_rms_N,
+                passivityFormName(trial.form), result.device_margin_J, result.physics_margin_J, result.max_drift_m);
   std::string json = line;
   if (trial.local_coupling)
   {

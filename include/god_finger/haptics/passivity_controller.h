@@ -56,9 +56,11 @@ struct PassivityParams
   double passivity_damping_limit = 50.0;  // N s/m: the most damping added (0: controller off)
   double passivity_min_damping = 4.0;     // N s/m: b_min, the dissipation asked while pushing
   double passivity_reservoir = 0.1;       // J: E_max, the most energy the observer banks
+  // 1/s: how fast the two-port's physics side returns its position drift (two_port_passivity.h)
+  double passivity_drift_return = 2.0;
 };
-// passivity_damping_limit, passivity_min_damping, passivity_reservoir: names, units, ranges,
-// meanings.
+// passivity_damping_limit, passivity_min_damping, passivity_reservoir, passivity_drift_return:
+// names, units, ranges, meanings.
 const ParameterTable<PassivityParams>& passivityParameterTable();
 // Empty on success, else one line naming the first bad value and its range.
 std::string validate(const PassivityParams& params);

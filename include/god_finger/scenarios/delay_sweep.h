@@ -26,15 +26,14 @@
 //    settings (10 ms, jitter 20-50 %); stopped, it dies: the worst of them keeps 0.28 of its first
 //    second's content.
 // Metrics per trial (the worst of the ports for the grasp): lowest_energy_J, the device port's
-// observer's lowest energy (passive: >= -1e-4 J, the issue's bound); early/late_hf_rms_N, the
-// rendered force's content above about 5 Hz (the force less its 0.2 s centred moving mean) over
-// the first second after the first contact and over the run's last second; sustained, whether
-// late_hf_rms_N is over kSustainedHfRms (an oscillation that does not die); tremor_hf_rms_N, the
-// same content over the tremor's last 0.4 s (2.1-2.5 s: what the hand feels of its own tremor,
-// the link's transparency to it, against the no-link run's); peak_force_N against
-// the device's max_force; felt_stiffness_N_per_m, the slope of the rendered force against the
+// one-port observer's lowest energy (the hand's net input) (passive: >= -1e-4 J, the issue's bound);
+// early/late_hf_rms_N, the rendered force's content above about 5 Hz (the force less its 0.2 s centred moving mean)
+// over the first second after the first contact and over the run's last second; sustained, whether late_hf_rms_N is
+// over kSustainedHfRms (an oscillation that does not die); tremor_hf_rms_N, the same content over the tremor's last 0.4
+// s (2.1-2.5 s: what the hand feels of its own tremor, the link's transparency to it, against the no-link run's);
+// peak_force_N against the device's max_force; felt_stiffness_N_per_m, the slope of the rendered force against the
 // handle's position over the contact while pressing (kPress, kGrasp; 0 otherwise): transparency
-// against the zero-delay run's; damped_ticks; lost_messages.
+// against the zero-delay run's; damped_ticks; lost_messages; the two-port's margins (below).
 // Not real-time (vectors grow). Units SI.
 #pragma once
 
@@ -55,7 +54,18 @@ enum class DelayOperator
   kWorstCase,
   kHumanLike
 };
+// Where the passivity controller acts (haptics/passivity_controller.h, two_port_passivity.h):
+// kDevicePort, at the device alone, against the energy the hand put in (the package's one-port
+// controller); kTwoPort, at both ports, each against the energy the other put into the link, told
+// in packets that ride the link's messages (delayed, jittered and lost with them). Either way the
+// other form's observers count too (controller off), so that every row reports every port.
+enum class PassivityForm
+{
+  kDevicePort,
+  kTwoPort
+};
 const char* delayTaskName(DelayTask task);
+const char* passivityFormName(PassivityForm form);
 const char* delayOperatorName(DelayOperator op);
 
 // An oscillation whose force content above 5 Hz stays over the no-link run's by more than this
@@ -69,7 +79,8 @@ struct DelayTrial
   double round_trip = 0.0;       // s: both ways' delay together (half each way)
   double jitter_fraction = 0.0;  // each way's jitter's standard deviation over its delay
   double loss = 0.0;             // each message's probability of being lost
-  bool controller = true;        // the passivity controller at the device's port (its defaults)
+  bool controller = true;        // the passivity controller (its defaults), where `form` puts it
+  PassivityForm form = PassivityForm::kDevicePort;
   // false: the physics sends the coupling's force and the device renders the newest received
   // (the haptic node's local_coupling:=false; every row of delaySweep()). true: the physics sends
   // its god-object (position; the device side takes its velocity from the last two received, as
@@ -93,12 +104,21 @@ struct DelayTrialResult
   double felt_stiffness_N_per_m = 0.0;
   long damped_ticks = 0;
   long lost_messages = 0;
+  // The two-port's observers (the worst port for the grasp), J: the device's margin, the physics'
+  // E_in received less the device's E_out (>= 0: the device lets out no more than the physics
+  // gave back), and the physics' margin, the device's E_in received less the physics' E_out; their
+  // lowest over the run. max_drift_m: the largest position drift the physics side used (0 unless
+  // the two-port controller acts).
+  double device_margin_J = 0.0;
+  double physics_margin_J = 0.0;
+  double max_drift_m = 0.0;
 };
 
 DelayTrialResult runDelayTrial(const DelayTrial& trial);
 
 // The sweep of the issue: round trips 10, 30, 60, 100 ms x jitter 0, 20, 50 % x loss 0, 2 % x
-// every task x every operator x controller off and on.
+// every task x every operator x controller off, on at the device port, on at both ports (the
+// two-port rows follow the others: the first rows are as before the two-port form).
 std::vector<DelayTrial> delaySweep();
 
 // One JSON object (one line) of a trial and its result.

@@ -1,0 +1,253 @@
+// Time-domain passivity of the haptic <-> physics channel as a two-port (Ryu, Artigas and
+// Preusche 2010; Artigas et al.'s time-delay power network): the network between the hand's
+// port (the device: it takes the hand's velocity, gives a force) and the physics' port (it takes
+// the hand's position as the link delivered it, gives the coupling's force) is passive when
+// neither port lets out more energy than the other put in, counted across the delay:
+//   E_out_device(t) <= E_in_physics(t - T_back),   E_out_physics(t) <= E_in_device(t - T_forward).
+// Each port observes the power through it, split by sign into what flows into the channel
+// (E_in) and what flows out (E_out), both never decreasing; it sends its E_in to the other side
+// in time-stamped packets with the messages it already sends. A packet's figure only grows, so a
+// lost, late or reordered one leaves the newest figure received, which is never more than the
+// sender's true one: the check stays conservative on any link (RemoteEnergy keeps the largest).
+//
+// Each side's controller enforces its own inequality with the least action its causality allows:
+//  - DevicePortPassivity (impedance type, at the device: F' = F - alpha v): as the one-port
+//    controller (haptics/passivity_controller.h) but against the energy the physics gave back,
+//    not against what the hand put in: only the channel's share is damped, and energy stored in
+//    the world (a spring pressed) flows back to the hand undamped. alpha is capped at
+//    passivity_damping_limit; beyond it the push along the motion is cut (never reversed).
+//  - PhysicsPortPassivity (admittance type, at the physics: the position the physics uses, x' =
+//    x + d): where the force there would let out more than the device put in, the position is
+//    pulled back along the tick's move (toward the last one used) by just enough; d, the drift,
+//    returns toward 0 at passivity_drift_return (1/s) only as far as the energy margin allows.
+//    The force is re-evaluated at the pulled-back position (answer()'s force_at), so the check
+//    uses the force the physics actually answers with.
+// Power signs: at the device, P = -F.v (F the force rendered on the hand, v the handle's
+// velocity): > 0 flows into the channel. At the physics, P = F.v' (F the force the physics sends
+// for the hand, v' the velocity of the position it used): > 0 flows into the channel (the world
+// gives energy back), < 0 out of it (the channel pushes the world).
+//
+// Units: SI (J, N, m, m/s, s); vectors in the one frame both ports share (the sweep's axis; in
+// a package topology the world frame, in which positions and forces are power-conjugate).
+// Real-time safety: every call allocates nothing, takes no lock and logs nothing.
+#pragma once
+
+#include "god_finger/haptics/passivity_controller.h"
+
+#include <Eigen/Core>
+#include <algorithm>
+
+namespace god_finger
+{
+// One side's count of the energy through its port (J): into the channel and out of it.
+class PortEnergyObserver
+{
+ public:
+  // `power` (W, > 0 into the channel) held for `dt` (s). Non-finite: not counted.
+  void observe(double power, double dt);
+  double in() const
+  {
+    return in_;
+  }
+  double out() const
+  {
+    return out_;
+  }
+  void reset()
+  {
+    in_ = out_ = 0.0;
+  }
+
+ private:
+  double in_ = 0.0;
+  double out_ = 0.0;
+};
+
+// What one port tells the other: its E_in (J) as of `stamp` (s, the sender's clock).
+struct EnergyPacket
+{
+  double stamp = -1.0;
+  double energy_in = 0.0;
+};
+
+// The other port's E_in as the newest packets tell it: the largest figure received (packets
+// only grow; an older one arriving late changes nothing). Before any packet: 0.
+class RemoteEnergy
+{
+ public:
+  void receive(const EnergyPacket& packet);
+  double energyIn() const
+  {
+    return energy_in_;
+  }
+  double stamp() const
+  {
+    return stamp_;
+  }
+  void reset()
+  {
+    energy_in_ = 0.0;
+    stamp_ = -1.0;
+  }
+
+ private:
+  double energy_in_ = 0.0;
+  double stamp_ = -1.0;
+};
+
+// The device's side. Parameters: passivity_damping_limit (0: observer only, the force passes).
+class DevicePortPassivity
+{
+ public:
+  // `period` (s): the device loop's tick. InputError on bad parameters or period.
+  DevicePortPassivity(const PassivityParams& params, double period);
+  // The force to render this tick for the command `force` (N), the handle moving at `velocity`
+  // (m/s), against the physics' E_in received so far; |result| <= max_force.
+  Eigen::Vector3d apply(const Eigen::Vector3d& force, const Eigen::Vector3d& velocity, double max_force);
+  RemoteEnergy& remote()
+  {
+    return remote_;
+  }
+  const PortEnergyObserver& observer() const
+  {
+    return observer_;
+  }
+  // The packet to send with this tick's message.
+  EnergyPacket packet(double stamp) const
+  {
+    return {stamp, observer_.in()};
+  }
+  // J: E_in received - E_out here (>= 0: this side's inequality holds); its lowest since reset.
+  double margin() const
+  {
+    return remote_.energyIn() - observer_.out();
+  }
+  double lowestMargin() const
+  {
+    return lowest_margin_;
+  }
+  double damping() const  // N s/m: added at the last tick
+  {
+    return damping_;
+  }
+  long activeTicks() const
+  {
+    return active_ticks_;
+  }
+  void reset();
+
+ private:
+  PassivityParams params_;
+  double period_;
+  PortEnergyObserver observer_;
+  RemoteEnergy remote_;
+  double lowest_margin_ = 0.0;
+  double damping_ = 0.0;
+  long active_ticks_ = 0;
+};
+
+// The physics' side. Parameters: passivity_damping_limit (0: observer only, no drift) and
+// passivity_drift_return.
+class PhysicsPortPassivity
+{
+ public:
+  PhysicsPortPassivity(const PassivityParams& params, double period);
+  // This tick's answer for the hand seen at `position` moving at `velocity` (m, m/s): the force
+  // (N, on the hand) `force_at(x, v)` gives at the position used, which it also returns in
+  // `used_position` and `used_velocity`. The position used is the one seen plus the drift (the
+  // drift returning first); where the force there would let out more than the device put in,
+  // it is pulled back along this tick's move toward the last one used until it does not (the
+  // largest fraction of the move that fits, by bisection: kSettleIterations calls of force_at,
+  // which must depend on nothing but its arguments). Not moving lets nothing out, so a fit is
+  // always found. Call once a tick; RT-safe if force_at is.
+  template <class ForceAt>
+  Eigen::Vector3d answer(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity, ForceAt&& force_at,
+                         Eigen::Vector3d* used_position, Eigen::Vector3d* used_velocity)
+  {
+    const Eigen::Vector3d last_drift = drift_;
+    const bool acting = params_.passivity_damping_limit > 0.0 && position.allFinite() && velocity.allFinite();
+    if (acting)
+    {
+      drift_ *= 1.0 - std::min(1.0, params_.passivity_drift_return * period_);
+    }
+    const auto at = [&](double fraction, Eigen::Vector3d* x, Eigen::Vector3d* v)
+    {
+      *x = has_last_ && fraction < 1.0 ? Eigen::Vector3d(last_used_ + fraction * (position + drift_ - last_used_))
+                                       : Eigen::Vector3d(position + drift_);
+      *v = velocity + ((*x - position) - last_drift) / period_;
+      return force_at(*x, *v);
+    };
+    Eigen::Vector3d force = at(1.0, used_position, used_velocity);
+    if (acting && has_last_ && leaving(force, *used_position) > allowance())
+    {
+      double fits = 0.0;
+      double fails = 1.0;
+      for (int i = 0; i < kSettleIterations; ++i)
+      {
+        const double half = 0.5 * (fits + fails);
+        Eigen::Vector3d x, v;
+        (leaving(at(half, &x, &v), x) > allowance() ? fails : fits) = half;
+      }
+      force = at(fits, used_position, used_velocity);
+      ++active_ticks_;
+    }
+    drift_ = *used_position - position;
+    observe(*used_position, force);
+    return force;
+  }
+  static constexpr int kSettleIterations = 30;
+  RemoteEnergy& remote()
+  {
+    return remote_;
+  }
+  const PortEnergyObserver& observer() const
+  {
+    return observer_;
+  }
+  EnergyPacket packet(double stamp) const
+  {
+    return {stamp, observer_.in()};
+  }
+  double margin() const
+  {
+    return remote_.energyIn() - observer_.out();
+  }
+  double lowestMargin() const
+  {
+    return lowest_margin_;
+  }
+  // m: the drift, the position used less the position seen.
+  const Eigen::Vector3d& drift() const
+  {
+    return drift_;
+  }
+  long activeTicks() const
+  {
+    return active_ticks_;
+  }
+  void reset();
+
+ private:
+  PassivityParams params_;
+  double period_;
+  PortEnergyObserver observer_;
+  RemoteEnergy remote_;
+  Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d last_used_ = Eigen::Vector3d::Zero();  // m: the position used last tick
+  bool has_last_ = false;
+  double lowest_margin_ = 0.0;
+  long active_ticks_ = 0;
+
+  // J: what this tick may let out (a breach past is not paid by holding still).
+  double allowance() const
+  {
+    return std::max(0.0, margin());
+  }
+  // J: what answering `force` at `position` would let out of the channel this tick.
+  double leaving(const Eigen::Vector3d& force, const Eigen::Vector3d& position) const
+  {
+    return std::max(0.0, -force.dot(position - last_used_));
+  }
+  void observe(const Eigen::Vector3d& position, const Eigen::Vector3d& force);
+};
+}  // namespace god_finger

@@ -1,0 +1,192 @@
+// The two-port passivity observer and controllers (haptics/two_port_passivity.h), tick by tick:
+// the energy split by direction, packets that arrive late or never, the device side's damper
+// against the physics' returned energy, the physics side's drift out of a contact and its return.
+#include "god_finger/haptics/two_port_passivity.h"
+
+#include "god_finger/support/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace god_finger
+{
+namespace
+{
+constexpr double kPeriod = 1e-3;  // s
+
+TEST(TwoPortPassivity, TheObserverCountsEachDirectionApartAndNeverDecreases)
+{
+  PortEnergyObserver observer;
+  for (int i = 0; i < 500; ++i)
+  {
+    observer.observe(2.0, kPeriod);  // 2 W into the channel for 0.5 s
+  }
+  for (int i = 0; i < 250; ++i)
+  {
+    observer.observe(-1.0, kPeriod);  // 1 W out for 0.25 s
+  }
+  observer.observe(std::numeric_limits<double>::quiet_NaN(), kPeriod);
+  EXPECT_NEAR(observer.in(), 1.0, 1e-12);
+  EXPECT_NEAR(observer.out(), 0.25, 1e-12);
+}
+
+TEST(TwoPortPassivity, ALateOrLostPacketLeavesTheNewestLargestFigure)
+{
+  RemoteEnergy remote;
+  EXPECT_EQ(remote.energyIn(), 0.0);
+  remote.receive({0.002, 0.3});
+  remote.receive({0.001, 0.1});  // sent earlier, arrived later: it says less, and changes nothing
+  EXPECT_EQ(remote.energyIn(), 0.3);
+  EXPECT_EQ(remote.stamp(), 0.002);
+  remote.receive({0.003, std::numeric_limits<double>::infinity()});
+  EXPECT_EQ(remote.energyIn(), 0.3);
+  remote.receive({0.004, 0.5});
+  EXPECT_EQ(remote.energyIn(), 0.5);
+}
+
+TEST(TwoPortPassivity, TheDeviceLetsOutNoMoreThanThePhysicsGaveBack)
+{
+  PassivityParams params;
+  DevicePortPassivity device(params, kPeriod);
+  // The handle moves at 0.1 m/s along a 5 N push: 0.5 W would leave the channel for the hand.
+  const Eigen::Vector3d push(5.0, 0.0, 0.0);
+  const Eigen::Vector3d velocity(0.1, 0.0, 0.0);
+  // Nothing given back yet: the damper (0.5 W / 0.01 = 50 N s/m, at the cap) takes it all.
+  const Eigen::Vector3d rendered = device.apply(push, velocity, 20.0);
+  EXPECT_NEAR(rendered.x(), 0.0, 1e-12);
+  EXPECT_NEAR(device.damping(), 50.0, 1e-9);
+  EXPECT_EQ(device.observer().out(), 0.0);
+  EXPECT_GE(device.margin(), 0.0);
+  // The physics gave back 0.2 mJ: 0.4 ticks' worth passes, the rest is damped.
+  device.remote().receive({0.001, 2e-4});
+  const Eigen::Vector3d partly = device.apply(push, velocity, 20.0);
+  EXPECT_NEAR(device.observer().out(), 2e-4, 1e-12);
+  EXPECT_NEAR(partly.x(), 2.0, 1e-9);  // 2 N x 0.1 m/s x 1 ms = 0.2 mJ
+  EXPECT_NEAR(device.margin(), 0.0, 1e-15);
+  // Plenty given back: the force passes untouched; a force against the motion is never touched.
+  device.remote().receive({0.002, 1.0});
+  EXPECT_EQ(device.apply(push, velocity, 20.0), push);
+  EXPECT_EQ(device.apply(-push, velocity, 20.0), -push);
+  EXPECT_EQ(device.damping(), 0.0);
+  // Free motion: nothing to render, nothing added.
+  EXPECT_EQ(device.apply(Eigen::Vector3d::Zero(), velocity, 20.0), Eigen::Vector3d::Zero());
+}
+
+TEST(TwoPortPassivity, BeyondTheDampersCapThePushIsCutNeverReversed)
+{
+  PassivityParams params;
+  params.passivity_damping_limit = 10.0;
+  DevicePortPassivity device(params, kPeriod);
+  const Eigen::Vector3d velocity(0.1, 0.0, 0.0);
+  // 10 N along the motion, nothing given back: the capped damper takes 1 N, the cut the rest.
+  const Eigen::Vector3d rendered = device.apply(Eigen::Vector3d(10.0, 0.0, 0.0), velocity, 20.0);
+  EXPECT_NEAR(rendered.x(), 0.0, 1e-12);
+  EXPECT_GE(device.margin(), -1e-15);
+  // Off (damping limit 0): the observer counts what leaves, and the margin shows the breach.
+  params.passivity_damping_limit = 0.0;
+  DevicePortPassivity observer_only(params, kPeriod);
+  EXPECT_EQ(observer_only.apply(Eigen::Vector3d(10.0, 0.0, 0.0), velocity, 20.0).x(), 10.0);
+  EXPECT_NEAR(observer_only.lowestMargin(), -1e-3, 1e-15);
+}
+
+// A spring wall at x = 0 behind the physics port (400 N/m on the hand's side past it): the force
+// the physics answers the position it is given with.
+Eigen::Vector3d wall(const Eigen::Vector3d& x, const Eigen::Vector3d& /*v*/)
+{
+  return Eigen::Vector3d(x.x() > 0.0 ? -400.0 * x.x() : 0.0, 0.0, 0.0);
+}
+
+TEST(TwoPortPassivity, ThePhysicsTakesInNoMoreThanTheDevicePutInAndTheDriftReturns)
+{
+  PassivityParams params;
+  PhysicsPortPassivity physics(params, kPeriod);
+  Eigen::Vector3d used_x, used_v;
+  // The hand is seen moving 1 cm into the wall over 100 ticks, while the device's packets say it
+  // put in only 2 mJ (the spring would store 400 x 0.01^2 / 2 = 20 mJ).
+  physics.remote().receive({0.0, 2e-3});
+  for (int tick = 0; tick <= 100; ++tick)
+  {
+    const Eigen::Vector3d seen(-0.002 + 1.2e-4 * tick, 0.0, 0.0);
+    const Eigen::Vector3d force = physics.answer(seen, Eigen::Vector3d(0.12, 0.0, 0.0), wall, &used_x, &used_v);
+    EXPECT_EQ(force, wall(used_x, used_v));
+    EXPECT_GE(physics.margin(), 0.0);
+  }
+  // The spring holds what went in, counted with each tick's end force (an upper bound on the
+  // spring's work): at 400 N/m, 2 mJ is a depth of sqrt(2 x 2e-3 / 400) = 3.16 mm, less a tick.
+  EXPECT_NEAR(used_x.x(), std::sqrt(2.0 * 2e-3 / 400.0), 1.2e-4);
+  EXPECT_LT(used_x.x(), std::sqrt(2.0 * 2e-3 / 400.0));
+  EXPECT_NEAR(physics.observer().out(), 2e-3, 1e-9);
+  EXPECT_NEAR(physics.drift().x(), used_x.x() - 0.01, 1e-15);  // the 1 cm seen less what was used
+  EXPECT_LT(physics.drift().x(), -0.006);
+  const double drift = physics.drift().x();
+  // The device puts in 20 mJ more: the drift returns, 2 /s x 1 ms of it a tick.
+  physics.remote().receive({0.2, 0.022});
+  const Eigen::Vector3d seen(0.01, 0.0, 0.0);
+  physics.answer(seen, Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+  EXPECT_NEAR(physics.drift().x(), drift * (1.0 - 2.0 * kPeriod), 1e-12);
+  EXPECT_NEAR(used_v.x(), -2.0 * drift, 1e-9);  // (d' - d) / dt
+  for (int tick = 0; tick < 6000; ++tick)       // 0.998^6000: 6e-6 of it is left
+  {
+    physics.answer(seen, Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+  }
+  EXPECT_NEAR(physics.drift().x(), 0.0, 1e-6);
+  EXPECT_NEAR(used_x.x(), 0.01, 1e-6);
+  EXPECT_GE(physics.margin(), 0.0);
+}
+
+TEST(TwoPortPassivity, AJumpDeepIntoAContactIsHeldToWhatTheDevicePutIn)
+{
+  // A late burst of messages: the hand seen 2 mm out, then 15 mm in at once (jitter). With 1 mJ
+  // put in, the physics lets the spring take 1 mJ and no more.
+  PassivityParams params;
+  PhysicsPortPassivity physics(params, kPeriod);
+  Eigen::Vector3d used_x, used_v;
+  physics.remote().receive({0.0, 1e-3});
+  physics.answer(Eigen::Vector3d(-0.002, 0, 0), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+  physics.answer(Eigen::Vector3d(0.015, 0, 0), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+  EXPECT_GE(physics.margin(), 0.0);
+  EXPECT_NEAR(physics.observer().out(), 1e-3, 1e-9);
+  // The end force times the move from -2 mm: 400 x (x + 0.002) = 1 mJ at x = 0.87 mm.
+  EXPECT_NEAR(400.0 * used_x.x() * (used_x.x() + 0.002), 1e-3, 1e-9);
+  EXPECT_NEAR(used_x.x(), 0.5 * (std::sqrt(4e-6 + 1e-5) - 0.002), 1e-9);
+  // Off, it takes the whole jump: 400 x 0.015 x 0.017 = 102 mJ out, 101 mJ beyond what came in.
+  params.passivity_damping_limit = 0.0;
+  PhysicsPortPassivity off(params, kPeriod);
+  off.remote().receive({0.0, 1e-3});
+  off.answer(Eigen::Vector3d(-0.002, 0, 0), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+  off.answer(Eigen::Vector3d(0.015, 0, 0), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+  EXPECT_EQ(used_x.x(), 0.015);
+  EXPECT_NEAR(off.lowestMargin(), 1e-3 - 0.102, 1e-12);
+}
+
+TEST(TwoPortPassivity, WithTheControllerOffThePhysicsIsGivenThePositionSeen)
+{
+  PassivityParams params;
+  params.passivity_damping_limit = 0.0;
+  PhysicsPortPassivity physics(params, kPeriod);
+  Eigen::Vector3d used_x, used_v;
+  for (int tick = 0; tick <= 100; ++tick)
+  {
+    const Eigen::Vector3d seen(1e-4 * tick, 0.0, 0.0);
+    physics.answer(seen, Eigen::Vector3d(0.1, 0.0, 0.0), wall, &used_x, &used_v);
+    EXPECT_EQ(used_x, seen);
+    EXPECT_EQ(used_v, Eigen::Vector3d(0.1, 0.0, 0.0));
+  }
+  // 1 cm into the wall, the force taken at each tick's end: 400 x sum of (k 1e-4) 1e-4, k to 100.
+  EXPECT_NEAR(physics.observer().out(), 400.0 * 1e-8 * 5050.0, 1e-12);
+  EXPECT_LT(physics.lowestMargin(), -0.02);
+}
+
+TEST(TwoPortPassivity, BadParametersOrPeriodsAreRefused)
+{
+  PassivityParams params;
+  params.passivity_drift_return = -1.0;
+  EXPECT_THROW(PhysicsPortPassivity(params, kPeriod), InputError);
+  EXPECT_THROW(DevicePortPassivity(params, kPeriod), InputError);
+  EXPECT_THROW(DevicePortPassivity(PassivityParams{}, 0.0), InputError);
+  EXPECT_THROW(PhysicsPortPassivity(PassivityParams{}, std::nan("")), InputError);
+}
+}  // namespace
+}  // namespace god_finger
