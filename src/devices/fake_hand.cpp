@@ -17,6 +17,18 @@ constexpr double kRelease = 4.5;     // s
 constexpr double kOpen = 4.8;        // s
 constexpr double kLowered = 5.8;     // s
 constexpr double kSpreadDeg = 35.0;  // between neighbouring fingers
+constexpr double kTurned = 4.2;      // s: the wrist's turn done
+constexpr int kTurnSteps = 8;        // waypoints along the turn's arc (0.06 rad apart at 0.5 rad)
+
+// The wrist's turn (rad) about the grasp's axis at the turn's k-th of kTurnSteps waypoints.
+double turnAt(const FakeHandParams& params, int k)
+{
+  return params.wrist_turn * static_cast<double>(k) / kTurnSteps;
+}
+double turnTime(int k)
+{
+  return kLiftEnd + (kTurned - kLiftEnd) * static_cast<double>(k) / kTurnSteps;
+}
 
 class FakeHand : public HandSource
 {
@@ -24,7 +36,7 @@ class FakeHand : public HandSource
   explicit FakeHand(const FakeHandParams& params)
       : names_(fakeHandFingerNames(params.fingers)),
         paths_(fakeHandPaths(params)),
-        orientations_(fakeHandOrientations(params)),
+        orientations_(fakeHandOrientationPaths(params)),
         cycle_(params.cycle)
   {
   }
@@ -62,7 +74,7 @@ class FakeHand : public HandSource
       if (!orientations_.empty())
       {
         reading.has_orientation = true;
-        reading.orientation = orientations_[i];
+        reading.orientation = orientations_[i].at(t);
       }
     }
   }
@@ -70,7 +82,7 @@ class FakeHand : public HandSource
  private:
   std::vector<std::string> names_;
   std::vector<WaypointPath> paths_;
-  std::vector<Eigen::Quaterniond> orientations_;
+  std::vector<OrientationPath> orientations_;
   double start_ = NAN;
   double cycle_;
 };
@@ -111,6 +123,10 @@ const ParameterTable<FakeHandParams>& fakeHandParameterTable()
       realRow<P>("finger_pitch", "rad", closed(0.0, 1.2),
                  "pulp_in: each finger's body leans out from the wall by this (0: along it)",
                  [](P& p) -> double& { return p.finger_pitch; }),
+      realRow<P>("wrist_turn", "rad", closed(-1.5, 1.5),
+                 "held up, the hand turns about the grasp's axis by this (counter-clockwise from above) and "
+                 "back while it lowers (0: no turn)",
+                 [](P& p) -> double& { return p.wrist_turn; }),
   };
   return table;
 }
@@ -166,13 +182,33 @@ std::vector<WaypointPath> fakeHandPaths(const FakeHandParams& params)
     const Eigen::Vector3d out(std::cos(angle), std::sin(angle), 0.0);
     const Eigen::Vector3d open = params.grasp_center + params.open_radius * out;
     const Eigen::Vector3d shut = params.grasp_center + closed * out;
-    return WaypointPath({{0.0, open},
-                         {kClosed, shut},
-                         {kLiftStart, shut},
-                         {kLiftEnd, shut + up},
-                         {kRelease, shut + up},
-                         {kOpen, open + up},
-                         {kLowered, open}});
+    if (params.wrist_turn == 0.0)
+    {
+      return WaypointPath({{0.0, open},
+                           {kClosed, shut},
+                           {kLiftStart, shut},
+                           {kLiftEnd, shut + up},
+                           {kRelease, shut + up},
+                           {kOpen, open + up},
+                           {kLowered, open}});
+    }
+    // Turned about the axis by `turn`, at `radius` from it.
+    const auto turned = [&](double turn, double radius) -> Eigen::Vector3d
+    { return params.grasp_center + radius * Eigen::Vector3d(std::cos(angle + turn), std::sin(angle + turn), 0.0); };
+    std::vector<Waypoint> waypoints = {{0.0, open}, {kClosed, shut}, {kLiftStart, shut}};
+    for (int k = 0; k <= kTurnSteps; ++k)
+    {
+      waypoints.push_back({turnTime(k), turned(turnAt(params, k), closed) + up});
+    }
+    waypoints.push_back({kRelease, turned(params.wrist_turn, closed) + up});
+    waypoints.push_back({kOpen, turned(params.wrist_turn, params.open_radius) + up});
+    for (int k = kTurnSteps - 1; k >= 0; --k)  // down and back along the open arc
+    {
+      const double fraction = 1.0 - static_cast<double>(k) / kTurnSteps;
+      waypoints.push_back({kOpen + (kLowered - kOpen) * fraction,
+                           turned(turnAt(params, k), params.open_radius) + (1.0 - fraction) * up});
+    }
+    return WaypointPath(waypoints);
   };
   paths.push_back(path(0.5 * pi, thumb_closed));
   for (double angle : angles)
@@ -205,6 +241,30 @@ std::vector<Eigen::Quaterniond> fakeHandOrientations(const FakeHandParams& param
     orientations.emplace_back(frame);
   }
   return orientations;
+}
+
+std::vector<OrientationPath> fakeHandOrientationPaths(const FakeHandParams& params)
+{
+  std::vector<OrientationPath> paths;
+  for (const Eigen::Quaterniond& start : fakeHandOrientations(params))
+  {
+    if (params.wrist_turn == 0.0)
+    {
+      paths.emplace_back(std::vector<OrientationWaypoint>{{0.0, start}});
+      continue;
+    }
+    const auto turned = [&](double turn) -> Eigen::Quaterniond
+    { return Eigen::Quaterniond(Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitZ())) * start; };
+    std::vector<OrientationWaypoint> waypoints = {{kLiftEnd, start}};
+    for (int k = 1; k <= kTurnSteps; ++k)
+    {
+      waypoints.push_back({turnTime(k), turned(turnAt(params, k))});
+    }
+    waypoints.push_back({kOpen, turned(params.wrist_turn)});
+    waypoints.push_back({kLowered, start});
+    paths.emplace_back(waypoints);
+  }
+  return paths;
 }
 
 std::shared_ptr<HandSource> makeFakeHand(const FakeHandParams& params)

@@ -112,6 +112,45 @@ TEST(HandDevices, TheFakeHandsFingersHoldThePulpTowardsTheAxis)
   EXPECT_NE(errorOf("fake_hand", bad).find("/hand/orientation"), std::string::npos) << errorOf("fake_hand", bad);
 }
 
+// The wrist turn: held up, every fingertip goes round the grasp's axis on its arc (the same
+// distance from it throughout) and its orientation turns with it, by wrist_turn at 4.2 s; it is
+// back where it started, unturned, at 5.8 s.
+TEST(HandDevices, TheFakeHandsWristTurnsEveryFingerAboutTheAxis)
+{
+  MapParameterSource params("/hand/");
+  params.set("wrist_turn", ParameterValue::of(0.5));
+  DeviceContext context(params, kMaxForce);
+  auto hand = makeDevice(findDeviceBackend("fake_hand", "backend"), context);
+  std::vector<DeviceFinger> fingers = hand->fingers();
+  hand->setScriptStart(0.0);
+  const Eigen::Vector3d axis(0.0, 0.0, 0.05 + 0.1);  // grasp_center, lifted by `lift`
+  const Eigen::AngleAxisd turn(0.5, Eigen::Vector3d::UnitZ());
+  for (DeviceFinger& finger : fingers)
+  {
+    finger.device->start();
+    const DeviceReading start = finger.device->update(0.0, Eigen::Vector3d::Zero());
+    const DeviceReading held = finger.device->update(3.5, Eigen::Vector3d::Zero());
+    const double radius = (held.position - axis).head<2>().norm();
+    for (double t = 3.5; t <= 4.2; t += 0.01)
+    {
+      const DeviceReading moving = finger.device->update(t, Eigen::Vector3d::Zero());
+      EXPECT_NEAR((moving.position - axis).head<2>().norm(), radius, 2e-5) << t;  // 8 chords of the arc
+      EXPECT_NEAR(moving.position.z(), axis.z(), 1e-12);
+    }
+    const DeviceReading turned = finger.device->update(4.2, Eigen::Vector3d::Zero());
+    EXPECT_LT((turned.position - (axis + turn * (held.position - axis))).norm(), 1e-12);
+    EXPECT_LT(turned.orientation.angularDistance(Eigen::Quaterniond(turn) * held.orientation), 1e-12);
+    EXPECT_LT(finger.device->update(4.5, Eigen::Vector3d::Zero()).orientation.angularDistance(turned.orientation),
+              1e-12);
+    const DeviceReading lowered = finger.device->update(5.8, Eigen::Vector3d::Zero());
+    EXPECT_LT((lowered.position - start.position).norm(), 1e-12);
+    EXPECT_LT(lowered.orientation.angularDistance(start.orientation), 1e-12);
+  }
+  MapParameterSource bad("/hand/");
+  bad.set("wrist_turn", ParameterValue::of(2.0));
+  EXPECT_NE(errorOf("fake_hand", bad).find("/hand/wrist_turn"), std::string::npos) << errorOf("fake_hand", bad);
+}
+
 TEST(HandDevices, CheckTheirParameters)
 {
   MapParameterSource five("/hand/");

@@ -10,6 +10,10 @@
 // mug is not shoved); 1.5 to 3.5 lift by `lift`; hold until 4.5; open back to open_radius by
 // 4.8; back down to the start by 5.8; stays there, or with `cycle` > 0 grasps again every
 // `cycle` seconds. Deterministic: a pure function of the script time.
+// Wrist turn (`wrist_turn`, rad, 0: none): held up, the whole hand turns about the grasp's axis
+// (vertical, through grasp_center lifted) by wrist_turn from 3.5 to 4.2 s (positive: counter-
+// clockwise seen from above), fingertips on the arc and each finger's orientation turned with
+// them; it holds turned until 4.5, opens turned, and turns back while it goes down (4.8 to 5.8).
 //
 // Orientations (`orientation` pulp_in, the default): every fingertip is an oriented (6-DOF)
 // finger (physics/oriented_finger.h) held the way a hand holds a mug: its pulp (z) towards the
@@ -19,6 +23,7 @@
 #pragma once
 
 #include "god_finger/devices/hand_device.h"
+#include "god_finger/haptics/orientation_path.h"
 #include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/support/parameter_source.h"
 #include "god_finger/support/parameter_table.h"
@@ -42,6 +47,7 @@ struct FakeHandParams
   double cycle = 0.0;           // s: 0 grasps once; else again every cycle s (>= 5.8, the grasp's length)
   bool oriented = true;         // `orientation`: pulp_in (true) or none
   double finger_pitch = 0.5;    // rad: the finger's body's lean out from the wall (0: along it)
+  double wrist_turn = 0.0;      // rad: the held hand's turn about the grasp's axis (0: none)
 };
 
 // The numeric parameters' one table (names, units, ranges, meanings; defaults: the struct's
@@ -55,9 +61,12 @@ FakeHandParams readFakeHandParams(const ParameterSource& source);
 // Each finger's path (thumb first), in script time; names thumb, index, middle, ring, little.
 std::vector<std::string> fakeHandFingerNames(int fingers);
 std::vector<WaypointPath> fakeHandPaths(const FakeHandParams& params);
-// Each finger's orientation (thumb first; the finger frame in the device frame, fixed through the
-// script); empty when `oriented` is false.
+// Each finger's orientation at the script's start (thumb first; the finger frame in the device
+// frame); empty when `oriented` is false.
 std::vector<Eigen::Quaterniond> fakeHandOrientations(const FakeHandParams& params);
+// Each finger's orientation through the script (the start's, turned with the wrist); empty when
+// `oriented` is false.
+std::vector<OrientationPath> fakeHandOrientationPaths(const FakeHandParams& params);
 
 std::shared_ptr<HandSource> makeFakeHand(const FakeHandParams& params);
 }  // namespace god_finger
