@@ -69,6 +69,13 @@ void moveSurface(btCollisionWorld* world, SceneBody* body)
     world->updateSingleAabb(body->rigid.get());
   }
 }
+// The surface placed where the volume is, outside a step (made, reset, rebuilt): it has not
+// moved, so its previous vertices are its current ones (materialMotion() reads no motion).
+void placeSurface(btCollisionWorld* world, SceneBody* body)
+{
+  moveSurface(world, body);
+  body->soft->previous_vertices = body->soft->vertices;
+}
 // A resting body's Bullet body is kinematic: Bullet takes its velocity from its transform's
 // change each step (the volume's mean motion), so the fingers' contacts see the surface move
 // with it.
@@ -97,8 +104,7 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
     if (volume.resting)
     {
       makeKinematic(body->rigid.get());
-      moveSurface(nullptr, body);
-      volume.previous_vertices = volume.vertices;
+      placeSurface(nullptr, body);
     }
     return;
   }
@@ -154,8 +160,7 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
   volume.vertices.resize(volume.node_of_vertex.size());
   auto triangles = std::make_shared<std::vector<Eigen::Vector3i>>(body->walk->triangles());
   volume.triangles = std::move(triangles);
-  moveSurface(nullptr, body);
-  volume.previous_vertices = volume.vertices;
+  placeSurface(nullptr, body);
 }
 
 void addSoftContactLoad(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, bool as_pad,
@@ -238,8 +243,7 @@ void resetSoftVolume(btCollisionWorld* world, SceneBody* body)
 {
   body->soft->elastic->restAt(body->soft->settled);
   body->soft->loads.setZero();
-  moveSurface(world, body);
-  body->soft->previous_vertices = body->soft->vertices;
+  placeSurface(world, body);
 }
 
 void snapshotSoftSurface(const SceneBody& body, int index, SoftSurfaceState* out)
