@@ -36,7 +36,9 @@ class FakeHand : public HandSource
   explicit FakeHand(const FakeHandParams& params)
       : names_(fakeHandFingerNames(params.fingers)),
         paths_(fakeHandPaths(params)),
+        start_orientations_(fakeHandOrientations(params)),
         orientations_(fakeHandOrientationPaths(params)),
+        turning_(params.wrist_turn != 0.0),
         cycle_(params.cycle)
   {
   }
@@ -71,10 +73,11 @@ class FakeHand : public HandSource
       reading.velocity = (reading.position - paths_[i].at(t - dt)) / dt;
       reading.buttons = 0;
       reading.tracked = true;
-      if (!orientations_.empty())
+      if (!start_orientations_.empty())
       {
         reading.has_orientation = true;
-        reading.orientation = orientations_[i].at(t);
+        // Unturned, the orientation as made (a path's would be normalised: a last bit apart).
+        reading.orientation = turning_ ? orientations_[i].at(t) : start_orientations_[i];
       }
     }
   }
@@ -82,7 +85,9 @@ class FakeHand : public HandSource
  private:
   std::vector<std::string> names_;
   std::vector<WaypointPath> paths_;
+  std::vector<Eigen::Quaterniond> start_orientations_;
   std::vector<OrientationPath> orientations_;
+  bool turning_;
   double start_ = NAN;
   double cycle_;
 };

@@ -236,7 +236,9 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
   }
   PassivityParams observer_only = passivity;
   observer_only.passivity_damping_limit = 0.0;
-  const bool two_port = trial.form == PassivityForm::kTwoPort;
+  // The two-port form acts on forwarded forces only: with the local coupling the link carries
+  // positions both ways, and its physics side has no force to answer with (delay_sweep.h).
+  const bool two_port = trial.form == PassivityForm::kTwoPort && !trial.local_coupling;
   const int port_count = trial.task == DelayTask::kGrasp ? 2 : 1;
   std::vector<Port> ports;
   ports.reserve(port_count);

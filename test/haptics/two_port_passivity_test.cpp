@@ -179,6 +179,24 @@ TEST(TwoPortPassivity, WithTheControllerOffThePhysicsIsGivenThePositionSeen)
   EXPECT_LT(physics.lowestMargin(), -0.02);
 }
 
+TEST(TwoPortPassivity, ANonFinitePositionOrVelocityIsPassedOnAndForgotten)
+{
+  PassivityParams params;
+  PhysicsPortPassivity physics(params, kPeriod);
+  Eigen::Vector3d used_x, used_v;
+  physics.remote().receive({0.0, 1e-3});
+  physics.answer(Eigen::Vector3d(-0.002, 0, 0), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+  physics.answer(Eigen::Vector3d::Constant(NAN), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+  EXPECT_TRUE(physics.drift().allFinite());
+  EXPECT_EQ(physics.observer().out(), 0.0);
+  // Then the same jump as above, a velocity NaN: held to the 1 mJ, the drift finite.
+  physics.answer(Eigen::Vector3d(0.015, 0, 0), Eigen::Vector3d::Constant(NAN), wall, &used_x, &used_v);
+  EXPECT_TRUE(used_x.allFinite());
+  EXPECT_TRUE(used_v.allFinite());
+  EXPECT_NEAR(physics.observer().out(), 1e-3, 1e-9);
+  EXPECT_TRUE(physics.drift().allFinite());
+}
+
 TEST(TwoPortPassivity, BadParametersOrPeriodsAreRefused)
 {
   PassivityParams params;

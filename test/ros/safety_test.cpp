@@ -325,6 +325,15 @@ TEST_F(Safety, DriverRampsToZeroWhenThePhysicsDiesAndResumesAfterItsRespawn)
         return g_first_force_stamp > 0.0 && g_latest_stamp > g_first_force_stamp + kSoftStart + 0.1;
       },
       10.0, "the driver's soft start to end");
+  // And the press under way, so that the hold holds a force worth judging (on a loaded machine
+  // the script can still be on its way down when the soft start ends: 0.45 N was seen).
+  waitFor(
+      []
+      {
+        std::lock_guard<std::mutex> lock(g_mutex);
+        return g_applied_force > 1.0;
+      },
+      20.0, "the driver to render more than 1 N");
   const double killed_at = ros::Time::now().toSec();  // the driver's stamps' clock (wall)
   {
     std::lock_guard<std::mutex> lock(g_mutex);

@@ -36,6 +36,8 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace god_finger
 {
@@ -165,16 +167,20 @@ class PhysicsPortPassivity
                          Eigen::Vector3d* used_position, Eigen::Vector3d* used_velocity)
   {
     const Eigen::Vector3d last_drift = drift_;
-    const bool acting = params_.passivity_damping_limit > 0.0 && position.allFinite() && velocity.allFinite();
+    // A non-finite position is passed on untouched and leaves the drift as it was; a non-finite
+    // velocity is taken as still (the move's own velocity is added below).
+    const bool finite = position.allFinite();
+    const Eigen::Vector3d seen_velocity = velocity.allFinite() ? velocity : Eigen::Vector3d::Zero();
+    const bool acting = params_.passivity_damping_limit > 0.0 && finite;
     if (acting)
     {
       drift_ *= 1.0 - std::min(1.0, params_.passivity_drift_return * period_);
     }
-    const auto at = [&](double fraction, Eigen::Vector3d* x, Eigen::Vector3d* v)
+    const auto at = [&](double fraction, Eigen::Vector3d* x, Eigen::Vector3d* v) -> Eigen::Vector3d
     {
       *x = has_last_ && fraction < 1.0 ? Eigen::Vector3d(last_used_ + fraction * (position + drift_ - last_used_))
                                        : Eigen::Vector3d(position + drift_);
-      *v = velocity + ((*x - position) - last_drift) / period_;
+      *v = seen_velocity + ((*x - position) - last_drift) / period_;
       return force_at(*x, *v);
     };
     Eigen::Vector3d force = at(1.0, used_position, used_velocity);
@@ -191,7 +197,10 @@ class PhysicsPortPassivity
       force = at(fits, used_position, used_velocity);
       ++active_ticks_;
     }
-    drift_ = *used_position - position;
+    if (finite)
+    {
+      drift_ = *used_position - position;
+    }
     observe(*used_position, force);
     return force;
   }
@@ -243,10 +252,12 @@ class PhysicsPortPassivity
   {
     return std::max(0.0, margin());
   }
-  // J: what answering `force` at `position` would let out of the channel this tick.
+  // J: what answering `force` at `position` would let out of the channel this tick (a
+  // non-finite force: everything, so that the bisection moves back).
   double leaving(const Eigen::Vector3d& force, const Eigen::Vector3d& position) const
   {
-    return std::max(0.0, -force.dot(position - last_used_));
+    const double out = -force.dot(position - last_used_);
+    return std::isfinite(out) ? std::max(0.0, out) : std::numeric_limits<double>::infinity();
   }
   void observe(const Eigen::Vector3d& position, const Eigen::Vector3d& force);
 };

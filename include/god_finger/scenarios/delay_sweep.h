@@ -59,6 +59,8 @@ enum class DelayOperator
 // controller); kTwoPort, at both ports, each against the energy the other put into the link, told
 // in packets that ride the link's messages (delayed, jittered and lost with them). Either way the
 // other form's observers count too (controller off), so that every row reports every port.
+// kTwoPort acts on forwarded forces only (local_coupling false); with the local coupling it is
+// the device port's form.
 enum class PassivityForm
 {
   kDevicePort,
