@@ -99,17 +99,14 @@ Eigen::Vector3d DevicePortPassivity::apply(const Eigen::Vector3d& force, const E
     rendered *= max_force / length;
   }
   observer_.observe(-rendered.dot(velocity), period_);
-  lowest_margin_ = std::min(lowest_margin_, margin());
+  noteMargin();
   return rendered;
 }
 
 void DevicePortPassivity::reset()
 {
-  observer_.reset();
-  remote_.reset();
-  lowest_margin_ = 0.0;
+  resetSide();
   damping_ = 0.0;
-  active_ticks_ = 0;
 }
 
 PhysicsPortPassivity::PhysicsPortPassivity(const PassivityParams& params, double period)
@@ -131,17 +128,14 @@ void PhysicsPortPassivity::observe(const Eigen::Vector3d& position, const Eigen:
   }
   last_used_ = position;
   has_last_ = true;
-  lowest_margin_ = std::min(lowest_margin_, margin());
+  noteMargin();
 }
 
 void PhysicsPortPassivity::reset()
 {
-  observer_.reset();
-  remote_.reset();
+  resetSide();
   drift_.setZero();
   last_used_.setZero();
   has_last_ = false;
-  lowest_margin_ = 0.0;
-  active_ticks_ = 0;
 }
 }  // namespace god_finger

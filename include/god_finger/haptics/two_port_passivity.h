@@ -97,15 +97,11 @@ class RemoteEnergy
   double stamp_ = -1.0;
 };
 
-// The device's side. Parameters: passivity_damping_limit (0: observer only, the force passes).
-class DevicePortPassivity
+// What each side keeps and tells: its observer, the other side's energy in as received, its
+// margin's lowest and the ticks its controller acted at.
+class PortSide
 {
  public:
-  // `period` (s): the device loop's tick. InputError on bad parameters or period.
-  DevicePortPassivity(const PassivityParams& params, double period);
-  // The force to render this tick for the command `force` (N), the handle moving at `velocity`
-  // (m/s), against the physics' E_in received so far; |result| <= max_force.
-  Eigen::Vector3d apply(const Eigen::Vector3d& force, const Eigen::Vector3d& velocity, double max_force);
   RemoteEnergy& remote()
   {
     return remote_;
@@ -128,29 +124,53 @@ class DevicePortPassivity
   {
     return lowest_margin_;
   }
+  long activeTicks() const  // ticks the controller acted at, since the last reset
+  {
+    return active_ticks_;
+  }
+
+ protected:
+  void noteMargin()
+  {
+    lowest_margin_ = std::min(lowest_margin_, margin());
+  }
+  void resetSide()
+  {
+    observer_.reset();
+    remote_.reset();
+    lowest_margin_ = 0.0;
+    active_ticks_ = 0;
+  }
+  PortEnergyObserver observer_;
+  RemoteEnergy remote_;
+  double lowest_margin_ = 0.0;
+  long active_ticks_ = 0;
+};
+
+// The device's side. Parameters: passivity_damping_limit (0: observer only, the force passes).
+class DevicePortPassivity : public PortSide
+{
+ public:
+  // `period` (s): the device loop's tick. InputError on bad parameters or period.
+  DevicePortPassivity(const PassivityParams& params, double period);
+  // The force to render this tick for the command `force` (N), the handle moving at `velocity`
+  // (m/s), against the physics' E_in received so far; |result| <= max_force.
+  Eigen::Vector3d apply(const Eigen::Vector3d& force, const Eigen::Vector3d& velocity, double max_force);
   double damping() const  // N s/m: added at the last tick
   {
     return damping_;
-  }
-  long activeTicks() const
-  {
-    return active_ticks_;
   }
   void reset();
 
  private:
   PassivityParams params_;
   double period_;
-  PortEnergyObserver observer_;
-  RemoteEnergy remote_;
-  double lowest_margin_ = 0.0;
   double damping_ = 0.0;
-  long active_ticks_ = 0;
 };
 
 // The physics' side. Parameters: passivity_damping_limit (0: observer only, no drift) and
 // passivity_drift_return.
-class PhysicsPortPassivity
+class PhysicsPortPassivity : public PortSide
 {
  public:
   PhysicsPortPassivity(const PassivityParams& params, double period);
@@ -205,47 +225,19 @@ class PhysicsPortPassivity
     return force;
   }
   static constexpr int kSettleIterations = 30;
-  RemoteEnergy& remote()
-  {
-    return remote_;
-  }
-  const PortEnergyObserver& observer() const
-  {
-    return observer_;
-  }
-  EnergyPacket packet(double stamp) const
-  {
-    return {stamp, observer_.in()};
-  }
-  double margin() const
-  {
-    return remote_.energyIn() - observer_.out();
-  }
-  double lowestMargin() const
-  {
-    return lowest_margin_;
-  }
   // m: the drift, the position used less the position seen.
   const Eigen::Vector3d& drift() const
   {
     return drift_;
-  }
-  long activeTicks() const
-  {
-    return active_ticks_;
   }
   void reset();
 
  private:
   PassivityParams params_;
   double period_;
-  PortEnergyObserver observer_;
-  RemoteEnergy remote_;
   Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d last_used_ = Eigen::Vector3d::Zero();  // m: the position used last tick
   bool has_last_ = false;
-  double lowest_margin_ = 0.0;
-  long active_ticks_ = 0;
 
   // J: what this tick may let out (a breach past is not paid by holding still).
   double allowance() const
