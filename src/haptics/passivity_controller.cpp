@@ -105,6 +105,17 @@ Eigen::Vector3d PassivityController::apply(const Eigen::Vector3d& force, const E
   return rendered;
 }
 
+void PassivityController::reset(double stored)
+{
+  reset();
+  if (stored > 0.0 && std::isfinite(stored))
+  {
+    energy_ = stored;
+    lowest_energy_ = stored;
+    bank_ = std::min(params_.passivity_reservoir, stored);
+  }
+}
+
 void PassivityController::reset()
 {
   bank_ = 0.0;

@@ -218,6 +218,10 @@ struct ServoNode::Impl
     add("stale_ticks", std::to_string(counters.stale_ticks.load()));
     add("physics_steps", std::to_string(counters.physics_steps.load()));
     add("skipped_targets", std::to_string(counters.skipped_targets.load()));
+    // The hold's passivity observer and controller (runtime/multirate_render.h).
+    add("hold_damped_ticks", std::to_string(counters.hold_damped_ticks.load()));
+    add("hold_dissipated_J", jsonNumber(counters.hold_dissipated.load()));
+    add("hold_lowest_energy_J", jsonNumber(counters.hold_lowest_energy.load()));
     add("contact_model", contactModelName(static_cast<ContactModel>(counters.model.load())));
     add("pad_solver", padSolverName(static_cast<PadSolver>(counters.pad_solver.load())));
     add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)

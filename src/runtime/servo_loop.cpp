@@ -106,6 +106,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
       throw InputError("interface '" + interface.name + "' has no device");
     }
     guards_.emplace_back(interface.profile.coupling.max_force, interface.profile.guard);
+    hold_passivity_.emplace_back(holdPassivityParams(interface.profile.passivity), 1.0 / params_.rate);
     inputs_.emplace_back(interface.profile, interface.mapping);
   }
   counters_.model = static_cast<int>(world_->contactModel());
@@ -438,6 +439,11 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
     out->proxies[i].interface_position = state.interface_position;
     out->proxies[i].contact_stiffness = state.contact_stiffness;
     out->proxies[i].contact_normal = state.contact_normal;
+    out->proxies[i].plane_count = std::min(state.contact_count, MultirateStep::kMaxPlanes);
+    for (int c = 0; c < out->proxies[i].plane_count; ++c)
+    {
+      out->proxies[i].plane_normals[c] = state.contacts[c].normal;
+    }
   }
   if (frame.tick >= next_snapshot_tick_)
   {
@@ -488,8 +494,11 @@ void ServoLoop::decide(long tick, double time, double period_us)
     const long lag = tick - latest_.tick;
     const MultirateDevice device{render.target, render.previous_target, render.velocity, render.previous_velocity};
     const MultirateStep step{proxy.proxy_position,     proxy.user_force,        lag,
-                             proxy.interface_position, proxy.contact_stiffness, proxy.contact_normal};
-    if (renderMultirate(couplings_[i], params_.recovery_periods, device, step, &render.multirate))
+                             proxy.interface_position, proxy.contact_stiffness, proxy.contact_normal,
+                             proxy.plane_count,        proxy.plane_normals};
+    PassivityController& hold = hold_passivity_[i];
+    const double dissipated_before = render.multirate.exact ? 0.0 : hold.dissipated();
+    if (renderMultirate(couplings_[i], params_.recovery_periods, device, step, &render.multirate, &hold))
     {
       render.stale = false;
       render.ready_at = latest_.done_at;
@@ -499,6 +508,12 @@ void ServoLoop::decide(long tick, double time, double period_us)
       render.stale = true;
       render.ready_at = steadySeconds();
       ++counters_.stale_ticks;
+      if (hold.damping() > 0.0 || hold.cut() > 0.0)
+      {
+        ++counters_.hold_damped_ticks;
+      }
+      counters_.hold_dissipated.store(counters_.hold_dissipated.load() + hold.dissipated() - dissipated_before);
+      counters_.hold_lowest_energy.store(std::min(counters_.hold_lowest_energy.load(), hold.lowestEnergy()));
     }
     const Eigen::Vector3d force = render.multirate.force;  // N, world, on the hand
     // The torque: the last completed step's, in the device frame, on the profile's axes only.

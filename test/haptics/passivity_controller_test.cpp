@@ -193,6 +193,34 @@ TEST(PassivityController, WhilePushingTheLoopMustDissipateAsTheLeastDamperWouldA
   EXPECT_NEAR(controller.energy(), 0.8 * 0.2 * 1e-3, 1e-15);  // by the damper, from the hand
 }
 
+// Started from stored energy (a stretched spring the loop behind the port already holds, the
+// multi-rate hold's start): a push along the motion is let through until the hand has had that
+// much, then cut; the observer never goes below zero.
+TEST(PassivityController, StartedFromStoredEnergyGivesBackNoMoreThanThat)
+{
+  PassivityParams params;
+  params.passivity_min_damping = 0.0;
+  PassivityController controller(params, 1e-3);
+  controller.reset(0.002);  // J
+  EXPECT_EQ(controller.energy(), 0.002);
+  EXPECT_EQ(controller.bank(), 0.002);
+  const Eigen::Vector3d velocity(0.0, 0.0, 0.1);  // m/s: the hand moving along the push
+  double given = 0.0;                             // J
+  int whole = 0;                                  // ticks the 4 N push went through unchanged
+  for (int tick = 0; tick < 100; ++tick)
+  {
+    const Eigen::Vector3d rendered = controller.apply(Eigen::Vector3d(0.0, 0.0, 4.0), velocity, 10.0);
+    given += rendered.dot(velocity) * 1e-3;
+    whole += rendered.z() == 4.0 ? 1 : 0;
+  }
+  EXPECT_EQ(whole, 5);  // 4 N x 0.1 mm a tick = 0.4 mJ: five ticks of the 2 mJ stored
+  EXPECT_NEAR(given, 0.002, 1e-12);
+  EXPECT_GE(controller.lowestEnergy(), -1e-15);
+  controller.reset(-1.0);  // nothing stored: as reset()
+  EXPECT_EQ(controller.energy(), 0.0);
+  EXPECT_EQ(controller.bank(), 0.0);
+}
+
 TEST(PassivityController, RefusesBadParameters)
 {
   PassivityParams params;

@@ -1,12 +1,17 @@
 // The multi-rate renderer on its own (runtime/multirate_render.h): on time it passes the step's
 // reaction through bit for bit; a late step makes it pull the device towards an anchor that
 // moves to the new proxy by at most delta a tick, the force changing by at most its bound; it
-// rejoins the step once the anchor is on the proxy and the reaction within the bound. On a soft
-// contact the anchor yields as the body does: the coupling and the body in series, never pulling.
+// rejoins the step once the anchor is on the proxy and the reaction within the bound. Between
+// steps the anchor is a god-object on the step's contact planes: free space stays free, a wall
+// holds and lets the hand slide along it. On a soft contact the anchor yields as the body does:
+// the coupling and the body in series, never pulling. The hold's passivity controller keeps what
+// it gives the hand within what the coupling stored plus what the hand put in.
 #include "god_finger/runtime/multirate_render.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <limits>
 
 namespace god_finger
@@ -35,6 +40,9 @@ TEST(MultirateRender, ALateStepIsRenderedAgainstAMovingAnchorWithoutAForceStep)
   device.target = device.previous_target = Eigen::Vector3d(0.0, 0.0, -0.005);  // the hand 5 mm in
   // The last step: proxy on the surface, its reaction 2 N up on the hand; then it goes late.
   MultirateStep step{Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 2.0), 0};
+  step.step_target = device.target;
+  step.plane_count = 1;
+  step.plane_normals[0] = Eigen::Vector3d::UnitZ();  // the surface z = 0
   ASSERT_TRUE(renderMultirate(coupling, recovery, device, step, &state));
   // The physics is late three ticks while the proxy it will report moved 1 cm sideways.
   step.lag = 1;
@@ -79,6 +87,8 @@ TEST(MultirateRender, OnASoftContactTheHandFeelsTheCouplingAndTheBodyInSeriesBet
   // The last step: the device 10 mm under the proxy, 8 N on the hand along n.
   MultirateStep soft{
       Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 8.0), 0, Eigen::Vector3d(0.0, 0.0, -0.01), k_s, n};
+  soft.plane_count = 1;
+  soft.plane_normals[0] = n;
   MultirateStep rigid = soft;
   rigid.contact_stiffness = std::numeric_limits<double>::infinity();
   for (MultirateStep* step : {&soft, &rigid})
@@ -117,6 +127,134 @@ TEST(MultirateRender, OnASoftContactTheHandFeelsTheCouplingAndTheBodyInSeriesBet
     EXPECT_GE(state.force.z(), -1e-12) << "tick " << tick;
   }
   EXPECT_NEAR(state.force.z(), 0.0, 1e-12);  // 30 mm out: free space
+}
+
+// A late step in free space: the prediction moves with the hand, so a hand crossing free space
+// at 0.2 m/s through a 20 ms stall feels the step's force (none here) and no drag. A fixed
+// anchor would have pulled it back by stiffness x its move: 800 N/m x 4 mm = 3.2 N.
+TEST(MultirateRender, BetweenStepsFreeSpaceStaysFree)
+{
+  CouplingProfile coupling;
+  coupling.stiffness = 800.0;
+  coupling.damping = 2.0;
+  coupling.max_force = 8.9;
+  MultirateState state;
+  MultirateDevice device;
+  const Eigen::Vector3d speed(0.2, 0.0, 0.0);  // m/s
+  device.target = Eigen::Vector3d(0.0, 0.0, 0.05);
+  device.previous_target = device.target - 1e-3 * speed;
+  device.velocity = device.previous_velocity = speed;
+  MultirateStep step{device.target, Eigen::Vector3d::Zero(), 0, device.target};
+  ASSERT_TRUE(renderMultirate(coupling, 8, device, step, &state));
+  double largest = 0.0;
+  for (int tick = 1; tick <= 20; ++tick)
+  {
+    step.lag = tick;
+    device.previous_target = device.target;
+    device.target += 1e-3 * speed;
+    EXPECT_FALSE(renderMultirate(coupling, 8, device, step, &state));
+    EXPECT_EQ(state.anchor, device.target) << "tick " << tick;
+    largest = std::max(largest, state.force.norm());
+  }
+  std::printf("[ measured ] free space, 20 ticks late at 0.2 m/s: largest force %.3g N (a fixed anchor: %.3g N)\n",
+              largest, coupling.stiffness * 0.2 * 0.02 + coupling.damping * 0.2);
+  EXPECT_LE(largest, 1e-12);
+}
+
+// A late step on a wall (the plane z = 0 through the proxy): pressing deeper is felt at the
+// coupling's stiffness, sliding along the wall moves the anchor with the hand (no tangential
+// pull), and leaving the wall lets go.
+TEST(MultirateRender, BetweenStepsAWallHoldsAndTheHandSlidesAlongIt)
+{
+  CouplingProfile coupling;
+  coupling.stiffness = 800.0;
+  coupling.damping = 0.0;
+  coupling.max_force = 20.0;
+  MultirateState state;
+  MultirateDevice device;
+  device.target = device.previous_target = Eigen::Vector3d(0.0, 0.0, -0.005);  // 5 mm in
+  MultirateStep step{Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 4.0), 0, device.target};
+  step.plane_count = 1;
+  step.plane_normals[0] = Eigen::Vector3d::UnitZ();
+  ASSERT_TRUE(renderMultirate(coupling, 8, device, step, &state));
+  step.lag = 1;
+  for (int tick = 1; tick <= 10; ++tick)  // 1 mm a tick along x, 0.1 mm a tick deeper
+  {
+    device.previous_target = device.target;
+    device.target += Eigen::Vector3d(0.001, 0.0, -0.0001);
+    ASSERT_FALSE(renderMultirate(coupling, 8, device, step, &state));
+    EXPECT_NEAR(state.force.z(), 4.0 + 800.0 * 0.0001 * tick, 1e-9) << "tick " << tick;
+    EXPECT_NEAR(state.force.x(), 0.0, 1e-12) << "tick " << tick;
+    EXPECT_NEAR(state.anchor.x(), device.target.x(), 1e-15) << "tick " << tick;
+    EXPECT_EQ(state.anchor.z(), 0.0) << "tick " << tick;
+  }
+  for (int tick = 1; tick <= 40; ++tick)  // out by 0.5 mm a tick: 20 mm, past the wall
+  {
+    device.previous_target = device.target;
+    device.target.z() += 0.0005;
+    renderMultirate(coupling, 8, device, step, &state);
+    EXPECT_GE(state.force.z(), -1e-12) << "tick " << tick;
+  }
+  EXPECT_NEAR(state.force.norm(), 0.0, 1e-12);
+}
+
+// The hold's passivity: steps that keep coming late while the scene pushes the proxy out (a
+// body shoving the finger back) under a hand giving way. The coupling's spring, stretched by
+// 4 N, stored 1/2 F^2 / k = 10 mJ; without the controller the hold gives the hand far more than
+// that (the observer goes below zero), with it the hand gets at most that plus what it put in.
+TEST(MultirateRender, TheHoldGivesTheHandNoMoreThanTheCouplingStoredWithItsController)
+{
+  CouplingProfile coupling;
+  coupling.stiffness = 800.0;
+  coupling.damping = 2.0;
+  coupling.max_force = 20.0;
+  double given[2] = {0.0, 0.0};   // J, to the hand: off, on
+  double lowest[2] = {0.0, 0.0};  // J, the observer's lowest
+  for (int on = 0; on < 2; ++on)
+  {
+    PassivityParams params;
+    params.passivity_damping_limit = on ? 50.0 : 0.0;
+    PassivityController hold(holdPassivityParams(params), 1e-3);
+    MultirateState state;
+    MultirateDevice device;
+    device.target = device.previous_target = Eigen::Vector3d(0.0, 0.0, -0.005);
+    MultirateStep step{Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, 4.0), 0, device.target};
+    step.plane_count = 1;
+    step.plane_normals[0] = Eigen::Vector3d::UnitZ();
+    ASSERT_TRUE(renderMultirate(coupling, 8, device, step, &state, &hold));
+    // 200 ticks: the hand gives way at 0.1 m/s; every third tick a late step (lag 2) whose
+    // proxy the body pushed out as far, the hand's target 5 mm behind it.
+    const Eigen::Vector3d velocity(0.0, 0.0, 0.1);
+    for (int tick = 1; tick <= 200; ++tick)
+    {
+      device.previous_target = device.target;
+      device.previous_velocity = device.velocity;
+      device.target += 1e-4 * Eigen::Vector3d::UnitZ();
+      device.velocity = velocity;
+      if (tick % 3 == 0)
+      {
+        step.step_target = device.previous_target;
+        step.proxy_position = step.step_target + Eigen::Vector3d(0.0, 0.0, 0.005);
+        step.user_force = Eigen::Vector3d(0.0, 0.0, 4.0);
+        step.lag = 2;
+      }
+      else
+      {
+        ++step.lag;
+      }
+      ASSERT_FALSE(renderMultirate(coupling, 8, device, step, &state, &hold));
+      given[on] += state.force.dot(device.target - device.previous_target);
+    }
+    lowest[on] = hold.lowestEnergy();
+  }
+  std::printf(
+      "[ measured ] a late body pushing the finger out, 200 ticks: energy to the hand %.4g J without the hold's "
+      "controller (observer's lowest %.4g J), %.4g J with it (lowest %.4g J); the spring stored %.4g J\n",
+      given[0], lowest[0], given[1], lowest[1], 0.5 * 16.0 / 800.0);
+  EXPECT_LT(lowest[0], -0.01);  // without: the observer sees the hold make energy
+  EXPECT_GE(lowest[1], -1e-12);
+  EXPECT_LE(given[1], 0.5 * 16.0 / 800.0 + 1e-12);  // the hand put nothing in: it gets what was stored
+  EXPECT_GT(given[0], 2.0 * given[1]);
 }
 }  // namespace
 }  // namespace god_finger

@@ -76,6 +76,9 @@ class PassivityController
   Eigen::Vector3d apply(const Eigen::Vector3d& force, const Eigen::Vector3d& velocity, double max_force);
   // Forgets the observed energy (a new session: the device's force was off).
   void reset();
+  // Starts again from `stored` J (>= 0) that the loop behind the port already holds for the hand
+  // (a spring's stretch): the observer's energy is `stored`, the bank min(E_max, stored).
+  void reset(double stored);
 
   // J: the energy the hand put in through the port since the last reset, sum of -F'.v dt (the
   // passivity observer's figure: >= 0 while the controller is on).

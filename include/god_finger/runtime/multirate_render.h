@@ -11,6 +11,22 @@
 // saturated, moving from the last force by at most the bound
 // stiffness (|target - previous target| + delta) + damping |velocity - previous velocity|.
 //
+// Between steps the proxy is predicted as a god-object on the step's contact planes (the
+// intermediate representation of Mark et al. 1996, one plane per contact the step reported, each
+// through the step's proxy with its contact normal; predictedProxy below). In free space the prediction
+// follows the hand (no "sticky air": a fixed anchor would pull it back by stiffness x its move);
+// into a contact it stays on the surface and slides along it. The anchor moves to the
+// prediction by at most delta plus the device's move this tick, so a new step's jump is spread
+// over recovery_periods as before, and the damping acts on the device's velocity relative to the
+// prediction's (none in free space, the normal part on a plane).
+//
+// The hold's passivity (haptics/passivity_controller.h, the same observer and controller as the
+// device driver's port): a non-null `hold` observes every tick not served by a step (a hold),
+// from the energy the coupling stored at the step the hold began on (1/2 |F|^2 / stiffness), and
+// damps or cuts a force that would give the hand more than that plus what the hand put in: energy
+// is spent only where it was stored. A hold is passive without it while the planes stand still;
+// a new step's planes or proxy moving under a stretched spring is what it catches.
+//
 // A soft contact (a finite contact stiffness k_s): between steps the proxy is not a wall but
 // yields along the contact's normal n as the body would, linearised at the step (SOFA's
 // LCPForceFeedback re-solves its constraints with the last compliance the same way): with the
@@ -23,9 +39,11 @@
 // Units: SI, world frame. Real-time safe (no allocation).
 #pragma once
 
+#include "god_finger/haptics/passivity_controller.h"
 #include "god_finger/haptics/virtual_coupling.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <limits>
 
 namespace god_finger
@@ -58,10 +76,29 @@ struct MultirateStep
   Eigen::Vector3d step_target = Eigen::Vector3d::Zero();
   double contact_stiffness = std::numeric_limits<double>::infinity();
   Eigen::Vector3d contact_normal = Eigen::Vector3d::UnitZ();
+  // The step's contact planes: plane_count normals (world, unit, out of the bodies), each plane
+  // through proxy_position (InterfaceState::contacts' normals).
+  static constexpr int kMaxPlanes = 4;
+  int plane_count = 0;
+  std::array<Eigen::Vector3d, kMaxPlanes> plane_normals{};
 };
+
+// The proxy a step predicts for the device at `target` (m, world), for a coupling of `stiffness`
+// (N/m): the god-object on the step's planes for the device at target + o, out of every plane it
+// is behind (a few rounds of projection; exact for one plane or orthogonal ones), where o is what
+// the planes do not explain of the step's stretch: step_target + user_force / stiffness (where
+// the step's force puts the proxy against its target: the free proxy's lag, a stuck friction
+// anchor's pull) less the god-object for step_target. The step's force is held so, continuous.
+Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target, double stiffness);
 
 // Decides this tick's force (N, world, on the hand) into state->force and updates the anchor and
 // exactness; returns true when the force is the step's reaction (not stale).
+// The hold's passivity parameters from the device port's (DeviceProfile::passivity): the same,
+// but no minimum dissipation asked (passivity_min_damping is for a hand ringing through a
+// delayed link; the hold has no delay), so free motion between steps stays free.
+PassivityParams holdPassivityParams(const PassivityParams& device_port);
+
+// `hold` (may be null): the hold's passivity controller (holdPassivityParams), reset at each hold's first tick.
 bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, const MultirateDevice& device,
-                     const MultirateStep& step, MultirateState* state);
+                     const MultirateStep& step, MultirateState* state, PassivityController* hold = nullptr);
 }  // namespace god_finger

@@ -47,28 +47,28 @@
 //  - on time (the last completed step took tick k's targets) and exact: the step's coupling
 //    reaction, bit for bit what a single-rate loop commands;
 //  - late ("stale", physics lag k - j > 0 for the last completed step j): the virtual coupling
-//    rendered on the haptic side against an anchor a, a spring to a fixed point plus damping on
-//    the device's own velocity only (never a stale proxy velocity, which can inject energy):
-//      F = -sat(k_c (p_I - a) + b v_I, max_force)      (CouplingProfile of the interface)
+//    rendered on the haptic side against an anchor a, a spring plus damping on the device's
+//    velocity relative to the anchor's prediction (runtime/multirate_render.h):
+//      F = -sat(k_c (p_I - a) + b (v_I - v_a), max_force)      (CouplingProfile of the interface)
 //    with p_I, v_I the device's target and velocity ((p_I,k - p_I,k-1) / dt) in the world;
 //  - the anchor rule: in exact mode a is the last completed step's proxy position; out of it a
-//    moves toward the last completed step's proxy position by at most
-//      delta = max_force / (k_c recovery_periods)   per period
+//    moves toward the step's predicted proxy (the step's proxy carried by the device's move
+//    since that step and kept out of the step's contact planes: a god-object on the planes, so
+//    free space stays free and a wall stays a wall) by at most
+//      delta + |p_I,k - p_I,k-1|,   delta = max_force / (k_c recovery_periods)   per period
 //    (so a proxy jump that the catching-up physics makes reaches the hand over at least
 //    recovery_periods periods per max_force of spring), and the commanded force moves toward
 //    the rendering by at most the force-step bound
 //      B_k = k_c (|p_I,k - p_I,k-1| + delta) + b |v_I,k - v_I,k-1|
-//    (what the coupling's stiffness and damping give for the device's own motion plus the
-//    anchor's legal motion; a fixed-anchor rendering never exceeds it, saturation being a
-//    projection). Back to exact when on time, the anchor on the proxy and the step's force
-//    within B_k of the last command. So every change of force out of exact mode is at most B_k.
-//    Energy: a spring to a fixed anchor plus damping on the device's velocity is passive; the
-//    anchor moves only toward the latest proxy, which the coupling pulls toward the device, so
-//    an anchor move relaxes the spring, except when the scene pushes the proxy away from the
-//    device (a moving body, a reset's proxy pushed out of a surface), energy the on-time loop
-//    gives the hand too, here rate-limited. test/runtime/multirate_test.cpp measures it over
-//    5 and 20 ms stalls: never more energy to the device than the on-time loop gives, none
-//    while the hand presses.
+//    Back to exact when on time, the anchor on the proxy and the step's force within B_k of the
+//    last command. So every change of force out of exact mode is at most B_k.
+//    Energy: a spring to a god-object on fixed planes plus damping is passive; what a new
+//    step's planes or proxy bring under a stretched spring, the hold's passivity observer and
+//    controller (the profile's PassivityParams, haptics/passivity_controller.h) keep within
+//    what the coupling stored when the hold began plus what the hand put in since.
+//    test/runtime/multirate_test.cpp measures it over 5 and 20 ms stalls: never more energy
+//    to the device than the on-time loop gives, none while the hand presses; a hand moving
+//    through free space during a stall feels no drag.
 //
 // Threads and clocks:
 //  - Real time (CLOCK_MONOTONIC, the deadlines of runtime/fixed_rate_schedule.h, so the rate
@@ -211,6 +211,12 @@ struct ServoCounters
   std::atomic<long> stale_ticks{0};      // interface-ticks whose force came from the anchor
   std::atomic<long> physics_steps{0};    // steps taken
   std::atomic<long> skipped_targets{0};  // targets the physics skipped, being late
+  // The multi-rate hold's passivity controller (multirate_render.h): interface-ticks it damped
+  // or cut at, the energy it took out (J), and the lowest its observer saw (J, any interface;
+  // >= 0 while the controller is on).
+  std::atomic<long> hold_damped_ticks{0};
+  std::atomic<double> hold_dissipated{0.0};
+  std::atomic<double> hold_lowest_energy{0.0};
   std::atomic<int> model{static_cast<int>(ContactModel::kGodFinger)};
   std::atomic<int> pad_solver{static_cast<int>(WorldParams().pad_solver)};  // the world's, after each step's commands
   std::atomic<bool> realtime{false};                                        // the haptic thread got SCHED_FIFO
@@ -314,6 +320,9 @@ class ServoLoop
     Eigen::Vector3d interface_position = Eigen::Vector3d::Zero();
     double contact_stiffness = std::numeric_limits<double>::infinity();
     Eigen::Vector3d contact_normal = Eigen::Vector3d::UnitZ();
+    // The step's contact planes through proxy_position (MultirateStep::plane_normals).
+    int plane_count = 0;
+    std::array<Eigen::Vector3d, MultirateStep::kMaxPlanes> plane_normals{};
   };
   struct StepResult
   {
@@ -364,8 +373,11 @@ class ServoLoop
   Log log_;
   std::vector<ForceGuard> guards_;
   std::vector<CouplingProfile> couplings_;  // the world's, copied for the haptic side
-  std::vector<InterfaceInput> inputs_;      // one per interface: bound, map, presses, orientation
-  std::vector<DeviceReading> readings_;     // the last finite reading of each device
+  // The multi-rate hold's passivity observer and controller per interface (the profile's
+  // PassivityParams; multirate_render.h), haptic side only.
+  std::vector<PassivityController> hold_passivity_;
+  std::vector<InterfaceInput> inputs_;   // one per interface: bound, map, presses, orientation
+  std::vector<DeviceReading> readings_;  // the last finite reading of each device
   std::vector<Eigen::Vector3d> applied_;
   std::vector<Eigen::Vector3d> applied_torque_;  // N m, device frame, given at this tick
   std::vector<double> read_at_;                  // wall-clock seconds of each reading
