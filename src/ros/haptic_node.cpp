@@ -10,6 +10,8 @@
 #include "god_finger/haptics/workspace_mapping.h"
 #include "god_finger/physics/contact_model.h"
 #include "god_finger/ros/conversions.h"
+#include "god_finger/runtime/multirate_render.h"
+#include "god_finger/runtime/servo_loop.h"
 #include "god_finger/support/input_error.h"
 #include "interface_parameters.h"
 #include "parameters.h"
@@ -60,10 +62,17 @@ struct HapticNode::Impl
   tf2_ros::StaticTransformBroadcaster static_broadcaster;
   std::string device_frame;
   std::mutex mutex;
-  Eigen::Vector3d proxy = Eigen::Vector3d::Zero();
-  Eigen::Vector3d proxy_velocity = Eigen::Vector3d::Zero();
-  ros::Time proxy_stamp;
-  ros::SteadyTime proxy_received;  // when the last proxy position came
+  // The local coupling (under mutex): the last step's god-object (NAME/proxy_state), rendered
+  // against between steps as the servo loop's haptic side does (runtime/multirate_render.h:
+  // a god-object on the step's contact planes, so free motion is free through any delay), and
+  // the renderer's state and the device's previous target and velocity (m, m/s, world).
+  MultirateStep step;
+  MultirateState render;
+  Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();
+  Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
+  bool have_previous = false;
+  long rejected_proxy_states = 0;
+  ros::SteadyTime proxy_received;  // when the last proxy state came
   // s: older than this, the proxy is stale (the physics is gone); long enough that a loaded
   // machine delaying the proxy topic (tens of ms) does not cut the spring.
   double proxy_timeout = NodeParams().proxy_timeout;
@@ -142,13 +151,19 @@ struct HapticNode::Impl
     }
     // A stale proxy (the physics died or stalled) renders nothing: the driver's watchdog then
     // ramps the force to zero instead of the hand pressing on a frozen proxy.
+    const Eigen::Vector3d velocity = mapping.velocityToWorld(reading.velocity);
     if (local_coupling && have_proxy && (ros::SteadyTime::now() - proxy_received).toSec() < proxy_timeout)
     {
-      // The hand feels the reaction of the force that pulls the proxy.
-      const CouplingForce coupled =
-          couplingForce(coupling, world, mapping.velocityToWorld(reading.velocity), proxy, proxy_velocity);
-      publishForce(state->header.stamp, -coupled.on_proxy, input.wall_force);
+      // The hand feels the reaction of the force that pulls the proxy; a step is always older
+      // than this state (lag 1), so never passed through as it is.
+      const MultirateDevice device{world, have_previous ? previous_target : world, velocity,
+                                   have_previous ? previous_velocity : velocity};
+      renderMultirate(coupling, ServoLoopParams().recovery_periods, device, step, &render);
+      publishForce(state->header.stamp, render.force, input.wall_force);
     }
+    previous_target = world;
+    previous_velocity = velocity;
+    have_previous = true;
   }
 
   // world -> the device's frame (ros/device_frame.h).
@@ -191,24 +206,25 @@ struct HapticNode::Impl
     publishForce(feedback->header.stamp, force, wall);
   }
 
-  void onProxy(const geometry_msgs::PointStamped::ConstPtr& message)
+  void onProxyState(const god_finger::ProxyState::ConstPtr& message)
   {
-    const Eigen::Vector3d p(message->point.x, message->point.y, message->point.z);
-    if (!p.allFinite())
+    MultirateStep read;
+    if (!multirateStep(*message, 1, &read))
     {
+      std::lock_guard<std::mutex> lock(mutex);
+      ++rejected_proxy_states;  // a non-finite value or a bad plane: the last good step stays
+      ROS_WARN_THROTTLE(1.0, "haptic: rejected a malformed proxy state (%ld so far)", rejected_proxy_states);
       return;
     }
     std::lock_guard<std::mutex> lock(mutex);
-    if (have_proxy)
+    if (!have_proxy)
     {
-      const double dt = (message->header.stamp - proxy_stamp).toSec();
-      if (dt > 0.0)
-      {
-        proxy_velocity = (p - proxy) / dt;
-      }
+      // The first step: its force as it is, the anchor on the proxy it predicts for the hand.
+      render.anchor = have_previous ? predictedProxy(read, previous_target) : read.proxy_position;
+      render.force = read.user_force;
+      render.exact = true;
     }
-    proxy = p;
-    proxy_stamp = message->header.stamp;
+    step = read;
     proxy_received = ros::SteadyTime::now();
     have_proxy = true;
   }
@@ -227,6 +243,7 @@ struct HapticNode::Impl
     addValue(&status, "rejected_states", std::to_string(rejected_states));
     addValue(&status, "rejected_orientations", std::to_string(rejected_orientations));
     addValue(&status, "rejected_feedback", std::to_string(rejected_feedback));
+    addValue(&status, "rejected_proxy_states", std::to_string(rejected_proxy_states));
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
   }
@@ -312,7 +329,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   impl.state_subscriber = nh.subscribe("device/state", kSubscriberQueue, &Impl::onState, &impl, hints);
   impl.feedback_subscriber = nh.subscribe("feedback", kSubscriberQueue, &Impl::onFeedback, &impl, hints);
-  impl.proxy_subscriber = nh.subscribe("proxy", 1, &Impl::onProxy, &impl, hints);
+  impl.proxy_subscriber = nh.subscribe("proxy_state", 1, &Impl::onProxyState, &impl, hints);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
   impl.timer = nh.createTimer(ros::Duration(0.05), &Impl::onTimer, &impl);
   ROS_INFO("haptic: interface frame '%s', %s coupling", impl.frame.c_str(),

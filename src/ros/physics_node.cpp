@@ -53,6 +53,7 @@ struct PhysicsNode::Impl
     ros::Subscriber pose_subscriber;
     ros::Publisher feedback_publisher;
     ros::Publisher proxy_publisher;
+    ros::Publisher proxy_state_publisher;  // NAME/proxy_state: the haptic node's local coupling
     // Written by the pose callback, read by the loop.
     Eigen::Vector3d target = Eigen::Vector3d::Zero();
     // The pose's orientation (world_messages.h poseOrientation): an oriented finger's, else none.
@@ -68,6 +69,7 @@ struct PhysicsNode::Impl
     Eigen::Vector3d user_force = Eigen::Vector3d::Zero();      // N, world
     Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();     // N m, world (an oriented finger's)
     Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world
+    InterfaceState state;                                      // the whole, for proxy_state
   };
 
   ros::NodeHandle nh;
@@ -229,6 +231,7 @@ struct PhysicsNode::Impl
       interface.user_force = state.user_force;
       interface.user_torque = state.user_torque;
       interface.proxy_position = state.proxy_position;
+      interface.state = state;
     }
   }
 
@@ -248,6 +251,9 @@ struct PhysicsNode::Impl
           feedbackMessage(interface.feedback_stamp.isZero() ? stamp : interface.feedback_stamp, interface.user_force,
                           interface.user_torque));
       interface.proxy_publisher.publish(proxyMessage(stamp, interface.proxy_position));
+      // Stamped as the feedback: the pose it answered.
+      interface.proxy_state_publisher.publish(
+          proxyStateMessage(interface.feedback_stamp.isZero() ? stamp : interface.feedback_stamp, interface.state));
     }
   }
 
@@ -411,6 +417,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
         ros::TransportHints().tcpNoDelay());
     interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", kPublisherQueue);
     interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", kPublisherQueue);
+    interface.proxy_state_publisher = nh.advertise<god_finger::ProxyState>(names[i] + "/proxy_state", kPublisherQueue);
   }
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);

@@ -2,7 +2,10 @@
 
 #include "god_finger/physics/joint_measure.h"
 
+#include <algorithm>
 #include <boost/make_shared.hpp>
+#include <cmath>
+#include <limits>
 
 #include "god_finger/ros/conversions.h"
 #include "markers.h"
@@ -118,6 +121,58 @@ geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen:
   proxy->header.frame_id = "world";
   proxy->point = toPoint(proxy_position);
   return proxy;
+}
+
+god_finger::ProxyStatePtr proxyStateMessage(const ros::Time& stamp, const InterfaceState& state)
+{
+  god_finger::ProxyStatePtr message(new god_finger::ProxyState);
+  message->header.stamp = stamp;
+  message->header.frame_id = "world";
+  message->proxy = toPoint(state.proxy_position);
+  message->target = toPoint(state.interface_position);
+  message->force = toVector(state.user_force);
+  for (int c = 0; c < std::min(state.contact_count, MultirateStep::kMaxPlanes); ++c)
+  {
+    message->planes.push_back(toVector(state.contacts[c].normal));
+  }
+  const bool soft = state.contact_stiffness < std::numeric_limits<double>::infinity();
+  message->contact_stiffness = soft ? state.contact_stiffness : 0.0;
+  message->contact_normal = toVector(state.contact_normal);
+  return message;
+}
+
+bool multirateStep(const god_finger::ProxyState& message, long lag, MultirateStep* step)
+{
+  MultirateStep read;
+  read.proxy_position = fromPoint(message.proxy);
+  read.step_target = fromPoint(message.target);
+  read.user_force = fromVector(message.force);
+  read.contact_normal = fromVector(message.contact_normal);
+  read.lag = lag;
+  if (!read.proxy_position.allFinite() || !read.step_target.allFinite() || !read.user_force.allFinite() ||
+      !read.contact_normal.allFinite() || !std::isfinite(message.contact_stiffness) ||
+      message.contact_stiffness < 0.0 || message.planes.size() > static_cast<std::size_t>(MultirateStep::kMaxPlanes))
+  {
+    return false;
+  }
+  read.contact_stiffness =
+      message.contact_stiffness > 0.0 ? message.contact_stiffness : std::numeric_limits<double>::infinity();
+  for (const geometry_msgs::Vector3& plane : message.planes)
+  {
+    const Eigen::Vector3d normal = fromVector(plane);
+    if (!normal.allFinite() || std::abs(normal.norm() - 1.0) > 1e-6)
+    {
+      return false;
+    }
+    read.plane_normals[read.plane_count++] = normal;
+  }
+  if (read.contact_stiffness < std::numeric_limits<double>::infinity() &&
+      std::abs(read.contact_normal.norm() - 1.0) > 1e-6)
+  {
+    return false;
+  }
+  *step = read;
+  return true;
 }
 
 std::vector<geometry_msgs::TransformStamped> bodyTransforms(const SceneDescription& scene, const WorldSnapshot& world,

@@ -4,7 +4,9 @@
 #pragma once
 
 #include "god_finger/ContactAreaArray.h"
+#include "god_finger/ProxyState.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/runtime/multirate_render.h"
 
 #include <geometry_msgs/PointStamped.h>
 #include <geometry_msgs/PoseStamped.h>
@@ -43,6 +45,14 @@ geometry_msgs::TransformStamped interfaceTransform(const geometry_msgs::PoseStam
 // normalises it, or ignores and counts it when unusable).
 bool poseOrientation(const geometry_msgs::Pose& pose, Eigen::Quaterniond* orientation);
 geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position);
+// One step's god-object for the haptic node's local coupling (NAME/proxy_state,
+// god_finger/ProxyState, `world`): the proxy, the target the step took, its force, its contacts'
+// normals (the first MultirateStep::kMaxPlanes) and a soft contact's stiffness (0: none).
+god_finger::ProxyStatePtr proxyStateMessage(const ros::Time& stamp, const InterfaceState& state);
+// The message as the renderer's step, `lag` ticks old. False, `step` untouched, for a message
+// with a non-finite value, a plane that is not unit length (within 1e-6), more than kMaxPlanes
+// planes or a negative stiffness.
+bool multirateStep(const god_finger::ProxyState& message, long lag, MultirateStep* step);
 // The scene's joints (articulated objects) as sensor_msgs/JointState: name, position (rad or m)
 // and velocity per joint, in the scene's order (joint_measure.h), no effort.
 sensor_msgs::JointStatePtr jointStateMessage(const SceneDescription& scene, const WorldSnapshot& world,

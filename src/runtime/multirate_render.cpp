@@ -44,19 +44,12 @@ Eigen::Vector3d outOfPlanes(const MultirateStep& step, const Eigen::Vector3d& po
   return proxy;
 }
 
-// What the planes do not explain of the step's stretch (m, world): where its force puts the proxy
-// against its target, step_target + user_force / stiffness, less the god-object for step_target.
-Eigen::Vector3d heldOffset(const MultirateStep& step, double stiffness)
-{
-  return step.step_target + step.user_force / stiffness - outOfPlanes(step, step.step_target);
-}
-
 // The prediction's velocity (m/s, world) for the device's `velocity` at `target`: its normal
 // part taken out on every plane the prediction is held by.
 Eigen::Vector3d predictedVelocity(const MultirateStep& step, const Eigen::Vector3d& target,
-                                  const Eigen::Vector3d& velocity, double stiffness)
+                                  const Eigen::Vector3d& velocity)
 {
-  const Eigen::Vector3d carried = target + heldOffset(step, stiffness);
+  const Eigen::Vector3d& carried = target;
   Eigen::Vector3d result = velocity;
   for (int j = 0; j < step.plane_count; ++j)
   {
@@ -70,16 +63,9 @@ Eigen::Vector3d predictedVelocity(const MultirateStep& step, const Eigen::Vector
 }
 }  // namespace
 
-PassivityParams holdPassivityParams(const PassivityParams& device_port)
+Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target)
 {
-  PassivityParams hold = device_port;
-  hold.passivity_min_damping = 0.0;
-  return hold;
-}
-
-Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target, double stiffness)
-{
-  return outOfPlanes(step, target + heldOffset(step, stiffness));
+  return outOfPlanes(step, target);
 }
 
 bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, const MultirateDevice& device,
@@ -97,8 +83,7 @@ bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, cons
   const double bound =
       coupling.stiffness * (moved + delta) + coupling.damping * (device.velocity - device.previous_velocity).norm();
   // On time (lag 0) the step is this tick's: its proxy is the prediction.
-  const Eigen::Vector3d predicted =
-      step.lag == 0 ? step.proxy_position : predictedProxy(step, device.target, coupling.stiffness);
+  const Eigen::Vector3d predicted = step.lag == 0 ? step.proxy_position : predictedProxy(step, device.target);
   const Eigen::Vector3d to_predicted = predicted - state->anchor;
   if (to_predicted.norm() <= delta + moved)
   {
@@ -128,9 +113,8 @@ bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, cons
     // Where the proxy would be along n for that force: the device's place plus along / k_c.
     anchor += n * (device.target.dot(n) + along / k_c - state->anchor.dot(n));
   }
-  const CouplingForce spring =
-      couplingForce(coupling, device.target, device.velocity, anchor,
-                    predictedVelocity(step, device.target, device.velocity, coupling.stiffness));
+  const CouplingForce spring = couplingForce(coupling, device.target, device.velocity, anchor,
+                                             predictedVelocity(step, device.target, device.velocity));
   const double stored = 0.5 * state->force.squaredNorm() / coupling.stiffness;  // J, in the coupling's spring
   state->force = state->force + clampedLength(-spring.on_proxy - state->force, bound);
   state->exact = false;

@@ -106,7 +106,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
       throw InputError("interface '" + interface.name + "' has no device");
     }
     guards_.emplace_back(interface.profile.coupling.max_force, interface.profile.guard);
-    hold_passivity_.emplace_back(holdPassivityParams(interface.profile.passivity), 1.0 / params_.rate);
+    hold_passivity_.emplace_back(interface.profile.passivity, 1.0 / params_.rate);
     inputs_.emplace_back(interface.profile, interface.mapping);
   }
   counters_.model = static_cast<int>(world_->contactModel());

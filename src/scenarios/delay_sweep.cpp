@@ -4,6 +4,8 @@
 #include "god_finger/haptics/two_port_passivity.h"
 #include "god_finger/haptics/virtual_coupling.h"
 #include "god_finger/runtime/delay_line.h"
+#include "god_finger/runtime/multirate_render.h"
+#include "god_finger/runtime/servo_loop.h"
 
 #include <algorithm>
 #include <cmath>
@@ -79,6 +81,12 @@ struct Message
   double a;        // position (m) or force (N)
   double b;        // velocity (m/s)
   double energy;   // J: the sender's port's E_in as of `stamp` (the two-port's packet)
+  // The local coupling's god-object (ros ProxyState; `a` is the proxy): the hand position the
+  // step answered (m), its force on the hand (N), and its contact plane's normal along x (+-1;
+  // 0: none).
+  double target = 0.0;
+  double force = 0.0;
+  double plane = 0.0;
 };
 
 // One direction of the link: messages in flight, the newest delivered.
@@ -88,10 +96,16 @@ class Channel
   explicit Channel(const DelayLineParams& params) : schedule_(params) {}
   void send(double now, double a, double b, double energy)
   {
+    send(now, Message{0.0, 0.0, a, b, energy});
+  }
+  void send(double now, Message message)
+  {
     const double release = schedule_.release(now);
     if (release >= 0.0)
     {
-      flight_.push_back({release, now, a, b, energy});
+      message.release = release;
+      message.stamp = now;
+      flight_.push_back(message);
     }
   }
   // The newest message released by `now`, if any arrived since the last call.
@@ -140,11 +154,40 @@ struct Port
   double v = 0.0;                             // m/s
   Message seen{0.0, -1.0, 0.0, 0.0, 0.0};     // at the physics: the newest position
   Message command{0.0, -1.0, 0.0, 0.0, 0.0};  // at the device: the newest force (or god-object)
-  double proxy_velocity = 0.0;                // m/s, local coupling: from the last two god-objects
-  std::vector<double> rendered;               // N, per tick
-  std::vector<double> positions;              // m, per tick
-  std::vector<char> pressing;                 // per tick: the physics' proxy held by the surface
+  MultirateState render;                      // local coupling: the haptic side's renderer
+  double previous_x = 0.0;                    // m, m/s: the handle's at the previous tick
+  double previous_v = 0.0;
+  std::vector<double> rendered;   // N, per tick
+  std::vector<double> positions;  // m, per tick
+  std::vector<char> pressing;     // per tick: the physics' proxy held by the surface
 };
+
+// The local coupling's force on the hand (N along x) this tick, rendered as the haptic node does
+// (ros/haptic_node.h: runtime/multirate_render.h against the last god-object that came, lag 1).
+// A local coupling's god-object message as the renderer's step (lag 1).
+MultirateStep localStep(const Message& message)
+{
+  MultirateStep step;
+  step.proxy_position = Eigen::Vector3d(message.a, 0, 0);
+  step.step_target = Eigen::Vector3d(message.target, 0, 0);
+  step.user_force = Eigen::Vector3d(message.force, 0, 0);
+  step.lag = 1;
+  if (message.plane != 0.0)
+  {
+    step.plane_count = 1;
+    step.plane_normals[0] = Eigen::Vector3d(message.plane, 0, 0);
+  }
+  return step;
+}
+
+double localCoupling(const CouplingProfile& coupling, Port& port)
+{
+  const MultirateStep step = localStep(port.command);
+  const MultirateDevice device{Eigen::Vector3d(port.x, 0, 0), Eigen::Vector3d(port.previous_x, 0, 0),
+                               Eigen::Vector3d(port.v, 0, 0), Eigen::Vector3d(port.previous_v, 0, 0)};
+  renderMultirate(coupling, ServoLoopParams().recovery_periods, device, step, &port.render);
+  return port.render.force.x();
+}
 
 double rms(const std::vector<double>& values, std::size_t from, std::size_t to)
 {
@@ -252,7 +295,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
     DelayLineParams back = link;
     back.seed = link.seed + 1;
     ports.emplace_back(link, back, two_port ? observer_only : passivity, two_port ? passivity : observer_only);
-    ports.back().x = restPoint(trial.task, p, 0.0);
+    ports.back().x = ports.back().previous_x = restPoint(trial.task, p, 0.0);
   }
   double block = 0.0;  // m: the grasp block's centre
   double block_v = 0.0;
@@ -312,12 +355,19 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
         }
         if (trial.local_coupling)
         {
-          port.down.send(now, proxy, 0.0, 0.0);
+          Message state{0.0, 0.0, proxy, 0.0, 0.0};
+          state.target = hand_x.x();
+          state.force = force_on_hand;
+          state.plane = pressing ? -sign : 0.0;  // out of the wall, toward the hand
+          port.down.send(now, state);
         }
       }
       else if (trial.local_coupling && port.seen.stamp >= 0.0)
       {
-        port.down.send(now, port.seen.a, 0.0, 0.0);  // free space: the god-object is where the hand was seen
+        // Free space: the god-object is where the hand was seen, no force, no plane.
+        Message state{0.0, 0.0, port.seen.a, 0.0, 0.0};
+        state.target = port.seen.a;
+        port.down.send(now, state);
       }
       if (port.seen.stamp >= 0.0 && !trial.local_coupling && trial.task == DelayTask::kFree)
       {
@@ -345,9 +395,11 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       Message arrived{};
       if (port.down.receive(now, &arrived))
       {
-        if (trial.local_coupling && port.command.stamp >= 0.0 && arrived.stamp > port.command.stamp)
+        if (trial.local_coupling && port.command.stamp < 0.0)
         {
-          port.proxy_velocity = (arrived.a - port.command.a) / (arrived.stamp - port.command.stamp);
+          // The first: as the haptic node takes it, the anchor on the hand's predicted proxy.
+          port.render.anchor = predictedProxy(localStep(arrived), Eigen::Vector3d(port.x, 0, 0));
+          port.render.force = Eigen::Vector3d(arrived.force, 0, 0);
         }
         port.command = arrived;
         port.device_port.remote().receive({arrived.stamp, arrived.energy});
@@ -355,12 +407,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       double command = 0.0;
       if (port.command.stamp >= 0.0)
       {
-        command =
-            trial.local_coupling
-                ? -couplingForce(coupling, Eigen::Vector3d(port.x, 0, 0), Eigen::Vector3d(port.v, 0, 0),
-                                 Eigen::Vector3d(port.command.a, 0, 0), Eigen::Vector3d(port.proxy_velocity, 0, 0))
-                       .on_proxy.x()
-                : port.command.a;
+        command = trial.local_coupling ? localCoupling(coupling, port) : port.command.a;
       }
       // Both forms' device sides see the force rendered; the one not in use only counts.
       const Eigen::Vector3d handle_v(port.v, 0, 0);
@@ -380,6 +427,8 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
           (now < kDuration - kQuietTail ? hand.tremor * std::sin(2.0 * M_PI * hand.tremor_hz * now) : 0.0) *
               (p == 0 ? 1 : -1);
       const double by_hand = hand.stiffness * (rest - port.x) - hand.damping * port.v;
+      port.previous_x = port.x;
+      port.previous_v = port.v;
       port.v += kTick * (by_hand + rendered) / hand.mass;
       port.x += kTick * port.v;
       port.rendered.push_back(rendered);

@@ -214,7 +214,7 @@ TEST(MultirateRender, TheHoldGivesTheHandNoMoreThanTheCouplingStoredWithItsContr
   {
     PassivityParams params;
     params.passivity_damping_limit = on ? 50.0 : 0.0;
-    PassivityController hold(holdPassivityParams(params), 1e-3);
+    PassivityController hold(params, 1e-3);
     MultirateState state;
     MultirateDevice device;
     device.target = device.previous_target = Eigen::Vector3d(0.0, 0.0, -0.005);

@@ -196,29 +196,33 @@ TEST(DelaySweep, TheTwoPortFormCannotStartAContactOnTheEnergyOfFreeMotion)
 // off while the physics reports it free. (The human-like hand also rings against that delayed
 // spring from 30 ms on: the run's last second holds 0.40 N rms above 5 Hz at 30 ms, 0.44 N at
 // 100 ms, printed as "sustained" in the [ measured ] lines; not asserted here.)
-TEST(DelaySweep, TheLocalCouplingIsPassiveOnAWallButDragsInFreeMotion)
+// The haptic node's local coupling (ros/haptic_node.h): the spring rendered at the device
+// against the last god-object that came, predicted as the servo loop's hold does
+// (runtime/multirate_render.h: a god-object on the step's contact planes). Free motion is free
+// through any round trip (a fixed god-object dragged the hand by about k T v: 1.30, 3.02 and 7.74 N
+// at 10, 30 and 100 ms until stop 44); a wall comes half a round trip late, so without the
+// controller a press makes energy (the hand entered unresisted, the spring pushes it out), and
+// with the controller, the default, the port stays passive and nothing rings.
+TEST(DelaySweep, TheLocalCouplingIsFreeInFreeMotionAndPassiveOnAWallWithTheController)
 {
   for (const double round_trip : {0.03, 0.1})
   {
-    const DelayTrialResult press =
+    const DelayTrialResult off =
         run(DelayTask::kPress, DelayOperator::kWorstCase, round_trip, 0.0, 0.0, false, /*local_coupling=*/true);
-    EXPECT_GE(press.lowest_energy_J, -1e-4) << round_trip;
-    EXPECT_FALSE(press.sustained) << round_trip;
-    EXPECT_GT(press.felt_stiffness_N_per_m, 300.0) << round_trip;
+    const DelayTrialResult on =
+        run(DelayTask::kPress, DelayOperator::kWorstCase, round_trip, 0.0, 0.0, true, /*local_coupling=*/true);
+    // Measured: -6.6e-5 J through 30 ms, -4.0e-4 J through 100 ms without; >= 0 with.
+    EXPECT_LT(off.lowest_energy_J, round_trip >= 0.1 ? -1e-4 : 0.0) << round_trip;
+    EXPECT_GE(on.lowest_energy_J, -1e-4) << round_trip;
+    EXPECT_GT(on.damped_ticks, 0) << round_trip;
+    EXPECT_FALSE(on.sustained) << round_trip;
+    EXPECT_GT(on.felt_stiffness_N_per_m, 150.0) << round_trip;
   }
-  const CouplingProfile coupling;
   for (const double round_trip : {0.01, 0.03, 0.1})
   {
-    const DelayTrialResult forwarded = run(DelayTask::kFree, DelayOperator::kHumanLike, round_trip, 0.0, 0.0, true);
     const DelayTrialResult local =
         run(DelayTask::kFree, DelayOperator::kHumanLike, round_trip, 0.0, 0.0, true, /*local_coupling=*/true);
-    EXPECT_EQ(forwarded.peak_force_N, 0.0);
-    // The hand's rest point swings +-3 cm at 1 Hz (0.19 m/s at most): k T v.
-    const double drag = coupling.stiffness * round_trip * 0.03 * 2.0 * M_PI;
-    // Measured: 1.30, 3.02 and 7.74 N against k T v's 0.75, 2.26 and 7.54 N (the rest: the
-    // damper's term on the god-object's velocity taken from two delayed samples).
-    EXPECT_GT(local.peak_force_N, 0.9 * drag) << round_trip;
-    EXPECT_LT(local.peak_force_N, 2.0 * drag) << round_trip;
+    EXPECT_EQ(local.peak_force_N, 0.0) << round_trip;
   }
 }
 }  // namespace

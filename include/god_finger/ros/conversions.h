@@ -42,4 +42,9 @@ inline Eigen::Vector3d fromVector(const geometry_msgs::Vector3& v)
 {
   return Eigen::Vector3d(v.x, v.y, v.z);
 }
+
+inline Eigen::Vector3d fromPoint(const geometry_msgs::Point& p)
+{
+  return Eigen::Vector3d(p.x, p.y, p.z);
+}
 }  // namespace god_finger

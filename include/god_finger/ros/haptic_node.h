@@ -10,10 +10,13 @@
 // (geometry_msgs/Vector3Stamped, N m, device frame), whatever ~local_coupling.
 // With ~local_coupling (the default) the node renders the virtual coupling itself, with the
 // device's profile (the one the physics pulls the proxy with, read from the interface's
-// namespace), from the freshest device position and the last god-object position (proxy,
-// geometry_msgs/PointStamped), on every device state (multi-rate rendering: topic latency then
-// delays the proxy, not the spring; a proxy older than ~proxy_timeout, 0.25 s, renders
-// nothing, so that the driver's watchdog ramps the force down when the physics dies);
+// namespace), from the freshest device position and the last step's god-object (proxy_state,
+// god_finger/ProxyState: the proxy, the target it answered, the step's force and contact
+// planes), on every device state, as the servo loop renders between steps
+// (runtime/multirate_render.h: a god-object on the step's planes, so topic latency delays the
+// walls, not free motion, and the spring is the hand's own; a malformed proxy state is counted,
+// rejected_proxy_states, and the last good one kept; one older than ~proxy_timeout, 0.25 s,
+// renders nothing, so that the driver's watchdog ramps the force down when the physics dies);
 // otherwise it forwards the physics' feedback. Workspace
 // mapping: the interface's workspace_scale, force_scale, workspace_offset, workspace_rotation.
 // A device position beyond the profile's workspace_radius is clamped before it is mapped and the

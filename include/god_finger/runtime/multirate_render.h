@@ -83,22 +83,18 @@ struct MultirateStep
   std::array<Eigen::Vector3d, kMaxPlanes> plane_normals{};
 };
 
-// The proxy a step predicts for the device at `target` (m, world), for a coupling of `stiffness`
-// (N/m): the god-object on the step's planes for the device at target + o, out of every plane it
-// is behind (a few rounds of projection; exact for one plane or orthogonal ones), where o is what
-// the planes do not explain of the step's stretch: step_target + user_force / stiffness (where
-// the step's force puts the proxy against its target: the free proxy's lag, a stuck friction
-// anchor's pull) less the god-object for step_target. The step's force is held so, continuous.
-Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target, double stiffness);
+// The proxy a step predicts for the device at `target` (m, world): the god-object on the step's
+// planes, `target` pushed out of every plane it is behind (a few rounds of projection; exact for
+// one plane or orthogonal ones). Nothing of the step's own force is held: a force replayed from
+// a step a round trip old gives the hand energy it never put in (measured through the local
+// coupling: -0.05 J in free motion through 30 ms, before the first contact), where a spring to
+// a god-object on fixed planes is passive.
+Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target);
 
 // Decides this tick's force (N, world, on the hand) into state->force and updates the anchor and
 // exactness; returns true when the force is the step's reaction (not stale).
-// The hold's passivity parameters from the device port's (DeviceProfile::passivity): the same,
-// but no minimum dissipation asked (passivity_min_damping is for a hand ringing through a
-// delayed link; the hold has no delay), so free motion between steps stays free.
-PassivityParams holdPassivityParams(const PassivityParams& device_port);
-
-// `hold` (may be null): the hold's passivity controller (holdPassivityParams), reset at each hold's first tick.
+// `hold` (may be null): the hold's passivity controller (the device profile's PassivityParams), reset at each hold's
+// first tick.
 bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, const MultirateDevice& device,
                      const MultirateStep& step, MultirateState* state, PassivityController* hold = nullptr);
 }  // namespace god_finger
