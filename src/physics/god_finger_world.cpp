@@ -1136,6 +1136,26 @@ void GodFingerWorld::reset()
   impl_->buildWorld();
 }
 
+bool GodFingerWorld::carryFreeProxy(int interface, const Eigen::Vector3d& by)
+{
+  Impl& impl = *impl_;
+  Proxy& proxy = impl.proxies.at(interface);
+  if (!by.allFinite())
+  {
+    return false;
+  }
+  // Sleeping bodies are out of Bullet's world: those in the swept box wake first (as a proxy
+  // near them would wake them in the step), so that the sweep sees them.
+  const btBroadphaseProxy* handle = proxy.rigid->getBroadphaseHandle();
+  const btVector3 shift = toBullet(by);
+  btVector3 low = handle->m_aabbMin;
+  btVector3 high = handle->m_aabbMax;
+  low.setMin(handle->m_aabbMin + shift);
+  high.setMax(handle->m_aabbMax + shift);
+  impl.dormant.wakeOverlapping(low, high, [&impl](int index) { impl.addAwake(index, true); });
+  return internal::carryFreeProxy(impl.world.get(), by, &proxy);
+}
+
 void GodFingerWorld::resetAtInterfaces()
 {
   for (Proxy& proxy : impl_->proxies)

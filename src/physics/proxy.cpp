@@ -43,4 +43,47 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->soft_load.setZero();
   proxy->soft_load_body = -1;
 }
+namespace
+{
+// The closest hit of a sweep, the swept proxy's own body left out.
+struct SweepFrom : btCollisionWorld::ClosestConvexResultCallback
+{
+  SweepFrom(const btCollisionObject* self, const btVector3& from, const btVector3& to)
+      : ClosestConvexResultCallback(from, to), self(self)
+  {
+  }
+  bool needsCollision(btBroadphaseProxy* other) const override
+  {
+    return other->m_clientObject != self && ClosestConvexResultCallback::needsCollision(other);
+  }
+  const btCollisionObject* self;
+};
+}  // namespace
+
+bool carryFreeProxy(btCollisionWorld* world, const Eigen::Vector3d& by, Proxy* proxy)
+{
+  if (proxy->state.contact_count > 0 || proxy->let_go_steps > 0 || !by.allFinite() || by.isZero(0.0))
+  {
+    return false;
+  }
+  btRigidBody& body = *proxy->rigid;
+  const btTransform from = body.getWorldTransform();
+  btTransform to = from;
+  to.setOrigin(from.getOrigin() + btVector3(by.x(), by.y(), by.z()));
+  SweepFrom sweep(&body, from.getOrigin(), to.getOrigin());
+  const btBroadphaseProxy* handle = body.getBroadphaseHandle();
+  if (handle != nullptr)
+  {
+    sweep.m_collisionFilterGroup = handle->m_collisionFilterGroup;
+    sweep.m_collisionFilterMask = handle->m_collisionFilterMask;
+  }
+  world->convexSweepTest(proxy->shape.get(), from, to, sweep);
+  if (sweep.hasHit())
+  {
+    return false;  // something on the way: the coupling pulls it there as usual
+  }
+  body.setWorldTransform(to);
+  body.setInterpolationWorldTransform(to);
+  return true;
+}
 }  // namespace god_finger::internal

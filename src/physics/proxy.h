@@ -76,4 +76,9 @@ inline btTransform padFrame(const Proxy& proxy, const btCollisionObject& proxy_o
 // `body_count` bodies) and resets its per-step state; the caller adds it to the world.
 void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, int index, int body_count,
                     Proxy* proxy);
+
+// Moves a free proxy (no contact at its last step, not letting go) by `by` (m, world) when its
+// sphere swept along `by` meets nothing in `world` (other proxies and bodies alike), keeping its
+// velocity; returns whether it moved. Real-time safe (Bullet's sweep allocates nothing).
+bool carryFreeProxy(btCollisionWorld* world, const Eigen::Vector3d& by, Proxy* proxy);
 }  // namespace god_finger::internal

@@ -392,9 +392,17 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
     }
     else
     {
-      // The skipped ticks' motion is not one step's: the damping takes the device's velocity
-      // (a let-go finger's: zero; the rotational coupling's takes the orientation's change over
-      // the skipped ticks).
+      // The skipped ticks' motion is not one step's: a free proxy is carried across it (less the
+      // one step's motion the coupling makes), and the damping takes the device's velocity (a
+      // let-go finger's: zero; the rotational coupling's takes the orientation's change over the
+      // skipped ticks).
+      if (!consecutive && !frame.let_go[i] && frame.targets[i].allFinite() && frame.velocities[i].allFinite())
+      {
+        const Eigen::Vector3d skipped = frame.targets[i] -
+                                        world_->interfaceState(static_cast<int>(i)).interface_position -
+                                        frame.velocities[i] / params_.rate;
+        world_->carryFreeProxy(static_cast<int>(i), skipped);
+      }
       world_->setInterfaceTarget(static_cast<int>(i), frame.targets[i], frame.velocities[i]);
       if (frame.oriented[i])
       {

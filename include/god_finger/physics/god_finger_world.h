@@ -99,6 +99,11 @@ class GodFingerWorld
   // (the servo loop's physics when it runs late), whose difference would put several periods'
   // motion into one step. Non-finite position or velocity: ignored and counted.
   void setInterfaceTarget(int interface, const Eigen::Vector3d& position, const Eigen::Vector3d& velocity);
+  // Moves the interface's proxy by `by` (m, world) before the next step when it touched nothing
+  // at the last step and its sphere swept along `by` meets nothing (for a caller that skipped
+  // targets: the free proxy keeps up with the hand instead of being pulled across the skipped
+  // motion by the coupling); returns whether it moved. Real-time safe.
+  bool carryFreeProxy(int interface, const Eigen::Vector3d& by);
   // As the first, with the device's orientation (the finger frame in the world,
   // oriented_finger.h): the interface becomes an oriented (6-DOF) finger. The first orientation
   // given places the proxy's orientation there at rest (a reset restarts it there). A
