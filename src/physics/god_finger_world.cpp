@@ -1140,13 +1140,13 @@ bool GodFingerWorld::carryFreeProxy(int interface, const Eigen::Vector3d& by)
 {
   Impl& impl = *impl_;
   Proxy& proxy = impl.proxies.at(interface);
-  if (!by.allFinite())
+  const btBroadphaseProxy* handle = proxy.rigid->getBroadphaseHandle();
+  if (!carriable(proxy, by) || handle == nullptr)
   {
     return false;
   }
   // Sleeping bodies are out of Bullet's world: those in the swept box wake first (as a proxy
   // near them would wake them in the step), so that the sweep sees them.
-  const btBroadphaseProxy* handle = proxy.rigid->getBroadphaseHandle();
   const btVector3 shift = toBullet(by);
   btVector3 low = handle->m_aabbMin;
   btVector3 high = handle->m_aabbMax;

@@ -45,6 +45,18 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
 }
 namespace
 {
+// Whether a contact test found any point (Bullet's contact threshold included).
+struct TouchesAnything : btCollisionWorld::ContactResultCallback
+{
+  btScalar addSingleResult(btManifoldPoint&, const btCollisionObjectWrapper*, int, int, const btCollisionObjectWrapper*,
+                           int, int) override
+  {
+    any = true;
+    return 0.0;
+  }
+  bool any = false;
+};
+
 // The closest hit of a sweep, the swept proxy's own body left out.
 struct SweepFrom : btCollisionWorld::ClosestConvexResultCallback
 {
@@ -60,13 +72,24 @@ struct SweepFrom : btCollisionWorld::ClosestConvexResultCallback
 };
 }  // namespace
 
+bool carriable(const Proxy& proxy, const Eigen::Vector3d& by)
+{
+  return proxy.state.contact_count == 0 && proxy.let_go_steps == 0 && by.allFinite() && !by.isZero(0.0);
+}
+
 bool carryFreeProxy(btCollisionWorld* world, const Eigen::Vector3d& by, Proxy* proxy)
 {
-  if (proxy->state.contact_count > 0 || proxy->let_go_steps > 0 || !by.allFinite() || by.isZero(0.0))
+  if (!carriable(*proxy, by))
   {
     return false;
   }
   btRigidBody& body = *proxy->rigid;
+  TouchesAnything touches;
+  world->contactTest(&body, touches);
+  if (touches.any)
+  {
+    return false;  // in or at a body's shape where it is: left to the dynamics and the near callback
+  }
   const btTransform from = body.getWorldTransform();
   btTransform to = from;
   to.setOrigin(from.getOrigin() + btVector3(by.x(), by.y(), by.z()));

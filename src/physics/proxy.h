@@ -77,8 +77,12 @@ inline btTransform padFrame(const Proxy& proxy, const btCollisionObject& proxy_o
 void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, int index, int body_count,
                     Proxy* proxy);
 
-// Moves a free proxy (no contact at its last step, not letting go) by `by` (m, world) when its
-// sphere swept along `by` meets nothing in `world` (other proxies and bodies alike), keeping its
-// velocity; returns whether it moved. Real-time safe (Bullet's sweep allocates nothing).
+// Whether carryFreeProxy may move it by `by`: no contact at its last step, not letting go, `by`
+// finite and not zero.
+bool carriable(const Proxy& proxy, const Eigen::Vector3d& by);
+// Moves a carriable proxy by `by` (m, world) when its sphere touches nothing in `world` where it
+// is (Bullet's shapes: inside a hollow object's hull, whose true surface the near callback
+// keeps, it is never moved) and its sweep along `by` meets no body, keeping its velocity;
+// returns whether it moved. Real-time safe (Bullet's tests allocate nothing).
 bool carryFreeProxy(btCollisionWorld* world, const Eigen::Vector3d& by, Proxy* proxy);
 }  // namespace god_finger::internal

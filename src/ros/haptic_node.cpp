@@ -64,14 +64,15 @@ struct HapticNode::Impl
   std::mutex mutex;
   // The local coupling (under mutex): the last step's god-object (NAME/proxy_state), rendered
   // against between steps as the servo loop's haptic side does (runtime/multirate_render.h:
-  // a god-object on the step's contact planes, so free motion is free through any delay), and
-  // the renderer's state and the device's previous target and velocity (m, m/s, world).
+  // the step's proxy while the hand presses into its contact planes, the hand itself otherwise, so free motion is free
+  // through any delay), and the renderer's state and the device's previous target and velocity (m, m/s, world).
   MultirateStep step;
   MultirateState render;
   Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();
   Eigen::Vector3d previous_velocity = Eigen::Vector3d::Zero();
   bool have_previous = false;
   long rejected_proxy_states = 0;
+  ros::Time proxy_stamp;           // the last proxy state's (the pose it answered)
   ros::SteadyTime proxy_received;  // when the last proxy state came
   // s: older than this, the proxy is stale (the physics is gone); long enough that a loaded
   // machine delaying the proxy topic (tens of ms) does not cut the spring.
@@ -217,14 +218,21 @@ struct HapticNode::Impl
       return;
     }
     std::lock_guard<std::mutex> lock(mutex);
-    if (!have_proxy)
+    if (have_proxy && message->header.stamp < proxy_stamp)
     {
-      // The first step: its force as it is, the anchor on the proxy it predicts for the hand.
+      return;  // older than the step rendered against (a reordering link): the newer one stays
+    }
+    const bool stale = have_proxy && (ros::SteadyTime::now() - proxy_received).toSec() >= proxy_timeout;
+    if (!have_proxy || stale)
+    {
+      // The first step, or the first after the physics was gone: its force as it is, the anchor
+      // on the proxy it predicts for the hand.
       render.anchor = have_previous ? predictedProxy(read, previous_target) : read.proxy_position;
       render.force = read.user_force;
       render.exact = true;
     }
     step = read;
+    proxy_stamp = message->header.stamp;
     proxy_received = ros::SteadyTime::now();
     have_proxy = true;
   }

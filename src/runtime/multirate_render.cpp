@@ -7,10 +7,6 @@ namespace god_finger
 {
 namespace
 {
-// Rounds of projection onto the step's planes: one is exact for one plane or orthogonal ones; a
-// wedge sharper than a right angle is left at most a few per cent of the crossing inside.
-constexpr int kProjectionRounds = 4;
-
 // `v` shortened to length `limit` if longer (direction kept).
 Eigen::Vector3d clampedLength(const Eigen::Vector3d& v, double limit)
 {
@@ -18,54 +14,23 @@ Eigen::Vector3d clampedLength(const Eigen::Vector3d& v, double limit)
   return length > limit ? Eigen::Vector3d(v * (limit / length)) : v;
 }
 
-// `point` (m, world) pushed out of every one of the step's planes it is behind (a few rounds of
-// projection): the god-object on the planes for a device at `point`.
-Eigen::Vector3d outOfPlanes(const MultirateStep& step, const Eigen::Vector3d& point)
+// Whether the device at `target` presses into one of the step's contact planes (behind it).
+bool pressesIntoAPlane(const MultirateStep& step, const Eigen::Vector3d& target)
 {
-  Eigen::Vector3d proxy = point;
-  for (int round = 0; round < kProjectionRounds; ++round)
-  {
-    bool pushed = false;
-    for (int j = 0; j < step.plane_count; ++j)
-    {
-      const Eigen::Vector3d& n = step.plane_normals[j];
-      const double inside = (proxy - step.proxy_position).dot(n);  // m, < 0: behind the plane
-      if (inside < 0.0)
-      {
-        proxy -= inside * n;
-        pushed = true;
-      }
-    }
-    if (!pushed)
-    {
-      break;
-    }
-  }
-  return proxy;
-}
-
-// The prediction's velocity (m/s, world) for the device's `velocity` at `target`: its normal
-// part taken out on every plane the prediction is held by.
-Eigen::Vector3d predictedVelocity(const MultirateStep& step, const Eigen::Vector3d& target,
-                                  const Eigen::Vector3d& velocity)
-{
-  const Eigen::Vector3d& carried = target;
-  Eigen::Vector3d result = velocity;
   for (int j = 0; j < step.plane_count; ++j)
   {
-    const Eigen::Vector3d& n = step.plane_normals[j];
-    if ((carried - step.proxy_position).dot(n) < 0.0)
+    if ((target - step.proxy_position).dot(step.plane_normals[j]) < 0.0)
     {
-      result -= result.dot(n) * n;
+      return true;
     }
   }
-  return result;
+  return false;
 }
 }  // namespace
 
 Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target)
 {
-  return outOfPlanes(step, target);
+  return pressesIntoAPlane(step, target) ? step.proxy_position : target;
 }
 
 bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, const MultirateDevice& device,
@@ -85,7 +50,10 @@ bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, cons
   // On time (lag 0) the step is this tick's: its proxy is the prediction.
   const Eigen::Vector3d predicted = step.lag == 0 ? step.proxy_position : predictedProxy(step, device.target);
   const Eigen::Vector3d to_predicted = predicted - state->anchor;
-  if (to_predicted.norm() <= delta + moved)
+  // Out of every plane the prediction is the hand itself: the anchor is there at once (a held
+  // friction stretch let go moves no anchor across the hand's way; the force's bound spreads it).
+  const bool free = step.lag != 0 && !pressesIntoAPlane(step, device.target);
+  if (free || to_predicted.norm() <= delta + moved)
   {
     state->anchor = predicted;
   }
@@ -113,9 +81,14 @@ bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, cons
     // Where the proxy would be along n for that force: the device's place plus along / k_c.
     anchor += n * (device.target.dot(n) + along / k_c - state->anchor.dot(n));
   }
-  const CouplingForce spring = couplingForce(coupling, device.target, device.velocity, anchor,
-                                             predictedVelocity(step, device.target, device.velocity));
-  const double stored = 0.5 * state->force.squaredNorm() / coupling.stiffness;  // J, in the coupling's spring
+  const Eigen::Vector3d anchor_velocity =
+      pressesIntoAPlane(step, device.target) ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : device.velocity;
+  const CouplingForce spring = couplingForce(coupling, device.target, device.velocity, anchor, anchor_velocity);
+  // J: what the coupling's spring holds, and a soft body's in series with it.
+  const double compliance =
+      1.0 / coupling.stiffness +
+      (step.contact_stiffness < std::numeric_limits<double>::infinity() ? 1.0 / step.contact_stiffness : 0.0);
+  const double stored = 0.5 * state->force.squaredNorm() * compliance;
   state->force = state->force + clampedLength(-spring.on_proxy - state->force, bound);
   state->exact = false;
   if (hold != nullptr)

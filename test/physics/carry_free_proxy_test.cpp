@@ -48,8 +48,10 @@ TEST(CarryFreeProxy, AFreeProxyIsCarriedWhereNothingIsInTheWay)
 
 TEST(CarryFreeProxy, NotThroughABodyNorWhileTouchingOne)
 {
-  const std::unique_ptr<GodFingerWorld> made_above = worldWithHandAt(Eigen::Vector3d(0.3, 0.0, 0.05), 5);
+  // 1 s: the ball (body 1) has settled and sleeps, out of Bullet's world.
+  const std::unique_ptr<GodFingerWorld> made_above = worldWithHandAt(Eigen::Vector3d(0.3, 0.0, 0.05), 1000);
   GodFingerWorld& above = *made_above;
+  ASSERT_TRUE(above.bodyState(1).asleep);
   const Eigen::Vector3d before = above.interfaceState(0).proxy_position;
   EXPECT_FALSE(above.carryFreeProxy(0, Eigen::Vector3d(0.0, 0.0, -0.1)));  // through the table's top
   EXPECT_FALSE(above.carryFreeProxy(0, Eigen::Vector3d(-0.3, 0.0, 0.0)));  // through the ball, asleep

@@ -7,7 +7,8 @@ the table (the scene's stiff wall) and holds it: the hand feels the table, and t
 passivity observer (haptics/passivity_controller.h) finds the loop passive: the energy the hand
 put in never went below -1e-4 J, with the controller on (the default): with the local coupling
 (link.test: the spring rendered at the device against a god-object on the last step's contact
-planes, runtime/multirate_render.h, so free motion is free and the table comes 15 ms late) and
+planes, runtime/multirate_render.h, so free motion is free and a wall not yet touched comes a
+round trip late) and
 without it (link_remote.test: the physics' force a round trip late, where the controller has to
 act).
 Waits on conditions with deadlines."""

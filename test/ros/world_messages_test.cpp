@@ -41,8 +41,9 @@ TEST(WorldMessages, AProxyStateComesBackAsTheStepItWas)
   EXPECT_EQ(step.plane_normals[0], Eigen::Vector3d::UnitZ());
   EXPECT_EQ(step.plane_normals[1], -Eigen::Vector3d::UnitY());
   EXPECT_EQ(step.contact_stiffness, std::numeric_limits<double>::infinity());
-  // The god-object it predicts for the hand pressing on both faces: the corner's edge.
-  EXPECT_EQ(predictedProxy(step, Eigen::Vector3d(0.12, 0.003, -0.01)), Eigen::Vector3d(0.12, 0.0, 0.004));
+  // The god-object it predicts for a hand pressing into a face: the step's; out of both: the hand.
+  EXPECT_EQ(predictedProxy(step, Eigen::Vector3d(0.12, 0.003, -0.01)), state.proxy_position);
+  EXPECT_EQ(predictedProxy(step, Eigen::Vector3d(0.12, -0.003, 0.01)), Eigen::Vector3d(0.12, -0.003, 0.01));
 
   InterfaceState soft = state;
   soft.contact_count = 1;

@@ -1,7 +1,7 @@
 // The servo loop's parameter table (runtime/servo_loop.h): the docs show it as generated,
 // its defaults are valid and each bound is enforced with the parameter named.
-#include "god_finger/support/input_error.h"
 #include "god_finger/runtime/servo_loop.h"
+#include "god_finger/support/input_error.h"
 
 #include "docs_text.h"
 

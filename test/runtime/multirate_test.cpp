@@ -374,9 +374,9 @@ TEST(Multirate, AStallInFreeSpaceGivesNoForce)
 }
 
 // "Sticky air": a hand crossing free space through a 20 ms stall. Between steps the anchor is
-// the step's proxy carried with the hand (multirate_render.h), so the hand feels what the
-// on-time loop gives it (the proxy's small lag), not a spring pulling it back to where the
-// physics stopped (a fixed anchor: 800 N/m x 4 mm = 3.2 N).
+// the hand itself out of every contact plane of the last step (multirate_render.h), so the hand
+// feels what the on-time loop gives it (the proxy's small lag), not a spring pulling it back to
+// where the physics stopped (a fixed anchor: 800 N/m x 4 mm = 3.2 N).
 TEST(Multirate, AStallInFreeMotionFeelsLikeFreeMotion)
 {
   const long stall_at = 600;

@@ -5,10 +5,10 @@
 #include "god_finger/runtime/servo_loop.h"
 #include "allocation_counter.h"
 #include "device_profile_file.h"
-#include "god_finger/support/input_error.h"
 #include "god_finger/devices/fake_device.h"
-#include "god_finger/scene/urdf_scene.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 

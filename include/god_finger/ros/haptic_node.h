@@ -13,8 +13,9 @@
 // namespace), from the freshest device position and the last step's god-object (proxy_state,
 // god_finger/ProxyState: the proxy, the target it answered, the step's force and contact
 // planes), on every device state, as the servo loop renders between steps
-// (runtime/multirate_render.h: a god-object on the step's planes, so topic latency delays the
-// walls, not free motion, and the spring is the hand's own; a malformed proxy state is counted,
+// (runtime/multirate_render.h: the step's god-object while the hand presses into one of its
+// contact planes, the hand itself otherwise, so topic latency delays the walls, not free motion,
+// and the spring is the hand's own; an older proxy state than the last is ignored; a malformed proxy state is counted,
 // rejected_proxy_states, and the last good one kept; one older than ~proxy_timeout, 0.25 s,
 // renders nothing, so that the driver's watchdog ramps the force down when the physics dies);
 // otherwise it forwards the physics' feedback. Workspace

@@ -4,28 +4,31 @@
 //
 // When the step that took this tick's targets is done (lag 0) and the renderer was exact, the
 // hand gets the step's coupling reaction, bit for bit. Otherwise the anchor (the proxy position
-// the renderer pulls towards) moves to the step's proxy by at most
-// delta = max_force / (stiffness recovery_periods) per tick, and the force either rejoins the
-// step's reaction (lag 0, the anchor on the proxy, and the reaction within this tick's bound of
-// the last force) or is a spring to the anchor with damping on the device's own velocity,
-// saturated, moving from the last force by at most the bound
-// stiffness (|target - previous target| + delta) + damping |velocity - previous velocity|.
+// the renderer pulls towards) moves to the step's predicted proxy (below) by at most
+// delta = max_force / (stiffness recovery_periods) plus the device's move this tick (at once
+// where the prediction is the device itself, out of every plane), and the
+// force either rejoins the step's reaction (lag 0, the anchor on the proxy, and the reaction
+// within this tick's bound of the last force) or is a spring to the anchor with damping on the
+// device's velocity relative to the prediction's, saturated, moving from the last force by at
+// most the bound stiffness (|target - previous target| + delta) + damping |velocity - previous
+// velocity|.
 //
-// Between steps the proxy is predicted as a god-object on the step's contact planes (the
-// intermediate representation of Mark et al. 1996, one plane per contact the step reported, each
-// through the step's proxy with its contact normal; predictedProxy below). In free space the prediction
-// follows the hand (no "sticky air": a fixed anchor would pull it back by stiffness x its move);
-// into a contact it stays on the surface and slides along it. The anchor moves to the
-// prediction by at most delta plus the device's move this tick, so a new step's jump is spread
-// over recovery_periods as before, and the damping acts on the device's velocity relative to the
-// prediction's (none in free space, the normal part on a plane).
+// The predicted proxy (predictedProxy), from the planes of the step's contacts (one per contact,
+// through the step's proxy with its normal: the intermediate representation of Mark et al.
+// 1996): while the device presses into one of them, the step's proxy, fixed (the wall holds,
+// and the contact's friction holds the proxy where the step left it, as the physics does until
+// it slips); otherwise the device itself (free space stays free: a fixed anchor pulled a hand
+// crossing the air back by stiffness x its move, "sticky air"). Nothing of the step's own force
+// is held: replayed a round trip late through the haptic node's local coupling, it gave the hand
+// energy it never put in (0.05 J in free motion through 30 ms).
 //
 // The hold's passivity (haptics/passivity_controller.h, the same observer and controller as the
 // device driver's port): a non-null `hold` observes every tick not served by a step (a hold),
-// from the energy the coupling stored at the step the hold began on (1/2 |F|^2 / stiffness), and
-// damps or cuts a force that would give the hand more than that plus what the hand put in: energy
-// is spent only where it was stored. A hold is passive without it while the planes stand still;
-// a new step's planes or proxy moving under a stretched spring is what it catches.
+// from the energy the coupling stored at the step the hold began on (1/2 |F|^2 (1/stiffness +
+// 1/k_s), a soft contact's spring in series), and damps or cuts a force that would give the
+// hand more than that plus what the hand put in: energy is spent only where it was stored. A
+// spring to a fixed anchor is passive; a new step's proxy moving under a stretched spring is
+// what it catches.
 //
 // A soft contact (a finite contact stiffness k_s): between steps the proxy is not a wall but
 // yields along the contact's normal n as the body would, linearised at the step (SOFA's
@@ -83,12 +86,8 @@ struct MultirateStep
   std::array<Eigen::Vector3d, kMaxPlanes> plane_normals{};
 };
 
-// The proxy a step predicts for the device at `target` (m, world): the god-object on the step's
-// planes, `target` pushed out of every plane it is behind (a few rounds of projection; exact for
-// one plane or orthogonal ones). Nothing of the step's own force is held: a force replayed from
-// a step a round trip old gives the hand energy it never put in (measured through the local
-// coupling: -0.05 J in free motion through 30 ms, before the first contact), where a spring to
-// a god-object on fixed planes is passive.
+// The proxy a step predicts for the device at `target` (m, world): the step's proxy while
+// `target` is behind one of the step's planes, else `target`.
 Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target);
 
 // Decides this tick's force (N, world, on the hand) into state->force and updates the anchor and

@@ -52,9 +52,9 @@
 //      F = -sat(k_c (p_I - a) + b (v_I - v_a), max_force)      (CouplingProfile of the interface)
 //    with p_I, v_I the device's target and velocity ((p_I,k - p_I,k-1) / dt) in the world;
 //  - the anchor rule: in exact mode a is the last completed step's proxy position; out of it a
-//    moves toward the step's predicted proxy (the step's proxy carried by the device's move
-//    since that step and kept out of the step's contact planes: a god-object on the planes, so
-//    free space stays free and a wall stays a wall) by at most
+//    moves toward the step's predicted proxy (the step's proxy while the device presses into
+//    one of the step's contact planes, the device itself otherwise: a wall and its friction
+//    hold, free space stays free; there at once when it is the device) by at most
 //      delta + |p_I,k - p_I,k-1|,   delta = max_force / (k_c recovery_periods)   per period
 //    (so a proxy jump that the catching-up physics makes reaches the hand over at least
 //    recovery_periods periods per max_force of spring), and the commanded force moves toward
@@ -62,8 +62,8 @@
 //      B_k = k_c (|p_I,k - p_I,k-1| + delta) + b |v_I,k - v_I,k-1|
 //    Back to exact when on time, the anchor on the proxy and the step's force within B_k of the
 //    last command. So every change of force out of exact mode is at most B_k.
-//    Energy: a spring to a god-object on fixed planes plus damping is passive; what a new
-//    step's planes or proxy bring under a stretched spring, the hold's passivity observer and
+//    Energy: a spring to a fixed anchor or to the device itself plus damping is passive; what a
+//    new step's planes or proxy bring under a stretched spring, the hold's passivity observer and
 //    controller (the profile's PassivityParams, haptics/passivity_controller.h) keep within
 //    what the coupling stored when the hold began plus what the hand put in since.
 //    test/runtime/multirate_test.cpp measures it over 5 and 20 ms stalls: never more energy
