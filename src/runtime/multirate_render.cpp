@@ -52,7 +52,8 @@ bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, cons
   const Eigen::Vector3d to_predicted = predicted - state->anchor;
   // Out of every plane the prediction is the hand itself: the anchor is there at once (a held
   // friction stretch let go moves no anchor across the hand's way; the force's bound spreads it).
-  const bool free = step.lag != 0 && !pressesIntoAPlane(step, device.target);
+  const bool pressing = pressesIntoAPlane(step, device.target);
+  const bool free = step.lag != 0 && !pressing;
   if (free || to_predicted.norm() <= delta + moved)
   {
     state->anchor = predicted;
@@ -81,8 +82,7 @@ bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, cons
     // Where the proxy would be along n for that force: the device's place plus along / k_c.
     anchor += n * (device.target.dot(n) + along / k_c - state->anchor.dot(n));
   }
-  const Eigen::Vector3d anchor_velocity =
-      pressesIntoAPlane(step, device.target) ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : device.velocity;
+  const Eigen::Vector3d anchor_velocity = pressing ? Eigen::Vector3d(Eigen::Vector3d::Zero()) : device.velocity;
   const CouplingForce spring = couplingForce(coupling, device.target, device.velocity, anchor, anchor_velocity);
   // J: what the coupling's spring holds, and a soft body's in series with it.
   const double compliance =

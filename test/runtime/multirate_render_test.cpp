@@ -18,6 +18,16 @@ namespace god_finger
 {
 namespace
 {
+// A coupling of `stiffness` (N/m), `damping` (N s/m) and `max_force` (N).
+CouplingProfile couplingOf(double stiffness, double damping, double max_force)
+{
+  CouplingProfile coupling;
+  coupling.stiffness = stiffness;
+  coupling.damping = damping;
+  coupling.max_force = max_force;
+  return coupling;
+}
+
 TEST(MultirateRender, OnTimeTheStepsReactionPassesThroughExactly)
 {
   const CouplingProfile coupling;
@@ -77,10 +87,8 @@ TEST(MultirateRender, ALateStepIsRenderedAgainstAMovingAnchorWithoutAForceStep)
 }
 TEST(MultirateRender, OnASoftContactTheHandFeelsTheCouplingAndTheBodyInSeriesBetweenSteps)
 {
-  CouplingProfile coupling;
-  coupling.stiffness = 800.0;
-  coupling.damping = 0.0;  // the spring alone: damping acts on the device's velocity, the same either way
-  coupling.max_force = 20.0;
+  // The spring alone: damping acts on the device's velocity, the same either way.
+  const CouplingProfile coupling = couplingOf(800.0, 0.0, 20.0);
   const double k_s = 1200.0;  // N/m: a soft block under a pad (InterfaceState::contact_stiffness)
   const double k_series = coupling.stiffness * k_s / (coupling.stiffness + k_s);  // 480 N/m
   const Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
@@ -134,10 +142,7 @@ TEST(MultirateRender, OnASoftContactTheHandFeelsTheCouplingAndTheBodyInSeriesBet
 // anchor would have pulled it back by stiffness x its move: 800 N/m x 4 mm = 3.2 N.
 TEST(MultirateRender, BetweenStepsFreeSpaceStaysFree)
 {
-  CouplingProfile coupling;
-  coupling.stiffness = 800.0;
-  coupling.damping = 2.0;
-  coupling.max_force = 8.9;
+  const CouplingProfile coupling = couplingOf(800.0, 2.0, 8.9);
   MultirateState state;
   MultirateDevice device;
   const Eigen::Vector3d speed(0.2, 0.0, 0.0);  // m/s
@@ -167,10 +172,7 @@ TEST(MultirateRender, BetweenStepsFreeSpaceStaysFree)
 // the hand is free again, at once.
 TEST(MultirateRender, BetweenStepsAWallHoldsTheProxyAndFreeSpaceIsFreeAgain)
 {
-  CouplingProfile coupling;
-  coupling.stiffness = 800.0;
-  coupling.damping = 0.0;
-  coupling.max_force = 20.0;
+  const CouplingProfile coupling = couplingOf(800.0, 0.0, 20.0);
   MultirateState state;
   MultirateDevice device;
   device.target = device.previous_target = Eigen::Vector3d(0.0, 0.0, -0.005);  // 5 mm in
@@ -205,10 +207,7 @@ TEST(MultirateRender, BetweenStepsAWallHoldsTheProxyAndFreeSpaceIsFreeAgain)
 // that (the observer goes below zero), with it the hand gets at most that plus what it put in.
 TEST(MultirateRender, TheHoldGivesTheHandNoMoreThanTheCouplingStoredWithItsController)
 {
-  CouplingProfile coupling;
-  coupling.stiffness = 800.0;
-  coupling.damping = 2.0;
-  coupling.max_force = 20.0;
+  const CouplingProfile coupling = couplingOf(800.0, 2.0, 20.0);
   double given[2] = {0.0, 0.0};   // J, to the hand: off, on
   double lowest[2] = {0.0, 0.0};  // J, the observer's lowest
   for (int on = 0; on < 2; ++on)
