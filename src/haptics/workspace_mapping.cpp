@@ -69,6 +69,11 @@ Eigen::Vector3d WorkspaceMapping::forceToDevice(const Eigen::Vector3d& world_for
   return params_.force_scale * (rotation_.transpose() * world_force);
 }
 
+double WorkspaceMapping::powerToWorld(double device_power) const
+{
+  return device_power * params_.scale / params_.force_scale;
+}
+
 Eigen::Quaterniond WorkspaceMapping::orientationToWorld(const Eigen::Quaterniond& device_orientation) const
 {
   return params_.rotation * device_orientation;

@@ -1,6 +1,7 @@
 #include "god_finger/ros/haptic_node.h"
 #include "node_parameters.h"
 
+#include "channel_port.h"
 #include "device_frame.h"
 #include "diagnostics.h"
 #include "god_finger/DeviceState.h"
@@ -87,6 +88,12 @@ struct HapticNode::Impl
   long rejected_feedback = 0;
   long states = 0;
   long timer_ticks = 0;
+  // The channel's device port (channel_port.h): the hand's work through the rendered force,
+  // sent on device_energy; the physics port's packets from physics_energy.
+  std::unique_ptr<ChannelPort> channel;
+  ros::Time previous_state_stamp;  // under mutex: the last accepted state's
+  // s: a longer gap between two states (the driver paused) is not integrated over.
+  static constexpr double kLongestStateGap = 0.1;
 
   // `wall`: the workspace wall (device frame, haptics/workspace_bound.h), added to the command.
   void publishForce(const ros::Time& stamp, const Eigen::Vector3d& world_force, const Eigen::Vector3d& wall)
@@ -141,6 +148,15 @@ struct HapticNode::Impl
 
     std::lock_guard<std::mutex> lock(mutex);
     ++states;
+    // The hand's work through the channel since the last state: the force applied, less the
+    // workspace wall this node added to the command it applies (not the channel's).
+    const double gap = previous_state_stamp.isZero() ? 0.0 : (state->header.stamp - previous_state_stamp).toSec();
+    if (gap > 0.0 && gap <= kLongestStateGap)
+    {
+      const Eigen::Vector3d channel_force = fromVector(state->applied_force) - wall_force;
+      channel->observeWork(mapping.powerToWorld(-channel_force.dot(reading.velocity)) * gap, state->header.stamp);
+    }
+    previous_state_stamp = state->header.stamp;
     wall_force = input.wall_force;
     if (input.pressed & kButtonCycleModel)
     {
@@ -252,6 +268,7 @@ struct HapticNode::Impl
     addValue(&status, "rejected_orientations", std::to_string(rejected_orientations));
     addValue(&status, "rejected_feedback", std::to_string(rejected_feedback));
     addValue(&status, "rejected_proxy_states", std::to_string(rejected_proxy_states));
+    channel->addValues(&status);
     array.status.push_back(status);
     diagnostics_publisher.publish(array);
   }
@@ -339,6 +356,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   impl.feedback_subscriber = nh.subscribe("feedback", kSubscriberQueue, &Impl::onFeedback, &impl, hints);
   impl.proxy_subscriber = nh.subscribe("proxy_state", 1, &Impl::onProxyState, &impl, hints);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
+  impl.channel.reset(new ChannelPort(nh, "device_energy", "physics_energy"));
   impl.timer = nh.createTimer(ros::Duration(0.05), &Impl::onTimer, &impl);
   ROS_INFO("haptic: interface frame '%s', %s coupling", impl.frame.c_str(),
            impl.local_coupling ? "local" : "forwarded");

@@ -1,6 +1,7 @@
 #include "god_finger/ros/physics_node.h"
 #include "node_parameters.h"
 
+#include "channel_port.h"
 #include "diagnostics.h"
 #include "god_finger/ContactAreaArray.h"
 #include "god_finger/physics/god_finger_world.h"
@@ -70,6 +71,12 @@ struct PhysicsNode::Impl
     Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();     // N m, world (an oriented finger's)
     Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world
     InterfaceState state;                                      // the whole, for proxy_state
+    // The channel's physics port (channel_port.h): the work of the force answered over the move
+    // of the target the step took, sent on NAME/physics_energy after each step.
+    std::unique_ptr<ChannelPort> channel;
+    Eigen::Vector3d channel_target = Eigen::Vector3d::Zero();  // m, world: the last step's target
+    bool have_channel_target = false;
+    double channel_work = 0.0;  // J: this step's, for publishStep()
   };
 
   ros::NodeHandle nh;
@@ -232,6 +239,11 @@ struct PhysicsNode::Impl
       interface.user_torque = state.user_torque;
       interface.proxy_position = state.proxy_position;
       interface.state = state;
+      interface.channel_work = interface.have_channel_target
+                                   ? state.user_force.dot(state.interface_position - interface.channel_target)
+                                   : 0.0;
+      interface.channel_target = state.interface_position;
+      interface.have_channel_target = true;
     }
   }
 
@@ -254,6 +266,7 @@ struct PhysicsNode::Impl
       // Stamped as the feedback: the pose it answered.
       interface.proxy_state_publisher.publish(
           proxyStateMessage(interface.feedback_stamp.isZero() ? stamp : interface.feedback_stamp, interface.state));
+      interface.channel->observeWork(interface.channel_work, stamp);
     }
   }
 
@@ -329,6 +342,17 @@ struct PhysicsNode::Impl
     add("pad_solver", padSolverName(solver));
     add("left_world", left);  // bodies put back at their start (world_margin)
     array.status.push_back(status);
+    for (const Interface& interface : interfaces)
+    {
+      // The channel's physics port, per interface (channel_port.h).
+      diagnostic_msgs::DiagnosticStatus channel;
+      channel.name = node_name + ": channel " + interface.name;
+      channel.hardware_id = interface.name;
+      channel.level = diagnostic_msgs::DiagnosticStatus::OK;
+      channel.message = "physics port";
+      interface.channel->addValues(&channel);
+      array.status.push_back(channel);
+    }
     diagnostics_publisher.publish(array);
   }
 
@@ -418,6 +442,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", kPublisherQueue);
     interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", kPublisherQueue);
     interface.proxy_state_publisher = nh.advertise<god_finger::ProxyState>(names[i] + "/proxy_state", kPublisherQueue);
+    interface.channel.reset(new ChannelPort(nh, names[i] + "/physics_energy", names[i] + "/device_energy"));
   }
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);

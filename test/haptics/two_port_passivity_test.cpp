@@ -46,6 +46,28 @@ TEST(TwoPortPassivity, ALateOrLostPacketLeavesTheNewestLargestFigure)
   EXPECT_EQ(remote.energyIn(), 0.5);
 }
 
+TEST(TwoPortPassivity, AnObservedPortCountsWorkAndTakesANewSessionsFigureInsteadOfTheOldLarger)
+{
+  ObservedPort port;
+  port.observeWork(0.02);   // J into the channel
+  port.observeWork(-0.05);  // out
+  port.observeWork(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_NEAR(port.observer().in(), 0.02, 1e-15);
+  EXPECT_NEAR(port.observer().out(), 0.05, 1e-15);
+  EXPECT_NEAR(port.lowestMargin(), -0.05, 1e-15);  // nothing received yet
+  port.receive({1.0, 0.08}, 100.0);
+  port.receive({0.9, 0.06}, 100.0);  // late: changes nothing
+  EXPECT_NEAR(port.margin(), 0.03, 1e-15);
+  port.receive({0.1, 0.01}, 200.0);  // the other side started again: its new count, not the old 0.08
+  EXPECT_EQ(port.remote().energyIn(), 0.01);
+  EXPECT_NEAR(port.margin(), -0.04, 1e-15);
+  EXPECT_EQ(port.packets(), 3);
+  port.reset();
+  EXPECT_EQ(port.observer().out(), 0.0);
+  EXPECT_EQ(port.remote().energyIn(), 0.0);
+  EXPECT_EQ(port.packets(), 0);
+}
+
 TEST(TwoPortPassivity, TheDeviceLetsOutNoMoreThanThePhysicsGaveBack)
 {
   PassivityParams params;

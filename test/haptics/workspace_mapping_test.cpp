@@ -50,6 +50,19 @@ TEST(WorkspaceMapping, PassiveWhenForceScaleEqualsScale)
   EXPECT_NEAR(world_work, hand_work, 1e-15);
 }
 
+TEST(WorkspaceMapping, APowerAtTheDeviceIsTheWorldsPowerOfTheSameMotionAndForce)
+{
+  WorkspaceMappingParams params = turnedAndScaled();
+  params.force_scale = 0.25;  // not the passive mapping: the world sees scale / force_scale times the hand's power
+  const WorkspaceMapping mapping(params);
+  const Eigen::Vector3d device_velocity(0.1, -0.2, 0.05);
+  const Eigen::Vector3d world_force(1.0, 2.0, -3.0);
+  const double world_power = world_force.dot(mapping.velocityToWorld(device_velocity));
+  const double device_power = mapping.forceToDevice(world_force).dot(device_velocity);
+  EXPECT_NEAR(mapping.powerToWorld(device_power), world_power, 1e-14);
+  EXPECT_NEAR(world_power / device_power, params.scale / 0.25, 1e-12);
+}
+
 TEST(WorkspaceMapping, BadParametersAreNamed)
 {
   WorkspaceMappingParams params;

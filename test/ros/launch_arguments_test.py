@@ -127,7 +127,8 @@ class LaunchArguments(unittest.TestCase):
         result = roslaunch_nodes("demo.launch", ["topology:=processes", "delay:=0.03"])
         self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
         nodes = result.stdout.split()
-        for link in ("/finger/link_pose", "/finger/link_feedback", "/finger/link_proxy"):
+        for link in ("/finger/link_pose", "/finger/link_feedback", "/finger/link_proxy", "/finger/link_device_energy",
+                     "/finger/link_physics_energy"):
             self.assertIn(link, nodes)
         result = roslaunch_nodes("demo.launch", ["topology:=processes"])
         self.assertEqual(result.returncode, 0, result.stdout + result.stderr)

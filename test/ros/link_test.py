@@ -20,7 +20,7 @@ import rospy
 import rostest
 from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import Point, WrenchStamped
-from god_finger.msg import DeviceState
+from god_finger.msg import DeviceState, PortEnergy
 from ros_test_support import RosTestSupport, drag_marker
 from visualization_msgs.msg import InteractiveMarkerFeedback
 
@@ -31,6 +31,8 @@ class Link(RosTestSupport, unittest.TestCase):
     def setUp(self):
         rospy.init_node("link_test")
         self.statuses = {}  # status name -> {key: value}, the newest
+        self.reports = {}  # status name -> how many came
+        self.stamps = {}  # status name -> the newest one's stamp (s, ROS clock)
         self.state = None
         self.force = 0.0
         self.applied = 0.0  # N: the largest force the device applied since it was last cleared
@@ -41,6 +43,8 @@ class Link(RosTestSupport, unittest.TestCase):
     def on_diagnostics(self, array):
         for status in array.status:
             self.statuses[status.name] = {pair.key: pair.value for pair in status.values}
+            self.reports[status.name] = self.reports.get(status.name, 0) + 1
+            self.stamps[status.name] = array.header.stamp.to_sec()
 
     def on_state(self, message):
         self.state = message.position
@@ -89,6 +93,13 @@ class Link(RosTestSupport, unittest.TestCase):
               (rospy.get_param("/finger/haptic/local_coupling", True), free_motion))
         if rospy.get_param("/finger/haptic/local_coupling", True):
             self.assertLess(free_motion, 0.05)
+        # What the free motion moved through the channel (docs/devices.md: the world's coupling
+        # pulling its proxy after the hand), for the record.
+        device_free = self.newer("/finger/haptic: haptic")[1]
+        physics_free = self.newer("/physics: channel finger")[1]
+        print("channel after the free motion: device port in %s J out %s J; physics port in %s J out %s J" %
+              (device_free.get("channel_energy_in_J"), device_free.get("channel_energy_out_J"),
+               physics_free.get("channel_energy_in_J"), physics_free.get("channel_energy_out_J")))
         drag_marker(drag, Point(0.1, 0.0, 0.05), 0.1, 0.0, -0.02, 1.0)
         self.wait_for(lambda: self.force > 1.0, 20, lambda: "the hand to feel the table (%.2f N)" % self.force)
         # Each link delays by 15 ms (its mean over the last second).
@@ -124,6 +135,65 @@ class Link(RosTestSupport, unittest.TestCase):
         self.assertGreater(limit, 0.0)
         if not local:
             self.assertGreater(float(driver["passivity_dissipated_J"]), 0.0)
+        self.check_channel()
+
+    def newer(self, name, after=None):
+        """The next report of status `name` after this call (and stamped after `after`, s):
+        (stamp, values)."""
+        seen = self.reports.get(name, 0)
+        self.wait_for(lambda: self.reports.get(name, 0) > seen and (after is None or self.stamps[name] > after), 10,
+                      "a new report of %s" % name)
+        return self.stamps[name], self.statuses[name]
+
+    def check_figure_received(self, sender, receiver):
+        """The receiver's figure of the sender's E_in lies between the sender's own in a report
+        made well before (0.1 s: more than the 15 ms the packets travel) and in one made after."""
+        before_stamp, before = self.newer(sender)
+        received_stamp, received = self.newer(receiver, before_stamp + 0.1)
+        _, after = self.newer(sender, received_stamp + 0.01)
+        figure = float(received["channel_remote_energy_in_J"])
+        print("channel: %s received %.6g J of %s's E_in, which counted %s J before and %s J after" %
+              (receiver, figure, sender, before["channel_energy_in_J"], after["channel_energy_in_J"]))
+        self.assertGreaterEqual(figure, float(before["channel_energy_in_J"]))
+        self.assertLessEqual(figure, float(after["channel_energy_in_J"]))
+
+    def check_channel(self):
+        """The channel's two ports (src/ros/channel_port.h): each counts its own energy and
+        receives the other's E_in through the link, 15 ms late, never more than the sender has."""
+        device_name = "/finger/haptic: haptic"
+        physics_name = "/physics: channel finger"
+        for name in (device_name, physics_name):
+            self.wait_for(lambda: name in self.statuses, 10, "%s on /diagnostics" % name)
+        device = self.statuses[device_name]
+        physics = self.statuses[physics_name]
+        print("channel: device port %s" % {k: v for k, v in device.items() if k.startswith("channel")})
+        print("channel: physics port %s" % {k: v for k, v in physics.items() if k.startswith("channel")})
+        for values in (device, physics):
+            self.assertGreater(int(values["channel_packets"]), 1000)  # ~1 kHz each way for seconds
+            self.assertEqual(values["channel_rejected_packets"], "0")
+        # The hand pressed 2 cm into the table through the channel: its work, into the channel.
+        self.assertGreater(float(device["channel_energy_in_J"]), 0.01)
+        # Each side's figure of the other's E_in: what the other had counted by then, across the
+        # link, never more.
+        self.check_figure_received(physics_name, device_name)
+        self.check_figure_received(device_name, physics_name)
+        # A malformed packet (a NaN, a negative energy) into either side is refused and counted; the
+        # figure it would have replaced stays.
+        bad = {device_name: ("/finger/link/physics_energy", float("nan")),
+               physics_name: ("/finger/device_energy", -1.0)}
+        for name, (topic, energy) in bad.items():
+            publisher = rospy.Publisher(topic, PortEnergy, queue_size=10)
+            self.wait_for(lambda: publisher.get_num_connections() > 0, 10, "a subscriber of %s" % topic)
+            packet = PortEnergy()
+            packet.header.stamp = rospy.Time.now()
+            packet.energy_in = energy
+            packet.session = rospy.Time(1.0)
+            _, before = self.newer(name)
+            publisher.publish(packet)
+            self.wait_for(lambda: self.statuses[name]["channel_rejected_packets"] == "1", 10,
+                          lambda: "%s to count the packet (%s)" % (name, self.statuses[name]))
+            self.assertGreaterEqual(float(self.statuses[name]["channel_remote_energy_in_J"]),
+                                    float(before["channel_remote_energy_in_J"]))
 
 if __name__ == "__main__":
     rostest.rosrun("god_finger", "link", Link, sys.argv)

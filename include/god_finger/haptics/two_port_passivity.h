@@ -106,6 +106,10 @@ class PortSide
   {
     return remote_;
   }
+  const RemoteEnergy& remote() const
+  {
+    return remote_;
+  }
   const PortEnergyObserver& observer() const
   {
     return observer_;
@@ -145,6 +149,47 @@ class PortSide
   RemoteEnergy remote_;
   double lowest_margin_ = 0.0;
   long active_ticks_ = 0;
+};
+
+// A port observed and not controlled: the nodes' form across processes (the haptic node's device
+// port, the physics node's physics port; their packets god_finger/PortEnergy on the link's
+// topics, their figures on /diagnostics). The sides count from `session` (the sender's start);
+// a packet of another session (the other side restarted) replaces the remote figure instead of
+// being compared with the old session's larger one.
+class ObservedPort : public PortSide
+{
+ public:
+  // J through the port this sample (> 0 into the channel; non-finite: not counted).
+  void observeWork(double work)
+  {
+    observer_.observe(work, 1.0);
+    noteMargin();
+  }
+  // The other side's packet of `session` (s, any clock, compared for equality only).
+  void receive(const EnergyPacket& packet, double session)
+  {
+    if (session != session_)
+    {
+      remote_.reset();
+      session_ = session;
+    }
+    remote_.receive(packet);
+    ++packets_;
+  }
+  long packets() const  // received since the last reset
+  {
+    return packets_;
+  }
+  void reset()
+  {
+    resetSide();
+    packets_ = 0;
+    session_ = std::numeric_limits<double>::quiet_NaN();
+  }
+
+ private:
+  double session_ = std::numeric_limits<double>::quiet_NaN();  // NaN: none yet (never equal)
+  long packets_ = 0;
 };
 
 // The device's side. Parameters: passivity_damping_limit (0: observer only, the force passes).

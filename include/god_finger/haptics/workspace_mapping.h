@@ -38,6 +38,9 @@ class WorkspaceMapping
   Eigen::Vector3d velocityToWorld(const Eigen::Vector3d& device_velocity) const;
   Eigen::Vector3d toDevice(const Eigen::Vector3d& world_position) const;
   Eigen::Vector3d forceToDevice(const Eigen::Vector3d& world_force) const;
+  // W: a power at the device (f_device . v_device) as the world's power of the same motion and
+  // force (f_world . v_world = scale / force_scale times it; equal for the passive mapping).
+  double powerToWorld(double device_power) const;
   // The finger frame's orientation in the device frame -> in the world (unit in, unit out).
   Eigen::Quaterniond orientationToWorld(const Eigen::Quaterniond& device_orientation) const;
   // N m, world -> device frame.

@@ -26,6 +26,9 @@
 // Buttons: button 0 cycles the contact model (god_object -> god_finger -> soft_finger), button
 // 1 resets the scene (services set_contact_model, reset_scene, resolved in ~physics_namespace).
 // Non-finite device states are rejected and counted (diagnostics), never published.
+// The channel's device port (src/ros/channel_port.h): the hand's work through the force applied
+// counted on every state and sent on device_energy (god_finger/PortEnergy); the physics port's
+// packets taken from physics_energy; both on /diagnostics (channel_*), a malformed packet counted.
 #pragma once
 
 #include <ros/node_handle.h>

@@ -6,7 +6,10 @@
 // all-zero quaternion keeps it 3-DOF: ros/world_messages.h poseMessage); publishes
 // NAME/feedback (geometry_msgs/WrenchStamped: the force on the hand and an oriented finger's
 // torque, world, every step) and NAME/proxy (geometry_msgs/PointStamped: the god-object, every
-// step). Publishes contact_areas (god_finger/ContactAreaArray), markers
+// step), NAME/proxy_state (god_finger/ProxyState: the haptic node's local coupling) and
+// NAME/physics_energy (god_finger/PortEnergy: the channel's physics port, src/ros/channel_port.h;
+// the device port's from NAME/device_energy, both on a `channel NAME` status of /diagnostics).
+// Publishes contact_areas (god_finger/ContactAreaArray), markers
 // (visualization_msgs/MarkerArray) and the TF of every body (world -> link name) at
 // ~publish_rate; /diagnostics at 1 Hz (step rate, overruns, rejected poses). Services:
 // reset_scene (std_srvs/Trigger), set_contact_model (god_finger/SetContactModel). A proxy
