@@ -128,7 +128,6 @@ struct GodFingerWorld::Impl
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btDbvtBroadphase> broadphase;
   std::unique_ptr<ContactSolver> solver;
-  std::vector<btVector3> finger_spins;  // per proxy: what its torsional rows see it turn at (setFingerSpins)
   std::unique_ptr<HookedWorld> world;
   std::unique_ptr<SubGodObjectInjector> injector;
   // This step's pads (pad_solver: constraint); the solver reads them.
@@ -640,25 +639,6 @@ struct GodFingerWorld::Impl
     }
   }
 
-  // soft_finger's pad (Bullet's spinning and rolling friction) follows an oriented finger: its
-  // proxy's torsional rows see the finger's angular velocity (ContactSolver::setFingerSpins), as
-  // the pad constraint's rows do (pad_state.h), so what it holds turns with the finger within the
-  // rows' bounds; the contact's linear rows see a proxy that does not turn (the pulp rolls, it
-  // does not scrub). The points layout and god_object: none. 3-DOF fingers: zero.
-  void setFingerSpins()
-  {
-    finger_spins.resize(proxies.size());
-    bool any = false;
-    for (std::size_t i = 0; i < proxies.size(); ++i)
-    {
-      const FingerOrientation& finger = proxies[i].orientation;
-      const bool spins = params.model == ContactModel::kSoftFinger && finger.oriented;
-      finger_spins[i] = spins ? toBullet(finger.angular_velocity) : btVector3(0, 0, 0);
-      any = any || spins;
-    }
-    solver->setFingerSpins(any ? &finger_spins : nullptr);
-  }
-
   // The oriented proxy's body cannot turn through what its tip touched at the last step
   // (oriented_finger.h, limitFingerByContacts).
   static void limitByLastContacts(Proxy* proxy)
@@ -730,7 +710,6 @@ struct GodFingerWorld::Impl
         proxy_force_before[i] = toEigen(proxies[i].rigid->getTotalForce());
       }
     }
-    setFingerSpins();
     world->stepSimulation(dt, 0);
     injector->recordImpulses(&proxies, steps);
     pads.recordImpulses(steps);

@@ -132,25 +132,6 @@ TEST(CylinderTurn, OrientedFingersTurnItWithTheirPadsAtEverySqueeze)
   EXPECT_LT(human.max_tilt_rad, 0.02);
 }
 
-TEST(CylinderTurn, OrientedSoftFingersTurnItWithTheFingerWhereTheyLockedIt)
-{
-  // soft_finger's pad is Bullet's spinning and rolling friction: its rows now see the proxy turn
-  // with the oriented finger (ContactSolver::setFingerSpins), as the pad constraint's rows do.
-  // Before, the pulp's offset moved the contact while the rows held the cylinder to a proxy that
-  // did not turn: at 20 mm it did not turn at all (0.000 rad; 3-DOF: 1.23 rad, above).
-  constexpr const PadLayout& kSoft = kPadLayouts[1];
-  const CylinderTurnResult hard = turn(kSoft, 0.02, perfectOperator(), true);
-  EXPECT_TRUE(hard.turned);
-  EXPECT_NEAR(hard.turn_rad, kTurnAngle, 0.005);
-  EXPECT_LT(hard.max_tilt_rad, 0.005);
-  // At 10 mm within 0.01 rad; at a light 5 mm squeeze the linear friction's roll on the mantle
-  // still adds 6 degrees ((r + proxy radius) / r, as a 3-DOF finger's), within the task's tolerance.
-  const CylinderTurnResult medium = turn(kSoft, 0.01, perfectOperator(), true);
-  EXPECT_TRUE(medium.turned);
-  EXPECT_NEAR(medium.turn_rad, kTurnAngle, 0.01);
-  EXPECT_TRUE(turn(kSoft, 0.005, perfectOperator(), true).turned);
-}
-
 TEST(CylinderTurn, ABadSqueezeIsRefused)
 {
   CylinderTurnOptions options;

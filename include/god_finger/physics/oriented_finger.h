@@ -22,9 +22,7 @@
 //     spring above is stretched and the hand feels it (-tau), as a god-object's hand feels its
 //     stopped proxy.
 //     The pads the proxy holds turn with it
-//     (src/physics/solver/pad_state.h; soft_finger's spinning and rolling friction through its
-//     rows' target, src/physics/solver/contact_solver.h setFingerSpins; not the points layout's),
-//     and what resists them (their rows' torque on the
+//     (src/physics/solver/pad_state.h), and what resists them (their rows' torque on the
 //     objects, turned back) is added to the hand's torque, InterfaceState::user_torque; the
 //     servo loop sends it to a device on its profile's torque_axes, saturated at max_torque (haptics/device_profile.h;
 //     the Omni/Touch and the Falcon render force only: none).

@@ -23,17 +23,6 @@ btScalar ContactSolver::solveGroup(btCollisionObject** bodies, int num_bodies, b
                                                          num_constraints, info, debug_draw, dispatcher);
 }
 
-btVector3 ContactSolver::spinOf(const btSolverBody& body) const
-{
-  const btCollisionObject* object = body.m_originalBody;
-  if (object == nullptr || object->getUserIndex() != kKindProxy)
-  {
-    return btVector3(0, 0, 0);
-  }
-  const int index = object->getUserIndex2();
-  return index >= 0 && index < static_cast<int>(finger_spins_->size()) ? (*finger_spins_)[index] : btVector3(0, 0, 0);
-}
-
 StepPad* ContactSolver::padOf(const btSolverConstraint& row) const
 {
   const int contact = row.m_frictionIndex;
@@ -67,10 +56,6 @@ void ContactSolver::convertContacts(btPersistentManifold** manifolds, int num_ma
     btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
     btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
     addExternalTorques(a, b, &row);
-    if (finger_spins_ != nullptr)
-    {
-      addSpins(spinOf(a), spinOf(b), &row);
-    }
     const StepPad* pad = padOf(row);
     if (pad != nullptr)
     {

@@ -10,9 +10,6 @@
 //   manifold point.
 // - Support passes (support_pass.h): after the iterations, proxies pressing light objects onto
 //   static ones are held.
-// - Finger spins (setFingerSpins): a proxy's torsional rows (soft_finger's spinning and rolling
-//   friction) see the proxy turning with its oriented finger, though its body never turns (zero
-//   inverse inertia): what it holds turns with the finger, within the rows' bounds.
 //
 // Units: Bullet's (SI). Counts the proxies' contact points it receives and the rows it solves.
 // Not real-time safe to construct; solving reuses Bullet's pools and its own lists once they
@@ -36,12 +33,6 @@ class ContactSolver : public btSequentialImpulseConstraintSolver
   btScalar solveGroup(btCollisionObject** bodies, int num_bodies, btPersistentManifold** manifolds, int num_manifolds,
                       btTypedConstraint** constraints, int num_constraints, const btContactSolverInfo& info,
                       btIDebugDraw* debug_draw, btDispatcher* dispatcher) override;
-  // Per proxy index (the proxy body's user index 2), the turn its torsional rows see (rad/s,
-  // world; zero: none), or null for none; owned by the world, outlives the solver's use.
-  void setFingerSpins(const std::vector<btVector3>* spins)
-  {
-    finger_spins_ = spins;
-  }
   void resetCounts()
   {
     proxy_points_ = 0;
@@ -74,10 +65,7 @@ class ContactSolver : public btSequentialImpulseConstraintSolver
  private:
   // The pad a torsional row belongs to, or null.
   StepPad* padOf(const btSolverConstraint& row) const;
-  // A proxy's spin (setFingerSpins), zero for any other body.
-  btVector3 spinOf(const btSolverBody& body) const;
   PadConstraints* pads_;
-  const std::vector<btVector3>* finger_spins_ = nullptr;
   // This solve's side table: per normal row (Bullet's contact pool), its pad or null; empty
   // when there is no pad.
   std::vector<StepPad*> pad_of_contact_row_;

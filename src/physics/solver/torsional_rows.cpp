@@ -42,10 +42,4 @@ void addExternalTorques(const btSolverBody& a, const btSolverBody& b, btSolverCo
                             (b.m_originalBody ? row->m_relpos2CrossNormal.dot(b.m_externalTorqueImpulse) : 0.0);
   row->m_rhs -= external * row->m_jacDiagABInv;
 }
-
-void addSpins(const btVector3& spin_a, const btVector3& spin_b, btSolverConstraint* row)
-{
-  const btScalar turn = row->m_relpos1CrossNormal.dot(spin_a) + row->m_relpos2CrossNormal.dot(spin_b);
-  row->m_rhs -= turn * row->m_jacDiagABInv;
-}
 }  // namespace god_finger::internal

@@ -32,9 +32,4 @@ void scaleToLever(btSolverConstraint* row);
 // Adds this step's external torques on the row's bodies `a` and `b` (which Bullet leaves out of
 // these rows' velocity) to the row's target.
 void addExternalTorques(const btSolverBody& a, const btSolverBody& b, btSolverConstraint* row);
-
-// Makes the row see body `a` or `b` turning at `spin_a`, `spin_b` (rad/s, world) on top of its
-// own angular velocity: a row whose target is the bodies' relative turn then drags the other body
-// with that turn (within its bound). After scaleToLever.
-void addSpins(const btVector3& spin_a, const btVector3& spin_b, btSolverConstraint* row);
 }  // namespace god_finger::internal
