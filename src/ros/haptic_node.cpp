@@ -351,12 +351,13 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   {
     impl.torque_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/torque", kPublisherQueue);
   }
+  // Before the subscribers: a nodelet manager's threads call onState as soon as it is subscribed.
+  impl.channel.reset(new ChannelPort(nh, "device_energy", "physics_energy"));
   const ros::TransportHints hints = ros::TransportHints().tcpNoDelay();
   impl.state_subscriber = nh.subscribe("device/state", kSubscriberQueue, &Impl::onState, &impl, hints);
   impl.feedback_subscriber = nh.subscribe("feedback", kSubscriberQueue, &Impl::onFeedback, &impl, hints);
   impl.proxy_subscriber = nh.subscribe("proxy_state", 1, &Impl::onProxyState, &impl, hints);
   impl.diagnostics_publisher = nh.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
-  impl.channel.reset(new ChannelPort(nh, "device_energy", "physics_energy"));
   impl.timer = nh.createTimer(ros::Duration(0.05), &Impl::onTimer, &impl);
   ROS_INFO("haptic: interface frame '%s', %s coupling", impl.frame.c_str(),
            impl.local_coupling ? "local" : "forwarded");

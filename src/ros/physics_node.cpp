@@ -435,6 +435,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     {
       throw InputError("interface '" + names[i] + "': " + unstable);
     }
+    interface.channel.reset(new ChannelPort(nh, names[i] + "/physics_energy", names[i] + "/device_energy"));
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
         names[i] + "/pose", kSubscriberQueue,
         [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),
@@ -442,7 +443,6 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", kPublisherQueue);
     interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", kPublisherQueue);
     interface.proxy_state_publisher = nh.advertise<god_finger::ProxyState>(names[i] + "/proxy_state", kPublisherQueue);
-    interface.channel.reset(new ChannelPort(nh, names[i] + "/physics_energy", names[i] + "/device_energy"));
   }
   impl.contact_publisher = nh.advertise<god_finger::ContactAreaArray>("contact_areas", kPublisherQueue);
   impl.marker_publisher = nh.advertise<visualization_msgs::MarkerArray>("markers", 2);
