@@ -241,6 +241,7 @@ struct GodFingerWorld::Impl
       scene_box.extend(toEigen(min)).extend(toEigen(max));
     }
     bounds = worldBounds(scene_box, params.world_margin);
+    placeSoftSupports();
     for (std::size_t i = 0; i < proxies.size(); ++i)
     {
       addProxyToWorld(static_cast<int>(i));
@@ -359,8 +360,45 @@ struct GodFingerWorld::Impl
   }
 
   // After the step: an awake body outside the world's bounds goes back to its start (world_bounds.h).
+  // The resting soft bodies' supports end where the static bodies under them do
+  // (soft_body.h setSoftSupportExtent).
+  void placeSoftSupports()
+  {
+    std::vector<Eigen::AlignedBox3d> static_boxes;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+    {
+      if (scene.bodies[i].is_static && !bodies[i].soft)
+      {
+        btVector3 min;
+        btVector3 max;
+        bodies[i].rigid->getAabb(min, max);
+        static_boxes.emplace_back(toEigen(min), toEigen(max));
+      }
+    }
+    for (Body& body : bodies)
+    {
+      if (body.soft)
+      {
+        setSoftSupportExtent(static_boxes, &body);
+      }
+    }
+  }
+
   void catchEscapees()
   {
+    // A resting soft body pushed off its support falls; past the bounds it is put back where it
+    // started, settled, as a reset puts it.
+    for (const int index : soft_bodies)
+    {
+      Body& body = bodies[index];
+      const Eigen::Vector3d centre = toEigen(body.rigid->getWorldTransform().getOrigin());
+      if (body.soft->resting && (!centre.allFinite() || !bounds.contains(centre)))
+      {
+        resetSoftVolume(world.get(), &body);
+        ++body.left_world;
+        body.left_world_at = time;
+      }
+    }
     for (const int index : awake)
     {
       Body& body = bodies[index];

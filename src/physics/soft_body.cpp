@@ -163,6 +163,41 @@ void makeSoftVolume(const BodyDescription& description, double time_step, const 
   placeSurface(nullptr, body);
 }
 
+void setSoftSupportExtent(const std::vector<Eigen::AlignedBox3d>& static_boxes, SceneBody* body)
+{
+  SoftVolume& volume = *body->soft;
+  if (!volume.resting)
+  {
+    return;
+  }
+  // The support plane in the world: z = its height (makeSoftVolume: the plane under the lowest
+  // node, its normal the world's z).
+  const Eigen::Isometry3d& to_world = volume.body_in_world;
+  const Eigen::Isometry3d to_body = to_world.inverse();
+  double height = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d& node : volume.elastic->restMesh().nodes)
+  {
+    height = std::min(height, (to_world * node).z());
+  }
+  std::vector<SupportRectangle> extent;
+  for (const Eigen::AlignedBox3d& box : static_boxes)
+  {
+    if (std::abs(box.max().z() - height) > kSupportTopTolerance)
+    {
+      continue;
+    }
+    SupportRectangle rectangle;
+    const Eigen::Vector3d centre = box.center();
+    rectangle.centre = to_body * Eigen::Vector3d(centre.x(), centre.y(), height);
+    rectangle.u = to_body.linear() * Eigen::Vector3d::UnitX();
+    rectangle.v = to_body.linear() * Eigen::Vector3d::UnitY();
+    rectangle.half_u = 0.5 * box.sizes().x();
+    rectangle.half_v = 0.5 * box.sizes().y();
+    extent.push_back(rectangle);
+  }
+  volume.elastic->setSupportExtent(extent);
+}
+
 void addSoftContactLoad(const WorldContactArea& area, const Eigen::Vector3d& force_on_body, bool as_pad,
                         SoftVolume* volume)
 {

@@ -10,7 +10,8 @@
 // next step's proxies collide with and walk on the deformed surface.
 //
 // A resting body (<support value="resting">) is free: no node is glued; it stands on the plane
-// under its lowest point at load (world z up), with its <friction> (ElasticBody::setSupport), and
+// under its lowest point at load (world z up), where a static box of the scene is under it
+// (setSoftSupportExtent), with its <friction> (ElasticBody::setSupport), and
 // starts settled on it (stepped until it sleeps). Its Bullet body follows the volume's mean
 // displacement (`shift`), and the walk and Bullet meshes are its nodes less that shift: so the
 // fingers' friction anchors, material points of that body, go where the body goes, and a pinch
@@ -85,6 +86,15 @@ std::unique_ptr<TriangleMesh> makeSoftWalkMesh(const BodyDescription& descriptio
 constexpr double kSoftSettleTime = 5.0;  // s
 void makeSoftVolume(const BodyDescription& description, double time_step, const Eigen::Vector3d& gravity,
                     SceneBody* body);
+
+// The extent of a resting body's support (ElasticBody::SupportPlane::extent): the tops of the
+// `static_boxes` (world bounding boxes of the scene's static rigid bodies: a table) lying within
+// kSupportTopTolerance of its support plane, each the rectangle its box covers. Pushed past their
+// edges, its nodes are no longer held and it falls (then the world's bounds catch it). None
+// found: the whole plane, as a body resting on something that is not a box of the scene. A glued
+// body: nothing.
+constexpr double kSupportTopTolerance = 0.005;  // m
+void setSoftSupportExtent(const std::vector<Eigen::AlignedBox3d>& static_boxes, SceneBody* body);
 
 // A finger's contact force on the body (N, world) at `area`: spread as a pressure over its pad
 // (as_pad), or at its point.

@@ -4,7 +4,8 @@
 // with it) is caught: put back at its initial pose, at rest, as a reset puts it. Put back rather
 // than put to sleep where it is: the scene stays whole for the user, who can touch the body again,
 // and nothing keeps a body far away that the solver and the rviz view would chase. The world
-// counts the catches per body (BodyState::left_world) and the nodes report them. Internal to
+// counts the catches per body (BodyState::left_world) and the nodes report them. A resting soft
+// body is caught the same way (its Bullet body's origin; put back settled, soft_body.h). Internal to
 // physics (god_finger_world.cpp).
 //
 // Units: m, world frame. Real-time safe: no allocation; catching clears the body's contact pairs

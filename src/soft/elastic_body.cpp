@@ -329,6 +329,7 @@ void ElasticBody::setSupport(const SupportPlane& plane)
   {
     throw InputError("soft body: a support plane needs a unit normal, a finite offset and a friction >= 0");
   }
+  checkExtent(plane);
   support_ = plane;
   has_support_ = true;
   // The plane's directions: its normal and two along it.
@@ -388,6 +389,53 @@ void ElasticBody::setSupport(const SupportPlane& plane)
   support_coupling_.resize(rows, rows);
 }
 
+void ElasticBody::checkExtent(const SupportPlane& plane)
+{
+  for (const SupportRectangle& rectangle : plane.extent)
+  {
+    const auto unit_along = [&](const Eigen::Vector3d& axis)
+    { return std::abs(axis.norm() - 1.0) < 1e-9 && std::abs(axis.dot(plane.normal)) < 1e-9; };
+    if (!rectangle.centre.allFinite() || !unit_along(rectangle.u) || !unit_along(rectangle.v) ||
+        !(std::abs(rectangle.u.dot(rectangle.v)) < 1e-9) ||
+        !(rectangle.half_u >= 0.0 && std::isfinite(rectangle.half_u)) ||
+        !(rectangle.half_v >= 0.0 && std::isfinite(rectangle.half_v)))
+    {
+      throw InputError(
+          "soft body: a support rectangle needs a finite centre, unit orthogonal axes along the plane and half sizes "
+          ">= 0");
+    }
+  }
+}
+
+void ElasticBody::setSupportExtent(const std::vector<SupportRectangle>& extent)
+{
+  if (!has_support_)
+  {
+    throw InputError("soft body: an extent for a support it does not have");
+  }
+  SupportPlane plane = support_;
+  plane.extent = extent;
+  checkExtent(plane);
+  support_.extent = extent;
+}
+
+bool ElasticBody::overSupport(int node) const
+{
+  if (support_.extent.empty())
+  {
+    return true;
+  }
+  const Eigen::Vector3d at = position(node);
+  for (const SupportRectangle& rectangle : support_.extent)
+  {
+    if (rectangle.covers(at))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 void ElasticBody::holdOnSupport()
 {
   // The candidates that touch the plane or would pass it in this step.
@@ -397,7 +445,7 @@ void ElasticBody::holdOnSupport()
     const int node = support_nodes_[j];
     const double gap = support_.normal.dot(position(node)) - support_.offset;
     const double moving = support_.normal.dot(velocity_.segment<3>(3 * node));
-    if (gap <= kSupportContactGap || gap + time_step_ * moving < 0.0)
+    if ((gap <= kSupportContactGap || gap + time_step_ * moving < 0.0) && overSupport(node))
     {
       active_nodes_.push_back(static_cast<int>(j));
       support_gap_(active_nodes_.size() - 1) = gap;  // < 0 (rounding, the solver's tolerance): lifted back

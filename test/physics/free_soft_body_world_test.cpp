@@ -70,5 +70,37 @@ TEST(FreeSoftBodyWorld, AnObjectAddedElsewhereLeavesTheBallWhereItWas)
               1e3 * before.pose.translation().x(), 1e3 * after.pose.translation().x());
   EXPECT_TRUE(after.pose.isApprox(before.pose, 1e-12)) << after.pose.matrix() << "\n" << before.pose.matrix();
 }
+
+// Pushed off the table's edge the ball falls (its support ends where the table does); past the
+// world's bounds it is put back where it started, settled, and counted (BodyState::left_world).
+TEST(FreeSoftBodyWorld, PushedOffTheTableItFallsAndIsPutBack)
+{
+  GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/soft_ball.urdf"), WorldParams());
+  const int ball = world.scene().find("soft_ball");
+  WorldSnapshot start;
+  world.snapshot(&start);
+  // Outside the table's 1 m square, a finger at the ball's equator, pushing it toward -x (its
+  // edge at x = -0.5).
+  const int finger = world.addInterface(Eigen::Vector3d(0.045, 0.0, 0.03));
+  double lowest_centre = 0.0;
+  int steps = 0;
+  for (; steps < 8000 && world.bodyState(ball).left_world == 0; ++steps)
+  {
+    world.setInterfaceTarget(finger, Eigen::Vector3d(std::max(-0.75, 0.045 - 0.3 * steps * 1e-3), 0.0, 0.03));
+    world.step();
+    lowest_centre = std::min(lowest_centre, world.bodyState(ball).pose.translation().z());
+  }
+  const BodyState caught = world.bodyState(ball);
+  std::printf("caught after %.3f s, having fallen to %.3f m\n", steps * 1e-3, lowest_centre);
+  ASSERT_EQ(caught.left_world, 1);
+  EXPECT_LT(lowest_centre, -0.5);  // it fell past the table's top (z = 0), toward the bounds
+  // Put back at its start: the surface as the scene began.
+  WorldSnapshot back;
+  world.snapshot(&back);
+  ASSERT_EQ(back.soft_surfaces.size(), 1u);
+  EXPECT_EQ(back.soft_surfaces[0].vertices, start.soft_surfaces[0].vertices);
+  EXPECT_NEAR(caught.pose.translation().x(), world.bodyState(ball).pose.translation().x(), 0.0);
+  EXPECT_LT(std::abs(caught.pose.translation().x()), 1e-3);
+}
 }  // namespace
 }  // namespace god_finger

@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
 
 namespace god_finger
 {
@@ -167,6 +170,70 @@ TEST(FreeSoftBody, AStepOnItsSupportAllocatesNothing)
   EXPECT_EQ(test::allocationCount() - before, 0);
 }
 
+// A support ends where its extent does (a table's edge): a block over it rests exactly as on the
+// whole plane; one beside it falls freely (implicit Euler's fall: g dt^2 n (n + 1) / 2).
+TEST(FreeSoftBody, ItRestsOnlyOverItsSupportsExtent)
+{
+  const TetMesh mesh = block5cm();  // x, y in [-2.5, 2.5] cm
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(3 * static_cast<int>(mesh.nodes.size()));
+  const auto run = [&](const std::vector<SupportRectangle>& extent, int steps)
+  {
+    auto body =
+        std::make_unique<ElasticBody>(mesh, rubber(0.1, mesh), std::vector<int>(), 1e-3, Eigen::Vector3d(0, 0, -9.81));
+    SupportPlane plane;
+    plane.friction = 0.8;
+    body->setSupport(plane);
+    body->setSupportExtent(extent);
+    for (int step = 0; step < steps; ++step)
+    {
+      body->step(none);
+    }
+    return body;
+  };
+  SupportRectangle table;  // a table top 1 m square
+  table.half_u = table.half_v = 0.5;
+  const auto whole = run({}, 400);
+  const auto over = run({table}, 400);
+  EXPECT_EQ(over->displacement(), whole->displacement());
+  EXPECT_NEAR(over->supportForce(), 0.1 * 9.81, 1e-6);
+  SupportRectangle beside = table;  // its edge 1 mm short of the block's side
+  beside.centre.x() = -0.5 - 0.026;
+  const int fall_steps = 100;
+  const auto fallen = run({beside}, fall_steps);
+  EXPECT_EQ(fallen->supportForce(), 0.0);
+  const double fall = 9.81 * 1e-6 * fall_steps * (fall_steps + 1) / 2.0;
+  for (int node = 0; node < fallen->nodeCount(); ++node)
+  {
+    EXPECT_NEAR(fallen->displacement()(3 * node + 2), -fall, 1e-6 * fall) << "node " << node;
+  }
+  // Its centre 1 cm past the edge: the part beyond it drops below the plane, further and further
+  // as it turns over the edge; the part over the table stays on the plane.
+  SupportRectangle edge = table;
+  edge.centre.x() = -0.5 - 0.01;
+  const auto lowest = [&](const ElasticBody& body, bool beyond)
+  {
+    double z = std::numeric_limits<double>::infinity();
+    for (int node = 0; node < body.nodeCount(); ++node)
+    {
+      if ((mesh.nodes[node].x() > -0.01) == beyond)
+      {
+        z = std::min(z, body.position(node).z());
+      }
+    }
+    return z;
+  };
+  const auto early = run({edge}, 150);
+  const auto later = run({edge}, 300);
+  std::printf(
+      "its centre 1 cm past the edge: after 0.15 s the part beyond it %.2f mm below the plane, "
+      "after 0.3 s %.2f mm; the part over it %.4f mm above\n",
+      -1e3 * lowest(*early, true), -1e3 * lowest(*later, true), 1e3 * lowest(*later, false));
+  EXPECT_LT(lowest(*early, true), -5e-3);
+  EXPECT_LT(lowest(*later, true), lowest(*early, true) - 1e-3);
+  EXPECT_GE(lowest(*early, false), -1e-6);
+  EXPECT_GE(lowest(*later, false), -1e-6);
+}
+
 TEST(FreeSoftBody, RefusesABadSupport)
 {
   const TetMesh mesh = block5cm();
@@ -179,6 +246,27 @@ TEST(FreeSoftBody, RefusesABadSupport)
   EXPECT_THROW(body.setSupport(plane), InputError);
   plane.friction = -0.1;
   EXPECT_THROW(body.setSupport(plane), InputError);
+  plane.friction = 0.5;
+  EXPECT_THROW(body.setSupportExtent({}), InputError) << "no support yet";
+  body.setSupport(plane);
+  SupportRectangle rectangle;
+  rectangle.half_u = rectangle.half_v = 0.1;
+  body.setSupportExtent({rectangle});
+  for (const auto& bad :
+       std::vector<std::function<void(SupportRectangle*)>>{
+           [](SupportRectangle* r) { r->u = Eigen::Vector3d(0, 0, 1); },  // across the plane
+           [](SupportRectangle* r) { r->v = Eigen::Vector3d(2, 0, 0); },  // not unit
+           [](SupportRectangle* r) { r->v = Eigen::Vector3d::UnitX(); },  // not orthogonal
+           [](SupportRectangle* r) { r->half_u = -0.1; },                 // negative
+           [](SupportRectangle* r) { r->half_v = std::nan(""); },         // not a number
+           [](SupportRectangle* r) { r->centre.x() = std::nan(""); }})
+  {
+    SupportRectangle broken = rectangle;
+    bad(&broken);
+    EXPECT_THROW(body.setSupportExtent({rectangle, broken}), InputError);
+    plane.extent = {broken};
+    EXPECT_THROW(body.setSupport(plane), InputError);
+  }
 }
 
 TEST(BallMesh, IsABallOfItsRadiusStandingOnZeroAndRefusesTooFewCells)

@@ -30,8 +30,8 @@
 // 0 and forces on them are taken by the support. The state (displacement u, velocity v) changes
 // only in step() and reset(). Linear elasticity is exact for small strains and rotations; a body
 // turned far from rest grows (the known artefact that corotated elements remove).
-// A support plane (setSupport: a resting body's floor, issue 28's pinch_soft): no node passes
-// below it. The nodes that can touch it (its lowest surface nodes at rest, kSupportReach) get,
+// A support plane (setSupport: a resting body's floor, issue 28's pinch_soft): no node over its
+// extent passes below it. The nodes that can touch it (its lowest surface nodes at rest, kSupportReach) get,
 // each step, contact impulses solved with the step (through A^-1 of a unit impulse on each,
 // made once in setSupport): a normal one >= 0 that ends the step on or above the plane, never
 // pushing out beyond, and a friction one within friction x normal that holds the node still
@@ -52,6 +52,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -71,13 +72,32 @@ constexpr double kSupportReach = 0.25;
 constexpr int kSupportIterations = 60;
 constexpr double kSupportImpulseTolerance = 1e-12;  // N s
 
+// A rectangle of a support plane (body frame, m): the points whose offsets from `centre` along
+// `u` and `v` (unit, along the plane, orthogonal) lie within half_u and half_v (>= 0).
+struct SupportRectangle
+{
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d u = Eigen::Vector3d::UnitX();
+  Eigen::Vector3d v = Eigen::Vector3d::UnitY();
+  double half_u = 0.0;
+  double half_v = 0.0;
+  bool covers(const Eigen::Vector3d& point) const
+  {
+    const Eigen::Vector3d from = point - centre;
+    return std::abs(from.dot(u)) <= half_u && std::abs(from.dot(v)) <= half_v;
+  }
+};
+
 // A plane the body's nodes stay on or above: normal . x >= offset (body frame, unit normal, m),
-// with Coulomb friction `friction` against sliding on it.
+// with Coulomb friction `friction` against sliding on it. `extent`: where the plane is (a table's
+// top): a node over none of its rectangles is not held (it falls past the edge); empty: the whole
+// plane.
 struct SupportPlane
 {
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   double offset = 0.0;
   double friction = 0.0;
+  std::vector<SupportRectangle> extent;
 };
 
 class ElasticBody
@@ -117,8 +137,13 @@ class ElasticBody
   // One step under `external_forces` (N, 3 per node; gravity is added here). RT-safe.
   void step(const Eigen::VectorXd& external_forces);
   // Holds every free node on or above `plane` from the next step on (see the header). InputError
-  // when its normal is not a unit vector or its friction is negative or not finite.
+  // when its normal is not a unit vector, its friction is negative or not finite, or a rectangle
+  // of its extent does not lie along it (non-unit or non-orthogonal axes, a negative or
+  // non-finite half size).
   void setSupport(const SupportPlane& plane);
+  // The support's extent from the next step on (its plane and friction kept: no new responses
+  // to compute, so cheap). InputError as setSupport(); a body without a support: InputError.
+  void setSupportExtent(const std::vector<SupportRectangle>& extent);
   // The force (N, along the plane's normal) the support gave in the last step: the weight of a
   // body at rest on it, 0 when it is lifted off (or has no support).
   double supportForce() const
@@ -182,6 +207,10 @@ class ElasticBody
  private:
   // The support's contact impulses on this step's velocities (before they move the nodes).
   void holdOnSupport();
+  // Whether candidate `node` lies over the support's extent now.
+  bool overSupport(int node) const;
+  // InputError unless every rectangle of `plane`'s extent lies along it (setSupport's words).
+  static void checkExtent(const SupportPlane& plane);
   // A free body's displacement in its best-fit rotation, and that rotation (body frame).
   Eigen::Matrix3d localDisplacement(Eigen::VectorXd* local) const;
 
