@@ -336,8 +336,8 @@ void ElasticBody::setSupport(const SupportPlane& plane)
   const Eigen::Vector3d& n = plane.normal;
   const Eigen::Vector3d t1 = n.unitOrthogonal();
   support_directions_ << n, t1, n.cross(t1);
-  // The nodes that can touch it: free surface nodes within kSupportReach of the body's extent
-  // along the normal from its lowest node, at rest.
+  // The nodes that can touch it: free surface nodes (within a reach of the body's extent along the
+  // normal from its lowest node, at rest).
   double lowest = std::numeric_limits<double>::infinity();
   double highest = -lowest;
   for (const Eigen::Vector3d& node : mesh_.nodes)
@@ -353,14 +353,26 @@ void ElasticBody::setSupport(const SupportPlane& plane)
       on_surface[node] = 1;
     }
   }
-  support_nodes_.clear();
-  for (int node = 0; node < nodeCount(); ++node)
+  const auto candidates = [&](double reach)
   {
-    if (on_surface[node] && !isFixed(node) && free_index_[3 * node] >= 0 && free_index_[3 * node + 1] >= 0 &&
-        free_index_[3 * node + 2] >= 0 && n.dot(mesh_.nodes[node]) <= lowest + kSupportReach * (highest - lowest))
+    support_nodes_.clear();
+    for (int node = 0; node < nodeCount(); ++node)
     {
-      support_nodes_.push_back(node);
+      if (on_surface[node] && !isFixed(node) && free_index_[3 * node] >= 0 && free_index_[3 * node + 1] >= 0 &&
+          free_index_[3 * node + 2] >= 0 && n.dot(mesh_.nodes[node]) <= lowest + reach * (highest - lowest))
+      {
+        support_nodes_.push_back(node);
+      }
     }
+  };
+  // Every surface node, so that the body can roll over on it, when their responses fit
+  // kSupportResponseBudget; else the lowest ones.
+  candidates(1.0);
+  const double bytes = 3.0 * static_cast<double>(support_nodes_.size()) * static_cast<double>(free_dofs_.size()) *
+                       static_cast<double>(sizeof(double));
+  if (bytes > kSupportResponseBudget)
+  {
+    candidates(kSupportReach);
   }
   // Each candidate row's response: A^-1 of a unit impulse on that node along that direction.
   const int rows = 3 * static_cast<int>(support_nodes_.size());

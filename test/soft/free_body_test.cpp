@@ -152,6 +152,36 @@ TEST(FreeSoftBody, TurnedAsAWholeItKeepsItsShape)
   EXPECT_LT((body.displacement() - turned).lpNorm<Eigen::Infinity>(), 1e-9);
 }
 
+// Turned over (a ball rolled half a turn), the nodes that were on top rest on the support: every
+// surface node can touch it (kSupportResponseBudget). Before, only the lowest quarter at rest
+// could, and the turned ball sank through the plane.
+TEST(FreeSoftBody, TurnedOverItStillRestsOnItsSupport)
+{
+  const TetMesh mesh = ballTetMesh(0.03, 5);
+  ElasticBody body(mesh, rubber(0.1, mesh), {}, 1e-3, Eigen::Vector3d(0, 0, -9.81));
+  SupportPlane plane;
+  plane.friction = 0.8;
+  body.setSupport(plane);
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.9 * M_PI, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Vector3d centre(0.0, 0.0, 0.03);
+  Eigen::VectorXd turned(3 * body.nodeCount());
+  for (int node = 0; node < body.nodeCount(); ++node)
+  {
+    turned.segment<3>(3 * node) = turn * (mesh.nodes[node] - centre) + centre - mesh.nodes[node];
+  }
+  body.restAt(turned);
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(3 * body.nodeCount());
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int step = 0; step < 2000; ++step)
+  {
+    body.step(none);
+    lowest = std::min(lowest, lowestHeight(body));
+  }
+  std::printf("turned 0.9 pi: lowest node over 2 s %.3g m, support at the end %.6f N\n", lowest, body.supportForce());
+  EXPECT_GE(lowest, -1e-8);
+  EXPECT_NEAR(body.supportForce(), 0.1 * 9.81, 1e-4);
+}
+
 TEST(FreeSoftBody, AStepOnItsSupportAllocatesNothing)
 {
   const TetMesh mesh = block5cm();

@@ -31,7 +31,7 @@
 // only in step() and reset(). Linear elasticity is exact for small strains and rotations; a body
 // turned far from rest grows (the known artefact that corotated elements remove).
 // A support plane (setSupport: a resting body's floor, issue 28's pinch_soft): no node over its
-// extent passes below it. The nodes that can touch it (its lowest surface nodes at rest, kSupportReach) get,
+// extent passes below it. The nodes that can touch it (its surface nodes, kSupportResponseBudget) get,
 // each step, contact impulses solved with the step (through A^-1 of a unit impulse on each,
 // made once in setSupport): a normal one >= 0 that ends the step on or above the plane, never
 // pushing out beyond, and a friction one within friction x normal that holds the node still
@@ -66,8 +66,12 @@ constexpr double kSoftSleepSpeed = 1e-5;
 constexpr int kSoftSleepSteps = 100;
 // A node within this (m) of its support plane lies on it (it lands there exactly: rounding).
 constexpr double kSupportContactGap = 1e-9;
-// The surface nodes within this fraction of the body's extent along the plane's normal from its
-// lowest node (at rest) can touch the support; the contact's Gauss-Seidel sweeps at most.
+// Every surface node can touch the support (a ball rolls over on it) when the responses to their
+// impulses (3 columns of free degrees of freedom each, doubles) fit this budget (bytes: 64 MB, a
+// 729-node ball takes 20 MB); else only those within kSupportReach of the body's extent along the
+// plane's normal from its lowest node (at rest): such a body turned over further sinks through.
+// The contact's Gauss-Seidel sweeps at most kSupportIterations.
+constexpr double kSupportResponseBudget = 64.0 * 1024 * 1024;
 constexpr double kSupportReach = 0.25;
 constexpr int kSupportIterations = 60;
 constexpr double kSupportImpulseTolerance = 1e-12;  // N s
