@@ -457,7 +457,8 @@ void ElasticBody::holdOnSupport()
     const int node = support_nodes_[j];
     const double gap = support_.normal.dot(position(node)) - support_.offset;
     const double moving = support_.normal.dot(velocity_.segment<3>(3 * node));
-    if ((gap <= kSupportContactGap || gap + time_step_ * moving < 0.0) && overSupport(node))
+    if ((gap <= kSupportContactGap || gap + time_step_ * moving < 0.0) && gap >= -kSupportEdgeDepth &&
+        overSupport(node))
     {
       active_nodes_.push_back(static_cast<int>(j));
       support_gap_(active_nodes_.size() - 1) = gap;  // < 0 (rounding, the solver's tolerance): lifted back

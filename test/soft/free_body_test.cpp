@@ -236,6 +236,21 @@ TEST(FreeSoftBody, ItRestsOnlyOverItsSupportsExtent)
   {
     EXPECT_NEAR(fallen->displacement()(3 * node + 2), -fall, 1e-6 * fall) << "node " << node;
   }
+  // Having fallen beside the table until its top is 6 cm below the table's, a node that comes over
+  // the table is beside its side, not on its top: it is not lifted back onto the plane
+  // (kSupportEdgeDepth; without it, 8.7 kN on the first step).
+  {
+    const int long_fall = 150;  // 0.111 m
+    auto body = run({beside}, long_fall);
+    const Eigen::VectorXd before = body->displacement();
+    body->setSupportExtent({table});
+    body->step(none);
+    EXPECT_EQ(body->supportForce(), 0.0);
+    for (int node = 0; node < body->nodeCount(); ++node)
+    {
+      EXPECT_LT(body->displacement()(3 * node + 2), before(3 * node + 2)) << "node " << node << " stopped falling";
+    }
+  }
   // Its centre 1 cm past the edge: the part beyond it drops below the plane, further and further
   // as it turns over the edge; the part over the table stays on the plane.
   SupportRectangle edge = table;

@@ -66,6 +66,10 @@ constexpr double kSoftSleepSpeed = 1e-5;
 constexpr int kSoftSleepSteps = 100;
 // A node within this (m) of its support plane lies on it (it lands there exactly: rounding).
 constexpr double kSupportContactGap = 1e-9;
+// A node further than this (m) below the plane is beside its extent, not on it (it went past the
+// table's edge; held nodes end each step on the plane): it is not lifted back onto the plane
+// when it swings back over the extent, which would throw the body up.
+constexpr double kSupportEdgeDepth = 1e-3;
 // Every surface node can touch the support (a ball rolls over on it) when the responses to their
 // impulses (3 columns of free degrees of freedom each, doubles) fit this budget (bytes: 64 MB, a
 // 729-node ball takes 20 MB); else only those within kSupportReach of the body's extent along the
