@@ -170,15 +170,12 @@ void setSoftSupportExtent(const std::vector<Eigen::AlignedBox3d>& static_boxes, 
   {
     return;
   }
-  // The support plane in the world: z = its height (makeSoftVolume: the plane under the lowest
-  // node, its normal the world's z).
+  // The support plane in the world: z = its height (makeSoftVolume: its normal the world's z in
+  // the body's frame, n = R^T z, so a body point x on it, n . x = offset, lies at world height
+  // offset + t_z).
   const Eigen::Isometry3d& to_world = volume.body_in_world;
   const Eigen::Isometry3d to_body = to_world.inverse();
-  double height = std::numeric_limits<double>::infinity();
-  for (const Eigen::Vector3d& node : volume.elastic->restMesh().nodes)
-  {
-    height = std::min(height, (to_world * node).z());
-  }
+  const double height = volume.elastic->support()->offset + to_world.translation().z();
   std::vector<SupportRectangle> extent;
   for (const Eigen::AlignedBox3d& box : static_boxes)
   {

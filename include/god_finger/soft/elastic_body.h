@@ -152,6 +152,11 @@ class ElasticBody
   // The support's extent from the next step on (its plane and friction kept: no new responses
   // to compute, so cheap). InputError as setSupport(); a body without a support: InputError.
   void setSupportExtent(const std::vector<SupportRectangle>& extent);
+  // The support as set (body frame), or null for a body without one.
+  const SupportPlane* support() const
+  {
+    return has_support_ ? &support_ : nullptr;
+  }
   // The force (N, along the plane's normal) the support gave in the last step: the weight of a
   // body at rest on it, 0 when it is lifted off (or has no support).
   double supportForce() const
