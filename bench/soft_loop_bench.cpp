@@ -7,8 +7,12 @@
 // N/m), down onto the top's centre in 0.5 s to 1.2 cm past it, then wavering 3 mm up and down
 // at 2 Hz, so the block never sleeps. A step slower than the period makes the physics late; the
 // multi-rate loop renders the force meanwhile (runtime/multirate_render.h: stale ticks).
-// usage: soft_loop_bench [NODES] [SECONDS]   prints one JSON line (periods and latencies in us;
-// the targets: period_us_p99 - floor_us_p99 <= 50 us, latency_us_p99 <= 200 us at every size)
+// EXCHANGE: the fake device's (devices/haptic_device.h DeviceExchange): packet (a Falcon's: the
+// force for a reading goes with the next exchange, decided at the next tick's start) or frame
+// (an Omni/Touch's: the force for a reading rendered at the read and applied in its frame).
+// usage: soft_loop_bench [NODES] [SECONDS] [packet|frame]   prints one JSON line (periods and
+// latencies in us; the targets: period_us_p99 - floor_us_p99 <= 50 us, latency_us_p99 <= 200 us
+// at every size)
 #include "platform_floor.h"
 
 #include "god_finger/devices/fake_device.h"
@@ -57,9 +61,10 @@ int main(int argc, char** argv)
   using namespace god_finger;
   const int nodes = argc > 1 ? std::atoi(argv[1]) : 1000;
   const double seconds = argc > 2 ? std::atof(argv[2]) : 10.0;
-  if (nodes < 8 || nodes > 100000 || !(seconds > 1.0))
+  FakeDeviceParams hand;
+  if (nodes < 8 || nodes > 100000 || !(seconds > 1.0) || (argc > 3 && !parseDeviceExchange(argv[3], &hand.exchange)))
   {
-    std::fprintf(stderr, "usage: soft_loop_bench [NODES 8..100000] [SECONDS > 1]\n");
+    std::fprintf(stderr, "usage: soft_loop_bench [NODES 8..100000] [SECONDS > 1] [packet|frame]\n");
     return 2;
   }
   std::string pattern = (std::filesystem::temp_directory_path() / "soft_loop_bench_XXXXXX").string();
@@ -82,7 +87,7 @@ int main(int argc, char** argv)
   }
   std::vector<ServoInterface> interfaces(1);
   interfaces[0].name = "finger";
-  interfaces[0].device = std::make_unique<FakeDevice>(FakeDeviceParams(), WaypointPath(path));
+  interfaces[0].device = std::make_unique<FakeDevice>(hand, WaypointPath(path));
   ServoLoop loop(std::move(world), std::move(interfaces), ServoLoopParams());
   loop.start();
   std::vector<double> periods;
@@ -125,14 +130,15 @@ int main(int argc, char** argv)
   const double floor_p99 = benchPercentile(floor, 0.99);
   const double period_p99 = benchPercentile(periods, 0.99);
   std::printf(
-      "{\"nodes\": %zu, \"seconds\": %.0f, \"realtime\": %s, \"build_s\": %.2f, \"ticks\": %ld, \"overruns\": %ld, "
+      "{\"nodes\": %zu, \"exchange\": \"%s\", \"seconds\": %.0f, \"realtime\": %s, \"build_s\": %.2f, \"ticks\": %ld, "
+      "\"overruns\": %ld, "
       "\"stale_ticks\": %ld, \"physics_steps_per_s\": %.1f, \"largest_force_N\": %.2f, \"floor_us_p50\": %.1f, "
       "\"floor_us_p99\": %.1f, \"period_us_p50\": %.1f, \"period_us_p99\": %.1f, \"period_us_max\": %.1f, "
       "\"latency_us_p50\": %.1f, \"latency_us_p99\": %.1f, \"step_us_p50\": %.1f, \"step_us_p99\": %.1f, "
       "\"p99_over_floor_us\": %.1f}\n",
-      written_nodes, seconds, loop.counters().realtime ? "true" : "false", build_s, samples,
-      loop.counters().overruns.load(), stale, physics_steps / seconds, largest_force, benchPercentile(floor, 0.5),
-      floor_p99, benchPercentile(periods, 0.5), period_p99,
+      written_nodes, deviceExchangeName(hand.exchange).c_str(), seconds, loop.counters().realtime ? "true" : "false",
+      build_s, samples, loop.counters().overruns.load(), stale, physics_steps / seconds, largest_force,
+      benchPercentile(floor, 0.5), floor_p99, benchPercentile(periods, 0.5), period_p99,
       periods.empty() ? 0.0 : *std::max_element(periods.begin(), periods.end()), benchPercentile(latencies, 0.5),
       benchPercentile(latencies, 0.99), benchPercentile(steps, 0.5), benchPercentile(steps, 0.99),
       period_p99 - floor_p99);

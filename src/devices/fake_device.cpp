@@ -25,6 +25,12 @@ const ParameterTable<FakeDeviceParams>& fakeDeviceParameterTable()
                  "0 plays the script once; else the hand goes back to the script's start in this time once it "
                  "ends, and plays it again",
                  [](P& p) -> double& { return p.repeat_return; }),
+      choiceRow<P>(
+          "exchange", "packet, frame",
+          "packet: the force for a reading goes with the next exchange (a Falcon's); frame: the force for a reading "
+          "is applied in the same frame (an Omni/Touch's), so the servo loop renders it at the read",
+          [](const P& p) -> std::string { return deviceExchangeName(p.exchange); },
+          [](P* p, const std::string& text) { return parseDeviceExchange(text, &p->exchange); }),
   };
   return table;
 }
@@ -154,6 +160,21 @@ bool FakeDevice::setHandPose(const Eigen::Vector3d& position, const Eigen::Quate
 DeviceReading FakeDevice::updateWrench(double time, const Eigen::Vector3d& force, const Eigen::Vector3d& torque)
 {
   DeviceReading reading = update(time, force);
+  torque_ = torque;
+  return reading;
+}
+
+DeviceReading FakeDevice::exchangeFrame(double time, FrameResponder& responder)
+{
+  if (params_.exchange != DeviceExchange::kFrame)
+  {
+    return HapticDevice::exchangeFrame(time, responder);
+  }
+  DeviceReading reading = update(time, frame_force_);
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  responder.respond(reading, &force, &torque);
+  frame_force_ = force;
   torque_ = torque;
   return reading;
 }

@@ -107,10 +107,9 @@ void OmniDevice::calibrate()
   }
 }
 
-DeviceReading OmniDevice::update(double time, const Eigen::Vector3d& force)
+void OmniDevice::recordFrame(bool ok, const OmniFrame& frame)
 {
-  OmniFrame frame;
-  if (io_failures_.record(io_->exchange(deviceForceToVendorAxes(motorCommand(force, force_limit_)), &frame)))
+  if (io_failures_.record(ok))
   {
     throw DeviceError("omni: device fault (" + std::to_string(io_failures_.consecutive()) +
                       " failed servo frames in a row; " + io_->lastError() + ")");
@@ -119,15 +118,72 @@ DeviceReading OmniDevice::update(double time, const Eigen::Vector3d& force)
   {
     last_frame_ = frame;
   }
+}
+
+DeviceReading OmniDevice::readingOf(double time, const OmniFrame& frame)
+{
   DeviceReading reading;
-  reading.position = omniToDevice(last_frame_.position_mm, params_.center_mm);
+  reading.position = omniToDevice(frame.position_mm, params_.center_mm);
   reading.velocity = velocity_.update(time, reading.position);
-  reading.buttons = last_frame_.buttons;
-  reading.has_orientation = last_frame_.has_rotation;
+  reading.buttons = frame.buttons;
+  reading.has_orientation = frame.has_rotation;
   if (reading.has_orientation)
   {
-    reading.orientation = stylusToDevice(last_frame_.rotation);
+    reading.orientation = stylusToDevice(frame.rotation);
   }
+  return reading;
+}
+
+DeviceReading OmniDevice::update(double time, const Eigen::Vector3d& force)
+{
+  OmniFrame frame;
+  recordFrame(io_->exchange(deviceForceToVendorAxes(motorCommand(force, force_limit_)), &frame), frame);
+  return readingOf(time, last_frame_);
+}
+
+// The servo loop's responder inside the HD frame: the frame's reading in device terms, its force
+// back in the Omni's, clamped to the device.
+class OmniDevice::FrameAnswer : public OmniFrameResponder
+{
+ public:
+  FrameAnswer(OmniDevice& device, FrameResponder& responder, double time)
+      : device_(device), responder_(responder), time_(time)
+  {
+  }
+  std::array<double, 3> forceFor(const OmniFrame& frame) override
+  {
+    reading = device_.readingOf(time_, frame);
+    Eigen::Vector3d torque;  // the Omni renders none
+    responder_.respond(reading, &force, &torque);
+    answered = true;
+    return deviceForceToVendorAxes(motorCommand(force, device_.force_limit_));
+  }
+  DeviceReading reading;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  bool answered = false;
+
+ private:
+  OmniDevice& device_;
+  FrameResponder& responder_;
+  double time_;
+};
+
+DeviceReading OmniDevice::exchangeFrame(double time, FrameResponder& responder)
+{
+  OmniFrame frame;
+  FrameAnswer answer(*this, responder, time);
+  const bool ok = io_->exchangeFrame(answer, &frame);
+  recordFrame(ok, frame);
+  if (answer.answered)
+  {
+    return answer.reading;  // a failed frame that read: what it read (the loop refuses a non-finite one)
+  }
+  // A frame that failed before reading: the loop still decides for this tick, on the last good
+  // frame, and its force goes with the next frame.
+  const DeviceReading reading = readingOf(time, last_frame_);
+  Eigen::Vector3d force;
+  Eigen::Vector3d torque;
+  responder.respond(reading, &force, &torque);
   return reading;
 }
 }  // namespace god_finger

@@ -108,6 +108,7 @@ ServoLoop::ServoLoop(std::unique_ptr<GodFingerWorld> world, std::vector<ServoInt
     guards_.emplace_back(interface.profile.coupling.max_force, interface.profile.guard);
     hold_passivity_.emplace_back(interface.profile.passivity, 1.0 / params_.rate);
     inputs_.emplace_back(interface.profile, interface.mapping);
+    frame_exchange_.push_back(interface.device->exchangeForm() == DeviceExchange::kFrame ? 1 : 0);
   }
   counters_.model = static_cast<int>(world_->contactModel());
   counters_.pad_solver = static_cast<int>(world_->params().pad_solver);
@@ -286,78 +287,50 @@ T* ServoLoop::reserveIn(SpscQueue<T>& queue)
   return slot;
 }
 
-void ServoLoop::readDevices(double time)
+// A kFrame device's responder: the reading in, this tick's force for it out, within the frame.
+class ServoLoop::FrameStep : public FrameResponder
 {
-  const double dt = 1.0 / params_.rate;
-  bool cycle_model = false;
-  bool reset = false;
-  bool toggle_stop = false;
+ public:
+  FrameStep(ServoLoop* loop, std::size_t interface, double time, double period_us, Presses* presses)
+      : loop_(loop), interface_(interface), time_(time), period_us_(period_us), presses_(presses)
+  {
+  }
+  void respond(const DeviceReading& reading, Eigen::Vector3d* force, Eigen::Vector3d* torque) override
+  {
+    loop_->takeReading(interface_, reading, time_, presses_);
+    loop_->decideInterface(interface_, loop_->tick_, time_, period_us_);
+    *force = loop_->applied_[interface_];
+    *torque = loop_->applied_torque_[interface_];
+  }
+
+ private:
+  ServoLoop* loop_;
+  std::size_t interface_;
+  double time_;
+  double period_us_;
+  Presses* presses_;
+};
+
+void ServoLoop::readDevices(double time, double period_us)
+{
+  Presses presses;
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
     ServoInterface& interface = interfaces_[i];
+    if (frame_exchange_[i])
+    {
+      FrameStep step(this, i, time, period_us, &presses);
+      interface.device->exchangeFrame(time, step);
+      continue;
+    }
     applied_[i] = guards_[i].output(time);
-    Render& render = render_[i];
     // The torque decided for the last reading (zero for a device with no torque axes), through
     // the force's guard: its soft start and watchdog ramp, zero while the force is stopped.
-    applied_torque_[i] = guards_[i].scale(time) * render.torque;
+    applied_torque_[i] = guards_[i].scale(time) * render_[i].torque;
     const DeviceReading reading = interface.device->updateWrench(time, applied_[i], applied_torque_[i]);
-    read_at_[i] = steadySeconds();
-    render.previous_target = render.target;
-    // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
-    // non-finite device state): its buttons are not pressed, the world gets the last good
-    // target, and the samples (device/state) carry the last good reading.
-    const bool was_tracked = render.tracked;
-    render.tracked = reading.tracked;
-    render.missing = reading.missing;
-    if (!reading.tracked)
-    {
-      // A finger its source lost (devices/hand_device.h) lets go: its target follows its proxy
-      // (no coupling force, the proxy released) until the source sees it again.
-      ++counters_.untracked_readings;
-      render.target = latest_.proxies[i].proxy_position;
-      render.previous_target = render.target;
-      render.wall_force.setZero();
-    }
-    else if (const InterfaceInputResult input = inputs_[i].read(interfaceReading(reading)); input.accepted)
-    {
-      readings_[i] = reading;
-      if (!was_tracked)
-      {
-        // Tracked again: the target ramps from where the finger let go (its proxy) to the
-        // tracked pose over the soft start, so the proxy gets no step of coupling force.
-        render.regrip_from = render.target;
-        render.regrip_at = time;
-      }
-      const double s = softStartScale(time - render.regrip_at, guards_[i].params().soft_start);
-      render.target = render.regrip_from + s * (input.target - render.regrip_from);
-      render.wall_force = input.wall_force;
-      cycle_model = cycle_model || (input.pressed & kButtonCycleModel);
-      reset = reset || (input.pressed & kButtonReset);
-      toggle_stop = toggle_stop || (input.pressed & kButtonStopForce);
-      if (input.orientation == OrientationInput::kUsable)
-      {
-        frame_.orientations[i] = inputs_[i].worldOrientation();
-        frame_.oriented[i] = 1;
-      }
-      else if (input.orientation == OrientationInput::kRejected)
-      {
-        // Ignored, counted: the last good orientation stays, and the samples carry it.
-        ++counters_.rejected_orientations;
-        readings_[i].has_orientation = inputs_[i].oriented();
-        readings_[i].orientation = inputs_[i].deviceOrientation();
-      }
-    }
-    else
-    {
-      ++counters_.rejected_readings;
-    }
-    render.previous_velocity = render.velocity;
-    render.velocity = (render.target - render.previous_target) / dt;
-    frame_.targets[i] = render.target;  // always finite
-    frame_.velocities[i] = render.velocity;
-    frame_.let_go[i] = reading.tracked ? 0 : 1;
+    takeReading(i, reading, time, &presses);
   }
-  if (toggle_stop)  // button 2: stop every device's force, or resume it (soft start)
+  if (presses.toggle_stop)  // button 2: stop every device's force, or resume it (soft start)
   {
     const bool stop = !guards_.empty() && !guards_[0].stopped();
     for (ForceGuard& guard : guards_)
@@ -366,13 +339,74 @@ void ServoLoop::readDevices(double time)
     }
     counters_.force_stopped = stop;
   }
-  cycle_presses_ += cycle_model ? 1 : 0;
-  reset_presses_ += reset ? 1 : 0;
+  cycle_presses_ += presses.cycle_model ? 1 : 0;
+  reset_presses_ += presses.reset ? 1 : 0;
   frame_.tick = tick_;
   frame_.time = time;
   frame_.read_at = read_at_[0];
   frame_.cycle_presses = cycle_presses_;
   frame_.reset_presses = reset_presses_;
+}
+
+void ServoLoop::takeReading(std::size_t i, const DeviceReading& reading, double time, Presses* presses)
+{
+  const double dt = 1.0 / params_.rate;
+  read_at_[i] = steadySeconds();
+  Render& render = render_[i];
+  render.previous_target = render.target;
+  // A non-finite reading is rejected here, once, as a whole (as the haptic node rejects a
+  // non-finite device state): its buttons are not pressed, the world gets the last good
+  // target, and the samples (device/state) carry the last good reading.
+  const bool was_tracked = render.tracked;
+  render.tracked = reading.tracked;
+  render.missing = reading.missing;
+  if (!reading.tracked)
+  {
+    // A finger its source lost (devices/hand_device.h) lets go: its target follows its proxy
+    // (no coupling force, the proxy released) until the source sees it again.
+    ++counters_.untracked_readings;
+    render.target = latest_.proxies[i].proxy_position;
+    render.previous_target = render.target;
+    render.wall_force.setZero();
+  }
+  else if (const InterfaceInputResult input = inputs_[i].read(interfaceReading(reading)); input.accepted)
+  {
+    readings_[i] = reading;
+    if (!was_tracked)
+    {
+      // Tracked again: the target ramps from where the finger let go (its proxy) to the
+      // tracked pose over the soft start, so the proxy gets no step of coupling force.
+      render.regrip_from = render.target;
+      render.regrip_at = time;
+    }
+    const double s = softStartScale(time - render.regrip_at, guards_[i].params().soft_start);
+    render.target = render.regrip_from + s * (input.target - render.regrip_from);
+    render.wall_force = input.wall_force;
+    presses->cycle_model = presses->cycle_model || (input.pressed & kButtonCycleModel);
+    presses->reset = presses->reset || (input.pressed & kButtonReset);
+    presses->toggle_stop = presses->toggle_stop || (input.pressed & kButtonStopForce);
+    if (input.orientation == OrientationInput::kUsable)
+    {
+      frame_.orientations[i] = inputs_[i].worldOrientation();
+      frame_.oriented[i] = 1;
+    }
+    else if (input.orientation == OrientationInput::kRejected)
+    {
+      // Ignored, counted: the last good orientation stays, and the samples carry it.
+      ++counters_.rejected_orientations;
+      readings_[i].has_orientation = inputs_[i].oriented();
+      readings_[i].orientation = inputs_[i].deviceOrientation();
+    }
+  }
+  else
+  {
+    ++counters_.rejected_readings;
+  }
+  render.previous_velocity = render.velocity;
+  render.velocity = (render.target - render.previous_target) / dt;
+  frame_.targets[i] = render.target;  // always finite
+  frame_.velocities[i] = render.velocity;
+  frame_.let_go[i] = reading.tracked ? 0 : 1;
 }
 
 void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
@@ -497,70 +531,98 @@ void ServoLoop::decide(long tick, double time, double period_us)
 {
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
-    Render& render = render_[i];
-    const ProxyResult& proxy = latest_.proxies[i];
-    const long lag = tick - latest_.tick;
-    const MultirateDevice device{render.target, render.previous_target, render.velocity, render.previous_velocity};
-    const MultirateStep step{proxy.proxy_position,     proxy.user_force,        lag,
-                             proxy.interface_position, proxy.contact_stiffness, proxy.contact_normal,
-                             proxy.plane_count,        proxy.plane_normals};
-    PassivityController& hold = hold_passivity_[i];
-    const double dissipated_before = render.multirate.exact ? 0.0 : hold.dissipated();
-    if (renderMultirate(couplings_[i], params_.recovery_periods, device, step, &render.multirate, &hold))
+    if (!frame_exchange_[i])  // a frame device's force was decided within its exchange
     {
-      render.stale = false;
-      render.ready_at = latest_.done_at;
+      decideInterface(i, tick, time, period_us);
     }
-    else
-    {
-      render.stale = true;
-      render.ready_at = steadySeconds();
-      ++counters_.stale_ticks;
-      if (hold.damping() > 0.0 || hold.cut() > 0.0)
-      {
-        ++counters_.hold_damped_ticks;
-      }
-      counters_.hold_dissipated.store(counters_.hold_dissipated.load() + hold.dissipated() - dissipated_before);
-      counters_.hold_lowest_energy.store(std::min(counters_.hold_lowest_energy.load(), hold.lowestEnergy()));
-    }
-    const Eigen::Vector3d force = render.multirate.force;  // N, world, on the hand
-    // The torque: the last completed step's, in the device frame, on the profile's axes only.
-    render.torque = renderableTorque(interfaces_[i].profile, interfaces_[i].mapping.torqueToDevice(proxy.user_torque));
-    if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force) + render.wall_force))
-    {
-      ++counters_.rejected_forces;
-    }
-    const double commanded_at = steadySeconds();
-    ServoSample* sample = reserveIn(samples_);
-    if (!sample)
-    {
-      ++counters_.dropped_samples;
-      continue;
-    }
-    sample->tick = tick;
-    sample->time = time;
-    sample->interface = static_cast<int>(i);
-    sample->reading = readings_[i];
-    sample->applied_force = applied_[i];
-    sample->applied_torque = applied_torque_[i];
-    sample->commanded_force = guards_[i].commanded();
-    sample->interface_position = render.target;
-    sample->interface_orientation =
-        frame_.oriented[i] ? frame_.orientations[i] : Eigen::Quaterniond(Eigen::Quaterniond::Identity());
-    sample->proxy_position = proxy.proxy_position;
-    sample->user_force = force;
-    sample->user_torque = proxy.user_torque;
-    sample->commanded_torque = render.torque;
-    sample->read_at = read_at_[i];
-    sample->period_us = period_us;
-    sample->latency_us = 1e6 * ((params_.simulated_time ? commanded_at : render.ready_at) - read_at_[i]);
-    sample->step_us = latest_.step_us;
-    sample->stale = render.stale;
-    sample->physics_lag = lag;
-    sample->tracked = render.tracked;
-    sample->missing = render.missing;
-    samples_.commit();
   }
+}
+
+void ServoLoop::decideInterface(std::size_t i, long tick, double time, double period_us)
+{
+  Render& render = render_[i];
+  const ProxyResult& proxy = latest_.proxies[i];
+  const long lag = tick - latest_.tick;
+  // A frame device decides at the read, before the step that takes this reading: the step of
+  // the tick before is on time for it. On time it is rendered at the read (the step's proxy,
+  // this reading) without the hold's controller, as a packet device's exact force is; late, its
+  // hold begins as a packet device's does when it leaves exact mode.
+  const bool frame = frame_exchange_[i];
+  const long on_time_lag = frame ? 1 : 0;
+  const bool held = lag > on_time_lag;
+  if (frame && held && !render.frame_held)
+  {
+    render.multirate.exact = true;  // so that renderMultirate begins the hold here
+  }
+  render.frame_held = frame && held;
+  const MultirateDevice device{render.target, render.previous_target, render.velocity, render.previous_velocity};
+  const MultirateStep step{proxy.proxy_position,     proxy.user_force,        lag,
+                           proxy.interface_position, proxy.contact_stiffness, proxy.contact_normal,
+                           proxy.plane_count,        proxy.plane_normals};
+  PassivityController& hold = hold_passivity_[i];
+  const double dissipated_before = render.multirate.exact ? 0.0 : hold.dissipated();
+  const bool exact = renderMultirate(couplings_[i], params_.recovery_periods, device, step, &render.multirate,
+                                     frame && !held ? nullptr : &hold);
+  // Stale: a packet device's force not the step's own (late, or recovering from it); a frame
+  // device's rendered from a late step.
+  render.stale = frame ? held : !exact;
+  render.ready_at = exact ? latest_.done_at : steadySeconds();
+  if (render.stale)
+  {
+    ++counters_.stale_ticks;
+  }
+  if (!exact && (held || !frame))
+  {
+    if (hold.damping() > 0.0 || hold.cut() > 0.0)
+    {
+      ++counters_.hold_damped_ticks;
+    }
+    counters_.hold_dissipated.store(counters_.hold_dissipated.load() + hold.dissipated() - dissipated_before);
+    counters_.hold_lowest_energy.store(std::min(counters_.hold_lowest_energy.load(), hold.lowestEnergy()));
+  }
+  const Eigen::Vector3d force = render.multirate.force;  // N, world, on the hand
+  // The torque: the last completed step's, in the device frame, on the profile's axes only.
+  render.torque = renderableTorque(interfaces_[i].profile, interfaces_[i].mapping.torqueToDevice(proxy.user_torque));
+  if (!guards_[i].command(time, interfaces_[i].mapping.forceToDevice(force) + render.wall_force))
+  {
+    ++counters_.rejected_forces;
+  }
+  if (frame_exchange_[i])
+  {
+    // Applied in this very frame, through the guard as a packet device's is at its next update.
+    applied_[i] = guards_[i].output(time);
+    applied_torque_[i] = guards_[i].scale(time) * render.torque;
+  }
+  const double commanded_at = steadySeconds();
+  ServoSample* sample = reserveIn(samples_);
+  if (!sample)
+  {
+    ++counters_.dropped_samples;
+    return;
+  }
+  sample->tick = tick;
+  sample->time = time;
+  sample->interface = static_cast<int>(i);
+  sample->reading = readings_[i];
+  sample->applied_force = applied_[i];
+  sample->applied_torque = applied_torque_[i];
+  sample->commanded_force = guards_[i].commanded();
+  sample->interface_position = render.target;
+  sample->interface_orientation =
+      frame_.oriented[i] ? frame_.orientations[i] : Eigen::Quaterniond(Eigen::Quaterniond::Identity());
+  sample->proxy_position = proxy.proxy_position;
+  sample->user_force = force;
+  sample->user_torque = proxy.user_torque;
+  sample->commanded_torque = render.torque;
+  sample->read_at = read_at_[i];
+  sample->period_us = period_us;
+  sample->latency_us = 1e6 * ((params_.simulated_time ? commanded_at : render.ready_at) - read_at_[i]);
+  sample->step_us = latest_.step_us;
+  sample->stale = render.stale;
+  sample->physics_lag = lag;
+  sample->tracked = render.tracked;
+  sample->missing = render.missing;
+  samples_.commit();
 }
 
 void ServoLoop::tick(double time)
@@ -584,7 +646,7 @@ void ServoLoop::tick(double time)
       decide(tick_ - 1, pending_time_, pending_period_us_);
       pending_ = false;
     }
-    readDevices(time);
+    readDevices(time, period_us);
     applyHandTargets(time);
     targets_box_->back() = frame_;  // same lengths: no allocation
     targets_box_->publish();
@@ -595,7 +657,7 @@ void ServoLoop::tick(double time)
   }
   else
   {
-    readDevices(time);
+    readDevices(time, period_us);
     applyHandTargets(time);
     physicsInline();
     decide(tick_, time, period_us);

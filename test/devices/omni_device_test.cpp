@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace god_finger
 {
@@ -29,6 +30,7 @@ struct ScriptedOmni : OmniIo
   double nominal_max_force = 3.3;
   OmniFrame stylus;
   std::array<double, 3> force{0.0, 0.0, 0.0};
+  int frames = 0;  // exchangeFrame() calls
 
   bool open(const std::string& name) override
   {
@@ -65,6 +67,18 @@ struct ScriptedOmni : OmniIo
     {
       return false;
     }
+    *frame = stylus;
+    return true;
+  }
+  // A frame that answers its own reading: fails before reading when frames_ok is false.
+  bool exchangeFrame(OmniFrameResponder& responder, OmniFrame* frame) override
+  {
+    ++frames;
+    if (!frames_ok)
+    {
+      return false;
+    }
+    force = responder.forceFor(stylus);
     *frame = stylus;
     return true;
   }
@@ -194,6 +208,74 @@ TEST(OmniDevice, ForceIsClampedToTheProfileAndTheDeviceAndNaNSentAsZero)
   const auto& sent = device_bound.io->force;
   EXPECT_NEAR(std::sqrt(sent[0] * sent[0] + sent[1] * sent[1] + sent[2] * sent[2]), 0.88, 1e-12);
   EXPECT_NEAR(sent[0] / sent[2], 4.0 / 3.0, 1e-12);  // direction kept: (-f_y)/(-f_x)
+}
+
+// A responder that answers a reading with a spring to the device frame's origin (400 N/m) and
+// records what it was given.
+struct SpringResponder : FrameResponder
+{
+  std::vector<DeviceReading> readings;
+  void respond(const DeviceReading& reading, Eigen::Vector3d* force, Eigen::Vector3d* torque) override
+  {
+    readings.push_back(reading);
+    *force = -400.0 * reading.position;
+    torque->setZero();
+  }
+};
+
+TEST(OmniDevice, AFrameAnswersItsOwnReadingWithTheForceClamped)
+{
+  OmniParams params;
+  params.max_force = 3.3;
+  Fixture f(params);
+  f.device->start();
+  EXPECT_EQ(f.device->exchangeForm(), DeviceExchange::kFrame);
+  SpringResponder responder;
+  // 5 mm away from the user (Omni z -5): device x = 0.005; the spring pulls back 2 N, Omni +z.
+  f.io->stylus.position_mm = {0.0, 0.0, -5.0};
+  const DeviceReading reading = f.device->exchangeFrame(1.0, responder);
+  ASSERT_EQ(responder.readings.size(), 1u);
+  EXPECT_EQ(f.io->frames, 1);
+  EXPECT_NEAR(reading.position.x(), 0.005, 1e-15);
+  EXPECT_EQ(responder.readings[0].position, reading.position);  // answered in the frame that read it
+  EXPECT_NEAR(f.io->force[2], 2.0, 1e-12);
+  EXPECT_NEAR(f.io->force[0], 0.0, 1e-15);
+  EXPECT_NEAR(f.io->force[1], 0.0, 1e-15);
+  // 10 mm: 4 N asked, clamped to the profile's 3.3 N.
+  f.io->stylus.position_mm = {0.0, 0.0, -10.0};
+  f.device->exchangeFrame(1.001, responder);
+  EXPECT_NEAR(f.io->force[2], 3.3, 1e-12);
+  // A velocity from consecutive frames, as update() estimates it.
+  EXPECT_GT(responder.readings[1].velocity.x(), 0.0);
+}
+
+TEST(OmniDevice, AFailedFrameStillGetsItsTicksDecisionOnTheLastGoodPoseThenAnError)
+{
+  OmniParams params;
+  params.io_failures_allowed = 3;
+  Fixture f(params);
+  f.device->start();
+  SpringResponder responder;
+  f.io->stylus.position_mm = {10.0, 0.0, 0.0};
+  f.device->exchangeFrame(1.0, responder);
+  f.io->frames_ok = false;
+  f.io->stylus.position_mm = {50.0, 0.0, 0.0};  // not read: the frames fail before reading
+  for (int i = 1; i <= 3; ++i)
+  {
+    const DeviceReading held = f.device->exchangeFrame(1.0 + i * 1e-3, responder);
+    EXPECT_NEAR(held.position.y(), -0.01, 1e-15);  // the last good frame
+  }
+  EXPECT_EQ(responder.readings.size(), 4u);  // once per exchange, failed or not
+  EXPECT_NEAR(responder.readings.back().position.y(), -0.01, 1e-15);
+  try
+  {
+    f.device->exchangeFrame(1.004, responder);
+    FAIL() << "no error";
+  }
+  catch (const DeviceError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("4 failed servo frames in a row"), std::string::npos) << error.what();
+  }
 }
 
 TEST(OmniDevice, CalibrationUpdatesByItselfOrWaitsForTheInkwell)

@@ -4,7 +4,8 @@
 // the hand still gets a force every period, and what a stiff press and a fast tap give the
 // device is measured against the same run on time. Passivity: over a whole press (the handle
 // starts and ends at rest in the air), the device receives no energy from the block, on time or
-// slow.
+// slow, and so for a device that takes the force for a reading in the frame that read it (an
+// Omni/Touch: DeviceExchange::kFrame, rendered at the read from the step before).
 //
 // Energy convention (multirate_test.cpp's): E = sum over ticks k of F_k . (x_{k+1} - x_k), F_k
 // the force applied at tick k's update, x_k the position read there; positive: into the hand.
@@ -47,9 +48,12 @@ struct PressRun
 };
 
 // `path`: the hand's script (world = device frame). `delay`: haptic periods each soft step takes.
-PressRun press(const WaypointPath& path, int delay, int ticks)
+// `exchange`: the device's (haptic_device.h).
+PressRun press(const WaypointPath& path, int delay, int ticks, DeviceExchange exchange = DeviceExchange::kPacket)
 {
-  auto device = std::make_unique<FakeDevice>(FakeDeviceParams(), path);
+  FakeDeviceParams hand;
+  hand.exchange = exchange;
+  auto device = std::make_unique<FakeDevice>(hand, path);
   device->setScriptStart(0.0);
   std::vector<ServoInterface> interfaces(1);
   interfaces[0].name = "finger";
@@ -112,6 +116,20 @@ void expectPassive(const char* what, const WaypointPath& path, int ticks)
   EXPECT_EQ(slow.ticks_without_force, 0) << what;
   EXPECT_LE(on_time.energy, 0.0) << what;
   EXPECT_LE(slow.energy, 0.0) << what;
+  // A frame device: every tick rendered at the read from the step before (on time: not stale).
+  const PressRun frame = press(path, 0, ticks, DeviceExchange::kFrame);
+  const PressRun frame_slow = press(path, 3, ticks, DeviceExchange::kFrame);
+  std::printf(
+      "[ measured ] %s, a frame device: energy to the device on time %.3g J (largest force %.2f N, dimple %.2f "
+      "mm, %ld stale ticks); soft steps 4 periods long %.3g J (%.2f N, %.2f mm)\n",
+      what, frame.energy, frame.largest_force, 1e3 * frame.deepest_sink, frame.stale_ticks, frame_slow.energy,
+      frame_slow.largest_force, 1e3 * frame_slow.deepest_sink);
+  EXPECT_GT(frame.deepest_sink, 1e-3) << what;
+  EXPECT_EQ(frame.stale_ticks, 0) << what;
+  EXPECT_GT(frame_slow.stale_ticks, 0) << what;
+  EXPECT_EQ(frame_slow.ticks_without_force, 0) << what;
+  EXPECT_LE(frame.energy, 0.0) << what;
+  EXPECT_LE(frame_slow.energy, 0.0) << what;
 }
 
 TEST(SoftLoop, AStiffPressGivesTheHandNoEnergyOnTimeOrWithSlowSoftSteps)

@@ -31,9 +31,17 @@ struct FakeDeviceParams
   // s: 0 plays the script once; else, once it ends, the hand goes back to the script's first
   // waypoint in this time (a straight line) and plays it again, for ever.
   double repeat_return = 0.0;
+  // packet: update() applies the force for the last reading with the next one (a Falcon's
+  // exchange, the default); frame: exchangeFrame() applies the force for the reading it just
+  // took (an Omni/Touch's servo frame), so the servo loop renders at the read
+  // (haptic_device.h DeviceExchange). The simulated hand: with packet, the force given to
+  // update() acts over the period that call ends (the simulation's convention since the start:
+  // it models no period of the packet's delay); with frame, the force for a frame's reading
+  // acts over the period after that frame, as on a device.
+  DeviceExchange exchange = DeviceExchange::kPacket;
 };
-// handle_mass, handle_damping, grip_stiffness, grip_damping, repeat_return: units, ranges,
-// meanings.
+// handle_mass, handle_damping, grip_stiffness, grip_damping, repeat_return, exchange: units,
+// ranges, meanings.
 const ParameterTable<FakeDeviceParams>& fakeDeviceParameterTable();
 std::string validate(const FakeDeviceParams& params);
 // Every row `source` sets (defaults above); InputError on a bad one.
@@ -61,6 +69,14 @@ class FakeDevice : public HapticDevice
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
   // As update(), recording `torque` (N m, device frame) for lastTorque().
   DeviceReading updateWrench(double time, const Eigen::Vector3d& force, const Eigen::Vector3d& torque) override;
+  DeviceExchange exchangeForm() const override
+  {
+    return params_.exchange;
+  }
+  // exchange: frame: the hand moves under the wrench the last frame's responder gave, then the
+  // reading goes to `responder` and its wrench is kept for the next frame. With exchange:
+  // packet it throws DeviceError (HapticDevice's).
+  DeviceReading exchangeFrame(double time, FrameResponder& responder) override;
   // The torque of the last updateWrench() (zero after update()). Read it from the thread that
   // calls update() (or after the loop stopped).
   const Eigen::Vector3d& lastTorque() const
@@ -108,6 +124,7 @@ class FakeDevice : public HapticDevice
   WaypointPath hand_;
   std::optional<OrientationPath> orientation_;
   Eigen::Vector3d torque_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d frame_force_ = Eigen::Vector3d::Zero();  // N: exchange frame, the last responder's
   Eigen::Vector3d position_;
   Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
   double last_time_ = 0.0;

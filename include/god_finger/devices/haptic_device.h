@@ -45,6 +45,47 @@ struct DeviceReading
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };
 
+// How a device's servo frame meets the force (runtime/servo_loop.h).
+//  - kPacket: one exchange applies the force decided for the last reading and reads the next
+//    (a Falcon's USB packet carries both ways): the force for a reading reaches the motors with
+//    the next exchange, a period later. update() / updateWrench().
+//  - kFrame: one exchange reads, asks for the force for that very reading, and applies it before
+//    the frame ends (the Omni/Touch's servo frame: hdBeginFrame, read, set the force,
+//    hdEndFrame). exchangeFrame().
+enum class DeviceExchange
+{
+  kPacket,
+  kFrame,
+};
+// "packet", "frame": the names device parameters use.
+inline std::string deviceExchangeName(DeviceExchange exchange)
+{
+  return exchange == DeviceExchange::kFrame ? "frame" : "packet";
+}
+// False, `exchange` untouched, for any other name.
+inline bool parseDeviceExchange(const std::string& name, DeviceExchange* exchange)
+{
+  if (name != "packet" && name != "frame")
+  {
+    return false;
+  }
+  *exchange = name == "frame" ? DeviceExchange::kFrame : DeviceExchange::kPacket;
+  return true;
+}
+
+// Decides the wrench for a reading while a kFrame device holds its frame open. Called once per
+// exchangeFrame(), from the thread that called it or the device's own servo thread while that
+// one waits; must be real-time safe (no allocation, lock or log).
+class FrameResponder
+{
+ public:
+  virtual ~FrameResponder() = default;
+  // `reading` (device frame) in; the force (N) and torque (N m) for it out, device frame, already
+  // guarded (saturated, watchdog, soft start): the device applies them as given (clamped to its
+  // own limit).
+  virtual void respond(const DeviceReading& reading, Eigen::Vector3d* force, Eigen::Vector3d* torque) = 0;
+};
+
 class HapticDevice;
 struct DeviceFinger
 {
@@ -70,6 +111,20 @@ class HapticDevice
   virtual DeviceReading updateWrench(double time, const Eigen::Vector3d& force, const Eigen::Vector3d& /*torque*/)
   {
     return update(time, force);
+  }
+  // kFrame: the servo loop calls exchangeFrame() instead of updateWrench() (update() still works,
+  // for loops that decide the force apart from the exchange: the topic topologies' driver).
+  virtual DeviceExchange exchangeForm() const
+  {
+    return DeviceExchange::kPacket;
+  }
+  // kFrame devices: one servo tick at `time` (s, monotonic): reads the state, calls `responder`
+  // exactly once with it (also when the frame failed: then with the last good state, whose
+  // force waits for the next frame), applies the wrench it gives, and returns the reading. Same
+  // real-time rules and faults as update(). A kPacket device throws DeviceError.
+  virtual DeviceReading exchangeFrame(double /*time*/, FrameResponder& /*responder*/)
+  {
+    throw DeviceError(name() + ": this device reads and writes in one packet; it has no frame exchange");
   }
   // Simulated devices that follow a script (fake, replay): the time of update()'s clock at
   // which the script's time 0 is played, so that the devices of one session move in step.

@@ -19,10 +19,10 @@
 // maximum); non-finite forces are sent as zero.
 #pragma once
 
-#include "god_finger/support/parameter_source.h"
-#include "god_finger/support/parameter_table.h"
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
+#include "god_finger/support/parameter_source.h"
+#include "god_finger/support/parameter_table.h"
 
 #include <Eigen/Geometry>
 #include <array>
@@ -49,6 +49,15 @@ struct OmniFrame
   std::array<double, 9> rotation{1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0};
 };
 
+// Gives the force (N, Omni frame) to set in the servo frame that read `frame` (OmniIo::exchangeFrame).
+// Called in the HD scheduler's servo thread while the caller waits: real-time safe.
+class OmniFrameResponder
+{
+ public:
+  virtual ~OmniFrameResponder() = default;
+  virtual std::array<double, 3> forceFor(const OmniFrame& frame) = 0;
+};
+
 // The HD API calls god_finger needs, one method each.
 class OmniIo
 {
@@ -63,6 +72,10 @@ class OmniIo
   // One servo frame (hdBeginFrame ... hdEndFrame): applies `force` (N, Omni frame), reads the
   // stylus. False on a device fault.
   virtual bool exchange(const std::array<double, 3>& force, OmniFrame* frame) = 0;
+  // One servo frame that answers its own reading: hdBeginFrame, read the stylus, set the force
+  // `responder` gives for what was read, hdEndFrame. False on a device fault (the responder
+  // may or may not have been called).
+  virtual bool exchangeFrame(OmniFrameResponder& responder, OmniFrame* frame) = 0;
   virtual double nominalMaxForce() = 0;  // N, HD_NOMINAL_MAX_FORCE
   virtual std::string lastError() = 0;   // hdGetErrorString of the last error
 };
@@ -98,6 +111,17 @@ class OmniDevice : public HapticDevice
   // DeviceError saying what to do.
   void start() override;
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
+  // The HD API's servo frame reads and writes with room between: the servo loop decides the
+  // force for a reading inside the frame that read it (OmniIo::exchangeFrame).
+  DeviceExchange exchangeForm() const override
+  {
+    return DeviceExchange::kFrame;
+  }
+  // As update(), the force the one `responder` gives for this frame's reading, set in the same
+  // frame. A failed frame: the responder answers what it read, or the last good frame's reading
+  // where it read nothing (that force waits for the next frame); DeviceError after
+  // io_failures_allowed in a row, as update().
+  DeviceReading exchangeFrame(double time, FrameResponder& responder) override;
 
   static Eigen::Vector3d omniToDevice(const std::array<double, 3>& omni_mm, const std::array<double, 3>& center_mm);
   // The finger frame in the device frame for a stylus rotation (OmniFrame::rotation; see above).
@@ -110,7 +134,11 @@ class OmniDevice : public HapticDevice
   }
 
  private:
+  class FrameAnswer;  // exchangeFrame()'s OmniFrameResponder (omni_device.cpp)
   void calibrate();
+  // The reading of frame `frame` at `time` (velocity estimated; last_frame_ on a failed frame).
+  DeviceReading readingOf(double time, const OmniFrame& frame);
+  void recordFrame(bool ok, const OmniFrame& frame);  // DeviceError after too many failures
 
   std::unique_ptr<OmniIo> io_;
   OmniParams params_;

@@ -43,7 +43,15 @@
 // after the step and the step's coupling reaction (InterfaceState::user_force); every few steps
 // a world snapshot for the publishers.
 //
-// The force for the reading of tick k (applied at tick k + 1's update), per interface:
+// A frame device (HapticDevice::exchangeForm() kFrame: the Omni/Touch's servo frame) is read,
+// answered and written in one exchange (exchangeFrame): the loop takes its reading and decides
+// its force within it, from the last completed step (the one that took tick k - 1's targets when
+// on time: physics_lag 1, not stale), rendered at the read as below (the step's proxy while the
+// device presses into one of its planes, the device itself otherwise), and the device applies it
+// in the same frame, a period sooner than a packet device's. On time it runs without the hold's
+// controller, as a packet device's exact force does; late (lag > 1) its hold begins as below.
+// The force for the reading of tick k of a packet device (applied at tick k + 1's update), per
+// interface:
 //  - on time (the last completed step took tick k's targets) and exact: the step's coupling
 //    reaction, bit for bit what a single-rate loop commands;
 //  - late ("stale", physics lag k - j > 0 for the last completed step j): the virtual coupling
@@ -163,8 +171,9 @@ struct ServoSample
   long tick = 0;
   double time = 0.0;  // s, the loop clock's (simulated time, or seconds since the loop began)
   int interface = 0;
-  DeviceReading reading;                                    // device frame; the last finite one
-  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();  // N, device frame, applied at this tick
+  DeviceReading reading;  // device frame; the last finite one
+  // N, device frame, applied at this tick (a frame device's: the force decided for this reading).
+  Eigen::Vector3d applied_force = Eigen::Vector3d::Zero();
   // N, device frame: the command for the next tick, the guard's input (saturated, before the
   // watchdog, soft start, continuous budget, rate limit and stop that give the next applied_force).
   Eigen::Vector3d commanded_force = Eigen::Vector3d::Zero();
@@ -183,14 +192,17 @@ struct ServoSample
   double read_at = 0.0;    // s, steadySeconds() when the device was read
   double period_us = 0.0;  // since the previous tick began (wall clock)
   // From this device's reading to its force being ready (wall clock): simulated time, the
-  // command; real time, the step's completion when on time, else the haptic side's rendering
-  // (at the next tick's start). Either way the force is applied at the next tick's update.
+  // command; real time, a packet device's: the step's completion when on time, else the haptic
+  // side's rendering (at the next tick's start), applied at the next tick's update; a frame
+  // device's: the rendering at the read, applied in the same frame.
   double latency_us = 0.0;
   double step_us = 0.0;  // the world step whose result gave the force (wall clock)
   // The force was rendered on the haptic side against the anchor (physics late, or recovering
   // from it), not the step's coupling reaction; user_force is then that rendering's.
   bool stale = false;
-  long physics_lag = 0;  // ticks from the targets of the last completed step to this reading (0: on time)
+  // Ticks from the targets of the last completed step to this reading (on time: 0 for a packet
+  // device, 1 for a frame device).
+  long physics_lag = 0;
   // False: the device's source lost this finger (DeviceReading::tracked): the loop let it go.
   bool tracked = true;
   bool missing = false;  // untracked because the source's newest message lacked it (DeviceReading::missing)
@@ -349,18 +361,32 @@ class ServoLoop
     // the tracked pose with the force guard's soft start from regrip_at (s, loop time).
     Eigen::Vector3d regrip_from = Eigen::Vector3d::Zero();
     double regrip_at = -INFINITY;
-    double ready_at = 0.0;  // s, wall: when the last decision's force was ready
+    double ready_at = 0.0;    // s, wall: when the last decision's force was ready
+    bool frame_held = false;  // a frame device's last decision was late (its hold under way)
   };
+  // One tick's button presses over every interface.
+  struct Presses
+  {
+    bool cycle_model = false;
+    bool reset = false;
+    bool toggle_stop = false;
+  };
+  class FrameStep;  // a kFrame device's responder (servo_loop.cpp)
 
-  void readDevices(double time);
+  // Every device's exchange this tick (a frame device's force decided within it, at `period_us`).
+  void readDevices(double time, double period_us);
+  // Interface i's reading: bounded, mapped, into its target; its presses added to `presses`.
+  void takeReading(std::size_t i, const DeviceReading& reading, double time, Presses* presses);
   void applyHandTargets(double time);  // hand targets, force stop and resume; loop time (s)
   void applyWorldCommands();
   // Physics side: one step with `frame`'s targets; fills `out`.
   void stepFrame(const TargetFrame& frame, StepResult* out);
   // Simulated time: the physics of this tick, lockstep, through the stall seam.
   void physicsInline();
-  // Haptic side: the force for tick `tick`'s reading (loop time `time`), from latest_.
+  // Haptic side: the force for tick `tick`'s reading (loop time `time`), from latest_, for every
+  // packet device (decideInterface: one interface; a frame device's, with its applied wrench).
   void decide(long tick, double time, double period_us);
+  void decideInterface(std::size_t i, long tick, double time, double period_us);
   void run();       // the haptic thread: starts and ends the physics thread on real time
   void runTicks();  // its loop
   void runPhysics();
@@ -382,7 +408,8 @@ class ServoLoop
   std::vector<Eigen::Vector3d> applied_torque_;  // N m, device frame, given at this tick
   std::vector<double> read_at_;                  // wall-clock seconds of each reading
   std::vector<Render> render_;
-  long cycle_presses_ = 0;  // haptic side's counts
+  std::vector<char> frame_exchange_;  // per interface: its device is DeviceExchange::kFrame
+  long cycle_presses_ = 0;            // haptic side's counts
   long reset_presses_ = 0;
   SpscQueue<ServoSample> samples_;
   SpscQueue<WorldSnapshot> snapshots_;

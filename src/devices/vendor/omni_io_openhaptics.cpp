@@ -16,8 +16,23 @@ struct ServoExchange
   HDdouble position[3];
   HDint buttons;
   HDErrorInfo error;
-  HDdouble transform[16];  // HD_CURRENT_TRANSFORM, column-major (zero-initialised)
+  HDdouble transform[16];         // HD_CURRENT_TRANSFORM, column-major (zero-initialised)
+  OmniFrameResponder* responder;  // non-null: the force is its answer to this frame's reading
 };
+
+void toOmniFrame(const ServoExchange& exchange, OmniFrame* frame)
+{
+  frame->position_mm = {exchange.position[0], exchange.position[1], exchange.position[2]};
+  frame->buttons = static_cast<unsigned>(exchange.buttons);
+  frame->has_rotation = true;
+  for (int column = 0; column < 3; ++column)
+  {
+    for (int row = 0; row < 3; ++row)
+    {
+      frame->rotation[3 * column + row] = exchange.transform[4 * column + row];
+    }
+  }
+}
 
 HDCallbackCode HDCALLBACK servoFrame(void* data)
 {
@@ -26,6 +41,16 @@ HDCallbackCode HDCALLBACK servoFrame(void* data)
   hdGetDoublev(HD_CURRENT_POSITION, exchange->position);
   hdGetDoublev(HD_CURRENT_TRANSFORM, exchange->transform);  // column-major 4x4
   hdGetIntegerv(HD_CURRENT_BUTTONS, &exchange->buttons);
+  if (exchange->responder != nullptr)
+  {
+    OmniFrame frame;
+    toOmniFrame(*exchange, &frame);
+    const std::array<double, 3> force = exchange->responder->forceFor(frame);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      exchange->force[axis] = force[axis];
+    }
+  }
   hdSetDoublev(HD_CURRENT_FORCE, exchange->force);
   hdEndFrame(exchange->device);
   exchange->error = hdGetError();
@@ -104,22 +129,22 @@ class OpenHapticsIo : public OmniIo
   }
   bool exchange(const std::array<double, 3>& force, OmniFrame* frame) override
   {
-    ServoExchange exchange{device_, {force[0], force[1], force[2]}, {0.0, 0.0, 0.0}, 0, HDErrorInfo()};
+    return runFrame({force[0], force[1], force[2]}, nullptr, frame);
+  }
+  bool exchangeFrame(OmniFrameResponder& responder, OmniFrame* frame) override
+  {
+    return runFrame({0.0, 0.0, 0.0}, &responder, frame);
+  }
+  // One servo frame in the HD scheduler's thread, this one waiting (hdScheduleSynchronous).
+  bool runFrame(const std::array<double, 3>& force, OmniFrameResponder* responder, OmniFrame* frame)
+  {
+    ServoExchange exchange{device_, {force[0], force[1], force[2]}, {0.0, 0.0, 0.0}, 0, HDErrorInfo(), {}, responder};
     hdScheduleSynchronous(servoFrame, &exchange, HD_DEFAULT_SCHEDULER_PRIORITY);
     if (failed(exchange.error))
     {
       return false;
     }
-    frame->position_mm = {exchange.position[0], exchange.position[1], exchange.position[2]};
-    frame->buttons = static_cast<unsigned>(exchange.buttons);
-    frame->has_rotation = true;
-    for (int column = 0; column < 3; ++column)
-    {
-      for (int row = 0; row < 3; ++row)
-      {
-        frame->rotation[3 * column + row] = exchange.transform[4 * column + row];
-      }
-    }
+    toOmniFrame(exchange, frame);
     return true;
   }
   double nominalMaxForce() override
