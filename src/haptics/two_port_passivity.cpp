@@ -121,13 +121,12 @@ void PhysicsPortPassivity::observe(const Eigen::Vector3d& position, const Eigen:
   {
     return;
   }
-  if (has_last_)
+  // The force the physics answered with, over the move of the position it was given.
+  double work = 0.0;
+  if (moves_.work(position, force, &work))
   {
-    // The force the physics answered with, over the move of the position it was given.
-    observer_.observe(force.dot(position - last_used_) / period_, period_);
+    observer_.observe(work / period_, period_);
   }
-  last_used_ = position;
-  has_last_ = true;
   noteMargin();
 }
 
@@ -135,7 +134,6 @@ void PhysicsPortPassivity::reset()
 {
   resetSide();
   drift_.setZero();
-  last_used_.setZero();
-  has_last_ = false;
+  moves_.reset();
 }
 }  // namespace god_finger

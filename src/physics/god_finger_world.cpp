@@ -391,12 +391,10 @@ struct GodFingerWorld::Impl
     for (const int index : soft_bodies)
     {
       Body& body = bodies[index];
-      const Eigen::Vector3d centre = toEigen(body.rigid->getWorldTransform().getOrigin());
-      if (body.soft->resting && (!centre.allFinite() || !bounds.contains(centre)))
+      if (body.soft->resting && outsideBounds(bounds, toEigen(body.rigid->getWorldTransform().getOrigin())))
       {
         resetSoftVolume(world.get(), &body);
-        ++body.left_world;
-        body.left_world_at = time;
+        countLeftWorld(&body);
       }
     }
     for (const int index : awake)
@@ -407,10 +405,16 @@ struct GodFingerWorld::Impl
       {
         prepareSleep(body.rigid.get());
         body.net_force.setZero();
-        ++body.left_world;
-        body.left_world_at = time;
+        countLeftWorld(&body);
       }
     }
+  }
+
+  // A body caught past the bounds (BodyState::left_world), now.
+  void countLeftWorld(Body* body) const
+  {
+    ++body->left_world;
+    body->left_world_at = time;
   }
 
   // A dynamic body starts with a full sleep timer, less the time a free fall from rest takes to

@@ -10,11 +10,15 @@ Eigen::AlignedBox3d worldBounds(const Eigen::AlignedBox3d& scene_box, double mar
   return Eigen::AlignedBox3d(scene_box.min() - grow, scene_box.max() + grow);
 }
 
+bool outsideBounds(const Eigen::AlignedBox3d& bounds, const Eigen::Vector3d& point)
+{
+  return !point.allFinite() || !bounds.contains(point);
+}
+
 bool catchIfOutside(const Eigen::AlignedBox3d& bounds, const btTransform& start, btRigidBody* rigid,
                     btDiscreteDynamicsWorld* world)
 {
-  const Eigen::Vector3d centre = toEigen(rigid->getCenterOfMassPosition());
-  if (centre.allFinite() && bounds.contains(centre))
+  if (!outsideBounds(bounds, toEigen(rigid->getCenterOfMassPosition())))
   {
     return false;
   }

@@ -21,7 +21,10 @@ namespace god_finger::internal
 // `scene_box` grown by `margin` (m, > 0) on every side.
 Eigen::AlignedBox3d worldBounds(const Eigen::AlignedBox3d& scene_box, double margin);
 
-// If `rigid`'s centre of mass lies outside `bounds` (or is not finite): puts it at `start` (its
+// True when `point` (m, world) lies outside `bounds` or is not finite: a body there is caught.
+bool outsideBounds(const Eigen::AlignedBox3d& bounds, const Eigen::Vector3d& point);
+
+// If `rigid`'s centre of mass lies outside `bounds` (outsideBounds): puts it at `start` (its
 // centre-of-mass frame in the world) with zero velocity and no pending force, updates its
 // bounding box in `world` and drops its contact pairs; returns true. Else false, untouched.
 bool catchIfOutside(const Eigen::AlignedBox3d& bounds, const btTransform& start, btRigidBody* rigid,

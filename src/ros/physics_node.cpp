@@ -74,8 +74,7 @@ struct PhysicsNode::Impl
     // The channel's physics port (channel_port.h): the work of the force answered over the move
     // of the target the step took, sent on NAME/physics_energy after each step.
     std::unique_ptr<ChannelPort> channel;
-    Eigen::Vector3d channel_target = Eigen::Vector3d::Zero();  // m, world: the last step's target
-    bool have_channel_target = false;
+    MoveWork channel_moves;     // from the last step's target (m, world)
     double channel_work = 0.0;  // J: this step's, for publishStep()
   };
 
@@ -239,11 +238,8 @@ struct PhysicsNode::Impl
       interface.user_torque = state.user_torque;
       interface.proxy_position = state.proxy_position;
       interface.state = state;
-      interface.channel_work = interface.have_channel_target
-                                   ? state.user_force.dot(state.interface_position - interface.channel_target)
-                                   : 0.0;
-      interface.channel_target = state.interface_position;
-      interface.have_channel_target = true;
+      interface.channel_work = 0.0;
+      interface.channel_moves.work(state.interface_position, state.user_force, &interface.channel_work);
     }
   }
 

@@ -151,6 +151,48 @@ class PortSide
   long active_ticks_ = 0;
 };
 
+// The work (J) of a force over a position's moves, one move per call: what the physics port
+// counts (the force it answered with over the move of the position it was given), here and in
+// the physics node (ros/channel_port.h).
+class MoveWork
+{
+ public:
+  // `force` . (`position` - the last kept position) into `joules`, true; false at the first
+  // call (nothing to move from). A non-finite position or force: false, and not kept.
+  bool work(const Eigen::Vector3d& position, const Eigen::Vector3d& force, double* joules)
+  {
+    if (!force.allFinite() || !position.allFinite())
+    {
+      return false;
+    }
+    const bool moved = has_last_;
+    if (moved)
+    {
+      *joules = force.dot(position - last_);
+    }
+    last_ = position;
+    has_last_ = true;
+    return moved;
+  }
+  bool hasLast() const
+  {
+    return has_last_;
+  }
+  const Eigen::Vector3d& last() const  // m: the last position kept
+  {
+    return last_;
+  }
+  void reset()
+  {
+    last_.setZero();
+    has_last_ = false;
+  }
+
+ private:
+  Eigen::Vector3d last_ = Eigen::Vector3d::Zero();
+  bool has_last_ = false;
+};
+
 // A port observed and not controlled: the nodes' form across processes (the haptic node's device
 // port, the physics node's physics port; their packets god_finger/PortEnergy on the link's
 // topics, their figures on /diagnostics). The sides count from `session` (the sender's start);
@@ -243,13 +285,14 @@ class PhysicsPortPassivity : public PortSide
     }
     const auto at = [&](double fraction, Eigen::Vector3d* x, Eigen::Vector3d* v) -> Eigen::Vector3d
     {
-      *x = has_last_ && fraction < 1.0 ? Eigen::Vector3d(last_used_ + fraction * (position + drift_ - last_used_))
-                                       : Eigen::Vector3d(position + drift_);
+      *x = moves_.hasLast() && fraction < 1.0
+               ? Eigen::Vector3d(moves_.last() + fraction * (position + drift_ - moves_.last()))
+               : Eigen::Vector3d(position + drift_);
       *v = seen_velocity + ((*x - position) - last_drift) / period_;
       return force_at(*x, *v);
     };
     Eigen::Vector3d force = at(1.0, used_position, used_velocity);
-    if (acting && has_last_ && leaving(force, *used_position) > allowance())
+    if (acting && moves_.hasLast() && leaving(force, *used_position) > allowance())
     {
       double fits = 0.0;
       double fails = 1.0;
@@ -281,8 +324,7 @@ class PhysicsPortPassivity : public PortSide
   PassivityParams params_;
   double period_;
   Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d last_used_ = Eigen::Vector3d::Zero();  // m: the position used last tick
-  bool has_last_ = false;
+  MoveWork moves_;  // from the position used last tick
 
   // J: what this tick may let out (a breach past is not paid by holding still).
   double allowance() const
@@ -293,7 +335,7 @@ class PhysicsPortPassivity : public PortSide
   // non-finite force: everything, so that the bisection moves back).
   double leaving(const Eigen::Vector3d& force, const Eigen::Vector3d& position) const
   {
-    const double out = -force.dot(position - last_used_);
+    const double out = -force.dot(position - moves_.last());
     return std::isfinite(out) ? std::max(0.0, out) : std::numeric_limits<double>::infinity();
   }
   void observe(const Eigen::Vector3d& position, const Eigen::Vector3d& force);
