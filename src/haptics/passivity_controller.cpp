@@ -32,6 +32,11 @@ const ParameterTable<PassivityParams>& passivityParameterTable()
                  "not in the nodes yet) returns the hand's position it moved out of a contact, as far as the energy "
                  "the device put in allows",
                  [](P& p) -> double& { return p.passivity_drift_return; }),
+      realRow<P>("passivity_contact_credit", "J", closed(0.0, 1.0),
+                 "what the physics side of the two-port passivity controller may let out before the device has put "
+                 "it in, so that a contact can start (in free motion the device renders no force and puts nothing "
+                 "in); that side's energy margin never goes below minus this",
+                 [](P& p) -> double& { return p.passivity_contact_credit; }),
   };
   return table;
 }

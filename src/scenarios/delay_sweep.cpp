@@ -136,19 +136,19 @@ class Channel
 struct Port
 {
   Port(const DelayLineParams& up_params, const DelayLineParams& down_params, const PassivityParams& one_port,
-       const PassivityParams& two_port)
+       const PassivityParams& device_side, const PassivityParams& physics_side)
       : up(up_params),
         down(down_params),
         controller(one_port, kTick),
-        device_port(two_port, kTick),
-        physics_port(two_port, kTick)
+        device_port(device_side, kTick),
+        physics_port(physics_side, kTick)
   {
   }
   Channel up;                                 // positions to the physics
   Channel down;                               // forces back
-  PassivityController controller;             // the one-port form, at the device
-  DevicePortPassivity device_port;            // the two-port form's device side
-  PhysicsPortPassivity physics_port;          // and its physics side
+  PassivityController controller;             // at the device, in either form
+  DevicePortPassivity device_port;            // the two-port's device side: observed only
+  PhysicsPortPassivity physics_port;          // its physics side: the two-port form's controller
   double max_drift = 0.0;                     // m
   double x = 0.0;                             // m: the handle
   double v = 0.0;                             // m/s
@@ -294,7 +294,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
     link.seed = trial.seed * 4 + 2 * p;
     DelayLineParams back = link;
     back.seed = link.seed + 1;
-    ports.emplace_back(link, back, two_port ? observer_only : passivity, two_port ? passivity : observer_only);
+    ports.emplace_back(link, back, passivity, observer_only, two_port ? passivity : observer_only);
     ports.back().x = ports.back().previous_x = restPoint(trial.task, p, 0.0);
   }
   double block = 0.0;  // m: the grasp block's centre
@@ -409,19 +409,12 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       {
         command = trial.local_coupling ? localCoupling(coupling, port) : port.command.a;
       }
-      // Both forms' device sides see the force rendered; the one not in use only counts.
+      // Either form's device renders through the one-port controller; the two-port's device side
+      // counts what it rendered.
       const Eigen::Vector3d handle_v(port.v, 0, 0);
-      double rendered = 0.0;
-      if (two_port)
-      {
-        rendered = port.device_port.apply(Eigen::Vector3d(command, 0, 0), handle_v, coupling.max_force).x();
-        port.controller.apply(Eigen::Vector3d(rendered, 0, 0), handle_v, coupling.max_force);
-      }
-      else
-      {
-        rendered = port.controller.apply(Eigen::Vector3d(command, 0, 0), handle_v, coupling.max_force).x();
-        port.device_port.apply(Eigen::Vector3d(rendered, 0, 0), handle_v, coupling.max_force);
-      }
+      const double rendered =
+          port.controller.apply(Eigen::Vector3d(command, 0, 0), handle_v, coupling.max_force).x();
+      port.device_port.apply(Eigen::Vector3d(rendered, 0, 0), handle_v, coupling.max_force);
       const double rest =
           restPoint(trial.task, p, now) +
           (now < kDuration - kQuietTail ? hand.tremor * std::sin(2.0 * M_PI * hand.tremor_hz * now) : 0.0) *

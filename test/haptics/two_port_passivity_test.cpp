@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace god_finger
@@ -120,9 +121,11 @@ Eigen::Vector3d wall(const Eigen::Vector3d& x, const Eigen::Vector3d& /*v*/)
   return Eigen::Vector3d(x.x() > 0.0 ? -400.0 * x.x() : 0.0, 0.0, 0.0);
 }
 
-TEST(TwoPortPassivity, ThePhysicsTakesInNoMoreThanTheDevicePutInAndTheDriftReturns)
+TEST(TwoPortPassivity, ThePhysicsTakesInNoMoreThanTheDevicePutInAndTheCreditAndTheDriftReturns)
 {
   PassivityParams params;
+  const double credit = params.passivity_contact_credit;
+  EXPECT_EQ(credit, 1e-4);
   PhysicsPortPassivity physics(params, kPeriod);
   Eigen::Vector3d used_x, used_v;
   // The hand is seen moving 1 cm into the wall over 100 ticks, while the device's packets say it
@@ -133,23 +136,27 @@ TEST(TwoPortPassivity, ThePhysicsTakesInNoMoreThanTheDevicePutInAndTheDriftRetur
     const Eigen::Vector3d seen(-0.002 + 1.2e-4 * tick, 0.0, 0.0);
     const Eigen::Vector3d force = physics.answer(seen, Eigen::Vector3d(0.12, 0.0, 0.0), wall, &used_x, &used_v);
     EXPECT_EQ(force, wall(used_x, used_v));
-    EXPECT_GE(physics.margin(), 0.0);
+    EXPECT_GE(physics.margin(), -credit);
   }
-  // The spring holds what went in, counted with each tick's end force (an upper bound on the
-  // spring's work): at 400 N/m, 2 mJ is a depth of sqrt(2 x 2e-3 / 400) = 3.16 mm, less a tick.
-  EXPECT_NEAR(used_x.x(), std::sqrt(2.0 * 2e-3 / 400.0), 1.2e-4);
-  EXPECT_LT(used_x.x(), std::sqrt(2.0 * 2e-3 / 400.0));
-  EXPECT_NEAR(physics.observer().out(), 2e-3, 1e-9);
+  // The spring holds what went in and the credit, counted with each tick's end force (an upper
+  // bound on the spring's work): at 400 N/m, 2.1 mJ is a depth of sqrt(2 x 2.1e-3 / 400) = 3.24
+  // mm, less a tick.
+  const double depth = std::sqrt(2.0 * (2e-3 + credit) / 400.0);
+  EXPECT_NEAR(used_x.x(), depth, 1.2e-4);
+  EXPECT_LT(used_x.x(), depth);
+  EXPECT_NEAR(physics.observer().out(), 2e-3 + credit, 1e-9);
   EXPECT_NEAR(physics.drift().x(), used_x.x() - 0.01, 1e-15);  // the 1 cm seen less what was used
   EXPECT_LT(physics.drift().x(), -0.006);
   const double drift = physics.drift().x();
-  // The device puts in 20 mJ more: the drift returns, 2 /s x 1 ms of it a tick.
+  // The device puts in 20 mJ more: the drift returns, passivity_drift_return x 1 ms of it a tick.
+  const double rate = params.passivity_drift_return;
+  EXPECT_EQ(rate, 10.0);
   physics.remote().receive({0.2, 0.022});
   const Eigen::Vector3d seen(0.01, 0.0, 0.0);
   physics.answer(seen, Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
-  EXPECT_NEAR(physics.drift().x(), drift * (1.0 - 2.0 * kPeriod), 1e-12);
-  EXPECT_NEAR(used_v.x(), -2.0 * drift, 1e-9);  // (d' - d) / dt
-  for (int tick = 0; tick < 6000; ++tick)       // 0.998^6000: 6e-6 of it is left
+  EXPECT_NEAR(physics.drift().x(), drift * (1.0 - rate * kPeriod), 1e-12);
+  EXPECT_NEAR(used_v.x(), -rate * drift, 1e-9);  // (d' - d) / dt
+  for (int tick = 0; tick < 1200; ++tick)        // 0.99^1200: 6e-6 of it is left
   {
     physics.answer(seen, Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
   }
@@ -158,21 +165,70 @@ TEST(TwoPortPassivity, ThePhysicsTakesInNoMoreThanTheDevicePutInAndTheDriftRetur
   EXPECT_GE(physics.margin(), 0.0);
 }
 
+// The two-port form's first contact: in free motion the device renders no force and puts no
+// energy in, so without the credit the physics may let none out, the wall never pushes and the
+// device never pays (measured before the credit: no force at all with no link). On the credit
+// the wall takes 0.1 mJ, its force reaches the hand, and what the hand then puts in against it
+// lets the contact go deeper.
+TEST(TwoPortPassivity, AContactStartsOnTheCreditAndGoesOnOnWhatTheDevicePutsIn)
+{
+  PassivityParams params;
+  const double credit = params.passivity_contact_credit;
+  PhysicsPortPassivity physics(params, kPeriod);
+  params.passivity_contact_credit = 0.0;
+  PhysicsPortPassivity without(params, kPeriod);
+  Eigen::Vector3d used_x, used_v;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  for (int tick = 0; tick <= 100; ++tick)  // 1 cm into the wall over 100 ticks, nothing put in
+  {
+    const Eigen::Vector3d seen(1e-4 * tick, 0.0, 0.0);
+    force = physics.answer(seen, Eigen::Vector3d(0.1, 0.0, 0.0), wall, &used_x, &used_v);
+    EXPECT_GE(physics.margin(), -credit);
+    Eigen::Vector3d held_x, held_v;
+    EXPECT_EQ(without.answer(seen, Eigen::Vector3d(0.1, 0.0, 0.0), wall, &held_x, &held_v).x(), 0.0);
+    EXPECT_LE(held_x.x(), 0.0);  // held at the surface
+  }
+  EXPECT_NEAR(physics.observer().out(), credit, 1e-12);
+  // Each 0.1 mm move counted with its end force, 400 x_k 0.1 mm, summing to the credit: 0.66 mm
+  // (6 moves and part of the 7th), 0.264 N; between a single move's 400 x^2 = 0.1 mJ (0.5 mm)
+  // and the spring's own 200 x^2 (0.71 mm).
+  EXPECT_NEAR(used_x.x(), (0.24 + std::sqrt(0.24 * 0.24 + 4.0 * 400.0 * 1.6e-5)) / 800.0, 1e-9);
+  EXPECT_NEAR(force.x(), -0.26422, 1e-5);
+  const Eigen::Vector3d on_credit = used_x;
+  EXPECT_EQ(without.observer().out(), 0.0);
+  // The hand pushes 2 mm further against that force: 0.2 N x 2 mm = 0.4 mJ in, told by packet.
+  // The drift returns as far as that pays: the spring takes 0.5 mJ in all (the credit stays
+  // lent), 1.58 mm deep at most (counted with the end force, a little less).
+  const double paid = -force.x() * 0.002;
+  physics.remote().receive({0.1, paid});
+  for (int tick = 0; tick < 1000; ++tick)
+  {
+    force = physics.answer(Eigen::Vector3d(0.01, 0, 0), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
+    EXPECT_GE(physics.margin(), -credit);
+  }
+  EXPECT_NEAR(physics.observer().out(), paid + credit, 1e-9);
+  EXPECT_LT(used_x.x(), std::sqrt(2.0 * (paid + credit) / 400.0));
+  EXPECT_GT(used_x.x(), 0.95 * std::sqrt(2.0 * (paid + credit) / 400.0));
+  std::printf("[ measured ] on the credit alone: %.4f N at %.4f mm; after %.2g J paid: %.4f N at %.4f mm\n",
+              400.0 * on_credit.x(), 1e3 * on_credit.x(), paid, -force.x(), 1e3 * used_x.x());
+}
+
 TEST(TwoPortPassivity, AJumpDeepIntoAContactIsHeldToWhatTheDevicePutIn)
 {
   // A late burst of messages: the hand seen 2 mm out, then 15 mm in at once (jitter). With 1 mJ
-  // put in, the physics lets the spring take 1 mJ and no more.
+  // put in, the physics lets the spring take 1 mJ and the credit, no more.
   PassivityParams params;
+  const double allowed = 1e-3 + params.passivity_contact_credit;
   PhysicsPortPassivity physics(params, kPeriod);
   Eigen::Vector3d used_x, used_v;
   physics.remote().receive({0.0, 1e-3});
   physics.answer(Eigen::Vector3d(-0.002, 0, 0), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
   physics.answer(Eigen::Vector3d(0.015, 0, 0), Eigen::Vector3d::Zero(), wall, &used_x, &used_v);
-  EXPECT_GE(physics.margin(), 0.0);
-  EXPECT_NEAR(physics.observer().out(), 1e-3, 1e-9);
-  // The end force times the move from -2 mm: 400 x (x + 0.002) = 1 mJ at x = 0.87 mm.
-  EXPECT_NEAR(400.0 * used_x.x() * (used_x.x() + 0.002), 1e-3, 1e-9);
-  EXPECT_NEAR(used_x.x(), 0.5 * (std::sqrt(4e-6 + 1e-5) - 0.002), 1e-9);
+  EXPECT_GE(physics.margin(), -params.passivity_contact_credit);
+  EXPECT_NEAR(physics.observer().out(), allowed, 1e-9);
+  // The end force times the move from -2 mm: 400 x (x + 0.002) = 1.1 mJ at x = 0.92 mm.
+  EXPECT_NEAR(400.0 * used_x.x() * (used_x.x() + 0.002), allowed, 1e-9);
+  EXPECT_NEAR(used_x.x(), 0.5 * (std::sqrt(4e-6 + 4.0 * allowed / 400.0) - 0.002), 1e-9);
   // Off, it takes the whole jump: 400 x 0.015 x 0.017 = 102 mJ out, 101 mJ beyond what came in.
   params.passivity_damping_limit = 0.0;
   PhysicsPortPassivity off(params, kPeriod);
@@ -215,7 +271,7 @@ TEST(TwoPortPassivity, ANonFinitePositionOrVelocityIsPassedOnAndForgotten)
   physics.answer(Eigen::Vector3d(0.015, 0, 0), Eigen::Vector3d::Constant(NAN), wall, &used_x, &used_v);
   EXPECT_TRUE(used_x.allFinite());
   EXPECT_TRUE(used_v.allFinite());
-  EXPECT_NEAR(physics.observer().out(), 1e-3, 1e-9);
+  EXPECT_NEAR(physics.observer().out(), 1e-3 + params.passivity_contact_credit, 1e-9);
   EXPECT_TRUE(physics.drift().allFinite());
 }
 

@@ -4,12 +4,14 @@
 // untouched when forces are forwarded; a trial repeats bit for bit. And what the local coupling
 // (the haptic node's default) gives: passive on a wall, a drag in free motion.
 #include "god_finger/scenarios/delay_sweep.h"
+#include "god_finger/haptics/passivity_controller.h"
 #include "god_finger/haptics/virtual_coupling.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace god_finger
 {
@@ -127,52 +129,65 @@ TEST(DelaySweep, ATrialRepeatsBitForBit)
 }
 
 // The channel as a two-port (haptics/two_port_passivity.h): each side's margin, the energy the
-// other put in as its packets said less what this side let out. The device port's controller keeps
-// the hand passive but not that split (the margins are sums over the run; the physics side's counts
-// the coupling damper's losses). The two-port controller keeps both margins at every contact
-// setting, through jitter and loss; what it costs (it blocks a contact from starting: with no link
-// no force at all; bench/REPORT.md section 13's second table) is why it is not the default. Off,
-// the margins fall far below: the test can fail.
-TEST(DelaySweep, TheTwoPortControllerKeepsBothSidesMarginsTheDevicePortsDoesNot)
+// other put in as its packets said less what this side let out. The two-port form adds the
+// physics side's controller to the device's one-port one: the physics' margin is held to the
+// contact's credit (passivity_contact_credit) at every contact setting, through jitter and loss,
+// the hand stays passive and nothing rings; with the device's controller alone the physics'
+// margin falls far below (the test can fail). The device side's margin is counted, not held: its
+// controller, tried, rang (docs/decisions.md); the hand's own energy is what the one-port holds.
+TEST(DelaySweep, TheTwoPortFormHoldsThePhysicsMarginToTheCreditAndNothingRings)
 {
+  const double credit = PassivityParams{}.passivity_contact_credit;
+  double lowest_device_margin = 0.0;
   for (const DelayTask task : {DelayTask::kPress, DelayTask::kTap, DelayTask::kGrasp})
   {
-    for (const double round_trip : {0.01, 0.03, 0.06, 0.1})
+    for (const DelayOperator op : {DelayOperator::kWorstCase, DelayOperator::kHumanLike})
     {
-      for (const double jitter : {0.0, 0.5})
+      for (const double round_trip : {0.01, 0.03, 0.06, 0.1})
       {
-        DelayTrial trial;
-        trial.task = task;
-        trial.op = DelayOperator::kWorstCase;
-        trial.round_trip = round_trip;
-        trial.jitter_fraction = jitter;
-        trial.loss = 0.02;
-        trial.form = PassivityForm::kTwoPort;
-        const DelayTrialResult two = runDelayTrial(trial);
-        std::printf("[ measured ] %s\n", delayTrialJson(trial, two).c_str());
-        EXPECT_GE(two.device_margin_J, -1e-6) << delayTaskName(task) << " " << round_trip;
-        EXPECT_GE(two.physics_margin_J, -1e-9) << delayTaskName(task) << " " << round_trip;
-        EXPECT_LE(two.peak_force_N, two.max_force_N);
-        EXPECT_GT(two.damped_ticks, 0);
-        trial.form = PassivityForm::kDevicePort;
-        const DelayTrialResult one = runDelayTrial(trial);
-        EXPECT_LT(std::min(one.device_margin_J, one.physics_margin_J), -1e-3)
-            << delayTaskName(task) << " " << round_trip;
-        EXPECT_EQ(one.max_drift_m, 0.0);
-        trial.controller = false;
-        const DelayTrialResult off = runDelayTrial(trial);
-        EXPECT_LT(std::min(off.device_margin_J, off.physics_margin_J), -0.1)
-            << delayTaskName(task) << " " << round_trip;
+        for (const double jitter : {0.0, 0.5})
+        {
+          DelayTrial trial;
+          trial.task = task;
+          trial.op = op;
+          trial.round_trip = round_trip;
+          trial.jitter_fraction = jitter;
+          trial.loss = 0.02;
+          trial.form = PassivityForm::kTwoPort;
+          const DelayTrialResult two = runDelayTrial(trial);
+          std::printf("[ measured ] %s\n", delayTrialJson(trial, two).c_str());
+          const std::string where = std::string(delayTaskName(task)) + " " + delayOperatorName(op) + " " +
+                                    std::to_string(round_trip) + " " + std::to_string(jitter);
+          EXPECT_GE(two.physics_margin_J, -credit - 1e-12) << where;
+          EXPECT_GE(two.lowest_energy_J, -1e-4) << where;
+          EXPECT_FALSE(two.sustained) << where;
+          EXPECT_GT(two.peak_force_N, 1.0) << where;  // the contact started
+          EXPECT_LE(two.peak_force_N, two.max_force_N) << where;
+          EXPECT_GT(two.damped_ticks, 0) << where;
+          lowest_device_margin = std::min(lowest_device_margin, two.device_margin_J);
+          trial.form = PassivityForm::kDevicePort;
+          const DelayTrialResult one = runDelayTrial(trial);
+          EXPECT_LT(one.physics_margin_J, -4.0 * credit) << where;  // measured: -4.6e-4 J at least
+          EXPECT_EQ(one.max_drift_m, 0.0);
+          trial.controller = false;
+          const DelayTrialResult off = runDelayTrial(trial);
+          EXPECT_LT(std::min(off.device_margin_J, off.physics_margin_J),
+                    op == DelayOperator::kWorstCase ? -0.1 : -4.0 * credit)
+              << where;
+        }
       }
     }
   }
+  std::printf("[ measured ] the two-port form's lowest device margin (counted, not held): %.3g J\n",
+              lowest_device_margin);
 }
 
-// The two-port form's limit, as docs/decisions.md says: in free motion the device renders no
-// force, so it puts no energy in, and the physics may let none out. With no link the contact
-// never starts (the hand sinks through the wall's surface feeling nothing); the device port's
-// controller renders the wall. When drift compensation lifts this, this test changes.
-TEST(DelaySweep, TheTwoPortFormCannotStartAContactOnTheEnergyOfFreeMotion)
+// The two-port form's first contact (two_port_passivity_test: on the credit): in free motion the
+// device renders no force and puts no energy in; the physics lends the credit, the wall's first
+// force reaches the hand, and its push pays for the rest. With no link it renders the wall as the
+// device port's form does (until the credit, no contact ever started: the hand sank through the
+// wall feeling nothing).
+TEST(DelaySweep, TheTwoPortFormStartsAContactOnTheCredit)
 {
   for (const DelayTask task : {DelayTask::kPress, DelayTask::kTap, DelayTask::kGrasp})
   {
@@ -180,10 +195,16 @@ TEST(DelaySweep, TheTwoPortFormCannotStartAContactOnTheEnergyOfFreeMotion)
     trial.task = task;
     trial.form = PassivityForm::kTwoPort;
     const DelayTrialResult two = runDelayTrial(trial);
-    EXPECT_EQ(two.peak_force_N, 0.0) << delayTaskName(task);
-    EXPECT_GT(two.max_drift_m, 0.01) << delayTaskName(task);  // the hand held out of the contact
     trial.form = PassivityForm::kDevicePort;
-    EXPECT_GT(runDelayTrial(trial).peak_force_N, 2.0) << delayTaskName(task);
+    const DelayTrialResult one = runDelayTrial(trial);
+    EXPECT_GT(two.peak_force_N, 2.0) << delayTaskName(task);
+    EXPECT_NEAR(two.peak_force_N, one.peak_force_N, 0.05 * one.peak_force_N) << delayTaskName(task);
+    EXPECT_GE(two.physics_margin_J, -PassivityParams{}.passivity_contact_credit - 1e-12) << delayTaskName(task);
+    if (task == DelayTask::kPress)
+    {
+      EXPECT_NEAR(two.felt_stiffness_N_per_m, 400.0, 1.0);
+      EXPECT_EQ(two.max_drift_m, 0.0);
+    }
   }
 }
 

@@ -57,9 +57,13 @@ struct PassivityParams
   double passivity_min_damping = 4.0;     // N s/m: b_min, the dissipation asked while pushing
   double passivity_reservoir = 0.1;       // J: E_max, the most energy the observer banks
   // 1/s: how fast the two-port's physics side returns its position drift (two_port_passivity.h)
-  double passivity_drift_return = 2.0;
+  double passivity_drift_return = 10.0;
+  // J: what the two-port's physics side may let out ahead of the device's energy, so that a
+  // contact can start (two_port_passivity.h): its margin never goes below minus this
+  double passivity_contact_credit = 1e-4;
 };
-// passivity_damping_limit, passivity_min_damping, passivity_reservoir, passivity_drift_return:
+// passivity_damping_limit, passivity_min_damping, passivity_reservoir, passivity_drift_return,
+// passivity_contact_credit:
 // names, units, ranges, meanings.
 const ParameterTable<PassivityParams>& passivityParameterTable();
 // Empty on success, else one line naming the first bad value and its range.

@@ -20,6 +20,10 @@
 //    x + d): where the force there would let out more than the device put in, the position is
 //    pulled back along the tick's move (toward the last one used) by just enough; d, the drift,
 //    returns toward 0 at passivity_drift_return (1/s) only as far as the energy margin allows.
+//    The margin may go down to -passivity_contact_credit and no lower: in free motion the device
+//    renders no force and puts nothing in, so without that credit no contact could start (the
+//    wall would never push and the hand never pay); with it the first force reaches the hand,
+//    and the hand's push against it pays for the rest.
 //    The force is re-evaluated at the pulled-back position (answer()'s force_at), so the check
 //    uses the force the physics actually answers with.
 // Power signs: at the device, P = -F.v (F the force rendered on the hand, v the handle's
@@ -255,8 +259,8 @@ class DevicePortPassivity : public PortSide
   double damping_ = 0.0;
 };
 
-// The physics' side. Parameters: passivity_damping_limit (0: observer only, no drift) and
-// passivity_drift_return.
+// The physics' side. Parameters: passivity_damping_limit (0: observer only, no drift),
+// passivity_drift_return and passivity_contact_credit.
 class PhysicsPortPassivity : public PortSide
 {
  public:
@@ -326,10 +330,11 @@ class PhysicsPortPassivity : public PortSide
   Eigen::Vector3d drift_ = Eigen::Vector3d::Zero();
   MoveWork moves_;  // from the position used last tick
 
-  // J: what this tick may let out (a breach past is not paid by holding still).
+  // J: what this tick may let out: the margin and the contact's credit (a breach past is not
+  // paid by holding still).
   double allowance() const
   {
-    return std::max(0.0, margin());
+    return std::max(0.0, margin() + params_.passivity_contact_credit);
   }
   // J: what answering `force` at `position` would let out of the channel this tick (a
   // non-finite force: everything, so that the bisection moves back).

@@ -54,13 +54,15 @@ enum class DelayOperator
   kWorstCase,
   kHumanLike
 };
-// Where the passivity controller acts (haptics/passivity_controller.h, two_port_passivity.h):
+// Where the passivity controllers act (haptics/passivity_controller.h, two_port_passivity.h):
 // kDevicePort, at the device alone, against the energy the hand put in (the package's one-port
-// controller); kTwoPort, at both ports, each against the energy the other put into the link, told
-// in packets that ride the link's messages (delayed, jittered and lost with them). Either way the
-// other form's observers count too (controller off), so that every row reports every port.
-// kTwoPort acts on forwarded forces only (local_coupling false); with the local coupling it is
-// the device port's form.
+// controller); kTwoPort, that and the two-port's physics side, which holds the position the
+// physics uses to what the device's packets say it put into the link (delayed, jittered and lost
+// with the link's messages), less the contact's credit. The two-port's device side only counts
+// (its controller, tried in this sweep, kept both margins but left a press ringing:
+// docs/decisions.md). Either way every port's observer counts, so that every row reports every
+// port. kTwoPort acts on forwarded forces only (local_coupling false); with the local coupling it
+// is the device port's form.
 enum class PassivityForm
 {
   kDevicePort,
