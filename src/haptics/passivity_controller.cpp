@@ -19,7 +19,7 @@ const ParameterTable<PassivityParams>& passivityParameterTable()
   static const ParameterTable<P> table = {
       realRow<P>("passivity_damping_limit", "N s/m", closed(0.0, 1000.0),
                  "the most damping the passivity controller adds at the device to keep the loop behind it passive "
-                 "(0: controller off)",
+                 "(0: controller off, and the physics port's too)",
                  [](P& p) -> double& { return p.passivity_damping_limit; }),
       realRow<P>("passivity_min_damping", "N s/m", closed(0.0, 100.0),
                  "while the force is on, the loop behind the device must dissipate at least as this damper would",
@@ -28,14 +28,14 @@ const ParameterTable<PassivityParams>& passivityParameterTable()
                  "the most energy the passivity observer banks for the loop to give back later",
                  [](P& p) -> double& { return p.passivity_reservoir; }),
       realRow<P>("passivity_drift_return", "1/s", closed(0.0, 100.0),
-                 "how fast the physics side of the two-port passivity controller (the delay sweep's two-port form; "
-                 "not in the nodes yet) returns the hand's position it moved out of a contact, as far as the energy "
-                 "the device put in allows",
+                 "how fast the physics port's passivity controller (the physics node's, across the topic "
+                 "topologies; the delay sweep's two-port form) returns the hand's position it held out of a contact, "
+                 "as far as the energy the device put in allows",
                  [](P& p) -> double& { return p.passivity_drift_return; }),
       realRow<P>("passivity_contact_credit", "J", closed(0.0, 1.0),
-                 "what the physics side of the two-port passivity controller may let out before the device has put "
-                 "it in, so that a contact can start (in free motion the device renders no force and puts nothing "
-                 "in); that side's energy margin never goes below minus this",
+                 "what the physics port's passivity controller may let out before the device has put it in, so that "
+                 "a contact can start (in free motion the device renders no force and puts nothing in); that port's "
+                 "energy margin never goes below minus this",
                  [](P& p) -> double& { return p.passivity_contact_credit; }),
   };
   return table;

@@ -42,6 +42,30 @@ ChannelPort::ChannelPort(ros::NodeHandle nh, const std::string& send_topic, cons
       nh.subscribe(receive_topic, kSubscriberQueue, &ChannelPort::onPacket, this, ros::TransportHints().tcpNoDelay());
 }
 
+ChannelPort::ChannelPort(ros::NodeHandle nh, const std::string& send_topic, const std::string& receive_topic,
+                         const PassivityParams& params, double period)
+    : ChannelPort(nh, send_topic, receive_topic)
+{
+  controller_ = std::make_unique<PhysicsPortPassivity>(params, period);
+}
+
+void ChannelPort::sendPacket(const ros::Time& stamp)
+{
+  god_finger::PortEnergy message;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    message = portEnergyMessage(stamp, session_, side().observer());
+  }
+  publisher_.publish(message);
+}
+
+void ChannelPort::reconfigure(const PassivityParams& params, double period)
+{
+  auto controller = std::make_unique<PhysicsPortPassivity>(params, period);
+  std::lock_guard<std::mutex> lock(mutex_);
+  controller_ = std::move(controller);
+}
+
 void ChannelPort::observeWork(double work, const ros::Time& stamp)
 {
   god_finger::PortEnergy message;
@@ -65,24 +89,30 @@ void ChannelPort::onPacket(const god_finger::PortEnergy::ConstPtr& message)
     ROS_WARN_THROTTLE(1.0, "channel: rejected a malformed port energy packet (%ld so far)", rejected_);
     return;
   }
-  port_.receive(packet, session);
+  side().receive(packet, session);
 }
 
 void ChannelPort::addValues(diagnostic_msgs::DiagnosticStatus* status) const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  addValue(status, "channel_energy_in_J", jsonNumber(port_.observer().in()));
-  addValue(status, "channel_energy_out_J", jsonNumber(port_.observer().out()));
-  addValue(status, "channel_remote_energy_in_J", jsonNumber(port_.remote().energyIn()));
-  addValue(status, "channel_margin_J", jsonNumber(port_.margin()));
-  addValue(status, "channel_lowest_margin_J", jsonNumber(port_.lowestMargin()));
-  addValue(status, "channel_packets", std::to_string(port_.packets()));
+  const PortSide& counted = side();
+  addValue(status, "channel_energy_in_J", jsonNumber(counted.observer().in()));
+  addValue(status, "channel_energy_out_J", jsonNumber(counted.observer().out()));
+  addValue(status, "channel_remote_energy_in_J", jsonNumber(counted.remote().energyIn()));
+  addValue(status, "channel_margin_J", jsonNumber(counted.margin()));
+  addValue(status, "channel_lowest_margin_J", jsonNumber(counted.lowestMargin()));
+  addValue(status, "channel_packets", std::to_string(counted.packets()));
   addValue(status, "channel_rejected_packets", std::to_string(rejected_));
+  if (controller_)
+  {
+    addValue(status, "channel_drift_m", jsonNumber(controller_->drift().norm()));
+    addValue(status, "channel_controlled_steps", std::to_string(controller_->activeTicks()));
+  }
 }
 
-ObservedPort ChannelPort::port() const
+PortSide ChannelPort::port() const
 {
   std::lock_guard<std::mutex> lock(mutex_);
-  return port_;
+  return side();
 }
 }  // namespace god_finger

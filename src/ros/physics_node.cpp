@@ -8,6 +8,7 @@
 #include "god_finger/ros/conversions.h"
 #include "god_finger/runtime/fixed_rate_schedule.h"
 #include "god_finger/runtime/left_world_report.h"
+#include "god_finger/runtime/multirate_render.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/runtime/servo_command.h"
 #include "god_finger/scene/urdf_scene.h"
@@ -71,11 +72,15 @@ struct PhysicsNode::Impl
     Eigen::Vector3d user_torque = Eigen::Vector3d::Zero();     // N m, world (an oriented finger's)
     Eigen::Vector3d proxy_position = Eigen::Vector3d::Zero();  // m, world
     InterfaceState state;                                      // the whole, for proxy_state
-    // The channel's physics port (channel_port.h): the work of the force answered over the move
-    // of the target the step took, sent on NAME/physics_energy after each step.
+    // The channel's physics port and its controller (channel_port.h): it gives the world the
+    // target it may use (pulled back out of a contact the device has not paid for), counting the
+    // force the last step holds for it (heldForce), and sends its count after each step.
     std::unique_ptr<ChannelPort> channel;
-    MoveWork channel_moves;     // from the last step's target (m, world)
-    double channel_work = 0.0;  // J: this step's, for publishStep()
+    PassivityParams passivity;  // the device profile's (NAME/passivity_*), as its driver's
+    MultirateStep held;         // the last step's, for heldForce (lag 1)
+    bool has_held = false;
+    Eigen::Vector3d previous_target = Eigen::Vector3d::Zero();  // m, world: the last step's seen
+    bool has_previous_target = false;
   };
 
   ros::NodeHandle nh;
@@ -107,11 +112,16 @@ struct PhysicsNode::Impl
     {
       try
       {
-        const CouplingProfile coupling =
+        const DeviceProfile profile =
             readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, interfaces[i].name)), interfaces[i].name)
-                .profile.coupling;
+                .profile;
         std::lock_guard<std::mutex> lock(mutex);
-        interfaces[i].coupling = coupling;
+        interfaces[i].coupling = profile.coupling;
+        if (!interfaces[i].has_previous_target)  // the port has not answered yet
+        {
+          interfaces[i].passivity = profile.passivity;
+          interfaces[i].channel->reconfigure(profile.passivity, world->params().time_step);
+        }
         interfaces[i].profile_current = true;
       }
       catch (const std::exception& error)
@@ -213,13 +223,32 @@ struct PhysicsNode::Impl
           continue;
         }
       }
+      // The channel's physics port: the target the world may take, against the device's energy.
+      const Eigen::Vector3d seen_velocity =
+          interface.has_previous_target
+              ? Eigen::Vector3d((interface.target - interface.previous_target) / world->params().time_step)
+              : Eigen::Vector3d::Zero();
+      interface.previous_target = interface.target;
+      interface.has_previous_target = true;
+      Eigen::Vector3d used = interface.target;
+      Eigen::Vector3d used_velocity;
+      interface.channel->answer(
+          interface.target, seen_velocity,
+          [&interface](const Eigen::Vector3d& x, const Eigen::Vector3d& v) -> Eigen::Vector3d {
+            return interface.has_held ? heldForce(interface.coupling, interface.held, x, v) : Eigen::Vector3d::Zero();
+          },
+          &used, &used_velocity);
+      if (!used.allFinite())
+      {
+        used = interface.target;
+      }
       if (interface.oriented)
       {
-        world->setInterfaceTarget(interface.index, interface.target, interface.orientation);
+        world->setInterfaceTarget(interface.index, used, interface.orientation);
       }
       else
       {
-        world->setInterfaceTarget(interface.index, interface.target);
+        world->setInterfaceTarget(interface.index, used);
       }
     }
     const auto start = std::chrono::steady_clock::now();
@@ -238,8 +267,8 @@ struct PhysicsNode::Impl
       interface.user_torque = state.user_torque;
       interface.proxy_position = state.proxy_position;
       interface.state = state;
-      interface.channel_work = 0.0;
-      interface.channel_moves.work(state.interface_position, state.user_force, &interface.channel_work);
+      interface.held = multirateStepOf(state, 1);
+      interface.has_held = true;
     }
   }
 
@@ -262,7 +291,7 @@ struct PhysicsNode::Impl
       // Stamped as the feedback: the pose it answered.
       interface.proxy_state_publisher.publish(
           proxyStateMessage(interface.feedback_stamp.isZero() ? stamp : interface.feedback_stamp, interface.state));
-      interface.channel->observeWork(interface.channel_work, stamp);
+      interface.channel->sendPacket(stamp);
     }
   }
 
@@ -431,7 +460,10 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     {
       throw InputError("interface '" + names[i] + "': " + unstable);
     }
-    interface.channel.reset(new ChannelPort(nh, names[i] + "/physics_energy", names[i] + "/device_energy"));
+    interface.passivity =
+        readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, names[i])), names[i]).profile.passivity;
+    interface.channel.reset(new ChannelPort(nh, names[i] + "/physics_energy", names[i] + "/device_energy",
+                                            interface.passivity, params.time_step));
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
         names[i] + "/pose", kSubscriberQueue,
         [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),

@@ -1,5 +1,7 @@
 #include "god_finger/runtime/multirate_render.h"
 
+#include "god_finger/physics/world_state.h"
+
 #include <algorithm>
 #include <limits>
 
@@ -31,6 +33,33 @@ bool pressesIntoAPlane(const MultirateStep& step, const Eigen::Vector3d& target)
 Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target)
 {
   return pressesIntoAPlane(step, target) ? step.proxy_position : target;
+}
+
+MultirateStep multirateStepOf(const InterfaceState& state, long lag)
+{
+  MultirateStep step;
+  step.proxy_position = state.proxy_position;
+  step.user_force = state.user_force;
+  step.lag = lag;
+  step.step_target = state.interface_position;
+  step.contact_stiffness = state.contact_stiffness;
+  step.contact_normal = state.contact_normal;
+  step.plane_count = std::min(state.contact_count, MultirateStep::kMaxPlanes);
+  for (int c = 0; c < step.plane_count; ++c)
+  {
+    step.plane_normals[c] = state.contacts[c].normal;
+  }
+  return step;
+}
+
+Eigen::Vector3d heldForce(const CouplingProfile& coupling, const MultirateStep& step, const Eigen::Vector3d& target,
+                          const Eigen::Vector3d& velocity)
+{
+  if (!pressesIntoAPlane(step, target))
+  {
+    return Eigen::Vector3d::Zero();
+  }
+  return -couplingForce(coupling, target, velocity, step.proxy_position, Eigen::Vector3d::Zero()).on_proxy;
 }
 
 bool renderMultirate(const CouplingProfile& coupling, int recovery_periods, const MultirateDevice& device,

@@ -412,8 +412,7 @@ DelayTrialResult runDelayTrial(const DelayTrial& trial)
       // Either form's device renders through the one-port controller; the two-port's device side
       // counts what it rendered.
       const Eigen::Vector3d handle_v(port.v, 0, 0);
-      const double rendered =
-          port.controller.apply(Eigen::Vector3d(command, 0, 0), handle_v, coupling.max_force).x();
+      const double rendered = port.controller.apply(Eigen::Vector3d(command, 0, 0), handle_v, coupling.max_force).x();
       port.device_port.apply(Eigen::Vector3d(rendered, 0, 0), handle_v, coupling.max_force);
       const double rest =
           restPoint(trial.task, p, now) +

@@ -275,6 +275,23 @@ TEST(TwoPortPassivity, ANonFinitePositionOrVelocityIsPassedOnAndForgotten)
   EXPECT_TRUE(physics.drift().allFinite());
 }
 
+// As the nodes send them: the physics port takes the device port's packets by session (the
+// haptic node restarted: its new, smaller count replaces the old one, which would otherwise let
+// the physics let out what the new session never put in).
+TEST(TwoPortPassivity, ThePhysicsPortTakesANewSessionsFigureInsteadOfTheOldLarger)
+{
+  PhysicsPortPassivity physics(PassivityParams{}, kPeriod);
+  physics.receive({1.0, 0.08}, 100.0);
+  physics.receive({0.9, 0.06}, 100.0);  // late: changes nothing
+  EXPECT_EQ(physics.remote().energyIn(), 0.08);
+  physics.receive({0.1, 0.01}, 200.0);
+  EXPECT_EQ(physics.remote().energyIn(), 0.01);
+  EXPECT_EQ(physics.packets(), 3);
+  physics.reset();
+  EXPECT_EQ(physics.packets(), 0);
+  EXPECT_EQ(physics.remote().energyIn(), 0.0);
+}
+
 TEST(TwoPortPassivity, BadParametersOrPeriodsAreRefused)
 {
   PassivityParams params;

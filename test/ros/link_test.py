@@ -93,13 +93,17 @@ class Link(RosTestSupport, unittest.TestCase):
               (rospy.get_param("/finger/haptic/local_coupling", True), free_motion))
         if rospy.get_param("/finger/haptic/local_coupling", True):
             self.assertLess(free_motion, 0.05)
-        # What the free motion moved through the channel (docs/devices.md: the world's coupling
-        # pulling its proxy after the hand), for the record.
+        # What the free motion moved through the channel. The physics port counts the force the
+        # last step holds for the hand's position (runtime/multirate_render.h heldForce: what the
+        # local coupling renders): none in free space, so free motion moves nothing through it
+        # (until stop 49 it counted the world's coupling pulling its proxy after the hand: a tenth
+        # of a joule out that no one paid for).
         device_free = self.newer("/finger/haptic: haptic")[1]
         physics_free = self.newer("/physics: channel finger")[1]
         print("channel after the free motion: device port in %s J out %s J; physics port in %s J out %s J" %
               (device_free.get("channel_energy_in_J"), device_free.get("channel_energy_out_J"),
                physics_free.get("channel_energy_in_J"), physics_free.get("channel_energy_out_J")))
+        self.assertEqual(float(physics_free["channel_energy_out_J"]), 0.0)
         drag_marker(drag, Point(0.1, 0.0, 0.05), 0.1, 0.0, -0.02, 1.0)
         self.wait_for(lambda: self.force > 1.0, 20, lambda: "the hand to feel the table (%.2f N)" % self.force)
         # Each link delays by 15 ms (its mean over the last second).
@@ -173,6 +177,13 @@ class Link(RosTestSupport, unittest.TestCase):
             self.assertEqual(values["channel_rejected_packets"], "0")
         # The hand pressed 2 cm into the table through the channel: its work, into the channel.
         self.assertGreater(float(device["channel_energy_in_J"]), 0.01)
+        # The physics port's controller (on by default, the device profile's passivity_*): its
+        # margin never below the contact's credit (passivity_contact_credit, 1e-4 J), however late
+        # the device's energy comes; with the local coupling the hand's push is paid a round trip
+        # after the table's first force, so the controller acts (holds the world's target back).
+        self.assertGreaterEqual(float(physics["channel_lowest_margin_J"]), -1e-4 - 1e-9)
+        if rospy.get_param("/finger/haptic/local_coupling", True):
+            self.assertGreater(int(physics["channel_controlled_steps"]), 0)
         # Each side's figure of the other's E_in: what the other had counted by then, across the
         # link, never more.
         self.check_figure_received(physics_name, device_name)

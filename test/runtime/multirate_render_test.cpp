@@ -8,6 +8,8 @@
 // what it gives the hand within what the coupling stored plus what the hand put in.
 #include "god_finger/runtime/multirate_render.h"
 
+#include "god_finger/physics/world_state.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -255,6 +257,43 @@ TEST(MultirateRender, TheHoldGivesTheHandNoMoreThanTheCouplingStoredWithItsContr
   EXPECT_GE(lowest[1], -1e-12);
   EXPECT_LE(given[1], 0.5 * 16.0 / 800.0 + 1e-12);  // the hand put nothing in: it gets what was stored
   EXPECT_GT(given[0], 2.0 * given[1]);
+}
+// The force a step holds for a position (heldForce), as the physics node's port counts it and
+// the haptic node's local coupling settles to: the coupling's spring and damper to the step's
+// proxy where the position presses into one of its planes, nothing elsewhere (free space is
+// free); the step read whole from the world's interface state (multirateStepOf).
+TEST(HeldForce, TheSpringToTheProxyBehindAPlaneAndNothingInFreeSpace)
+{
+  InterfaceState state;
+  state.proxy_position = Eigen::Vector3d(0.1, 0.0, 0.0);
+  state.interface_position = Eigen::Vector3d(0.1, 0.0, -0.01);
+  state.user_force = Eigen::Vector3d(0.0, 0.0, 4.0);
+  state.contact_count = 1;
+  state.contacts[0].normal = Eigen::Vector3d::UnitZ();  // a table's top under the proxy
+  const MultirateStep step = multirateStepOf(state, 1);
+  EXPECT_EQ(step.proxy_position, state.proxy_position);
+  EXPECT_EQ(step.step_target, state.interface_position);
+  EXPECT_EQ(step.user_force, state.user_force);
+  EXPECT_EQ(step.lag, 1);
+  ASSERT_EQ(step.plane_count, 1);
+  EXPECT_EQ(step.plane_normals[0], Eigen::Vector3d::UnitZ());
+  const CouplingProfile coupling;  // 400 N/m, 4 N s/m, 20 N
+  // 5 mm into the table, still: 2 N up; pressing on at 0.1 m/s: 0.4 N more of damping.
+  EXPECT_TRUE(heldForce(coupling, step, Eigen::Vector3d(0.1, 0.0, -0.005), Eigen::Vector3d::Zero())
+                  .isApprox(Eigen::Vector3d(0.0, 0.0, 2.0), 1e-12));
+  EXPECT_TRUE(heldForce(coupling, step, Eigen::Vector3d(0.1, 0.0, -0.005), Eigen::Vector3d(0.0, 0.0, -0.1))
+                  .isApprox(Eigen::Vector3d(0.0, 0.0, 2.4), 1e-12));
+  // Above the table, or beside on its plane's free side: nothing, at any speed.
+  EXPECT_EQ(heldForce(coupling, step, Eigen::Vector3d(0.1, 0.0, 0.005), Eigen::Vector3d(0.0, 0.0, -0.1)),
+            Eigen::Vector3d::Zero());
+  EXPECT_EQ(heldForce(coupling, step, Eigen::Vector3d(0.3, 0.2, 0.001), Eigen::Vector3d(1.0, 0.0, 0.0)),
+            Eigen::Vector3d::Zero());
+  // 10 cm in: the coupling's 40 N saturated at max_force.
+  EXPECT_NEAR(heldForce(coupling, step, Eigen::Vector3d(0.1, 0.0, -0.1), Eigen::Vector3d::Zero()).norm(), 20.0, 1e-12);
+  // No contact in the step: free space everywhere.
+  state.contact_count = 0;
+  EXPECT_EQ(heldForce(coupling, multirateStepOf(state, 1), Eigen::Vector3d(0.1, 0.0, -0.005), Eigen::Vector3d::Zero()),
+            Eigen::Vector3d::Zero());
 }
 }  // namespace
 }  // namespace god_finger

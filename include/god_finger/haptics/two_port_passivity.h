@@ -136,6 +136,23 @@ class PortSide
   {
     return active_ticks_;
   }
+  // The other side's packet of `session` (s, any clock, compared for equality only), as the
+  // nodes send them: a packet of another session (the other side restarted) replaces the remote
+  // figure instead of being compared with the old session's larger one.
+  void receive(const EnergyPacket& packet, double session)
+  {
+    if (session != session_)
+    {
+      remote_.reset();
+      session_ = session;
+    }
+    remote_.receive(packet);
+    ++packets_;
+  }
+  long packets() const  // received through receive(packet, session) since the last reset
+  {
+    return packets_;
+  }
 
  protected:
   void noteMargin()
@@ -148,16 +165,20 @@ class PortSide
     remote_.reset();
     lowest_margin_ = 0.0;
     active_ticks_ = 0;
+    packets_ = 0;
+    session_ = std::numeric_limits<double>::quiet_NaN();
   }
   PortEnergyObserver observer_;
   RemoteEnergy remote_;
   double lowest_margin_ = 0.0;
   long active_ticks_ = 0;
+  long packets_ = 0;
+  double session_ = std::numeric_limits<double>::quiet_NaN();  // NaN: none yet (never equal)
 };
 
 // The work (J) of a force over a position's moves, one move per call: what the physics port
-// counts (the force it answered with over the move of the position it was given), here and in
-// the physics node (ros/channel_port.h).
+// counts (PhysicsPortPassivity: the force it answered with over the move of the position it
+// used), in the delay sweep and in the physics node (ros/channel_port.h).
 class MoveWork
 {
  public:
@@ -197,11 +218,9 @@ class MoveWork
   bool has_last_ = false;
 };
 
-// A port observed and not controlled: the nodes' form across processes (the haptic node's device
-// port, the physics node's physics port; their packets god_finger/PortEnergy on the link's
-// topics, their figures on /diagnostics). The sides count from `session` (the sender's start);
-// a packet of another session (the other side restarted) replaces the remote figure instead of
-// being compared with the old session's larger one.
+// A port observed and not controlled: the haptic node's device port across processes (its
+// packets god_finger/PortEnergy on the link's topics, its figures on /diagnostics). The sides
+// count from `session` (the sender's start; PortSide::receive).
 class ObservedPort : public PortSide
 {
  public:
@@ -211,31 +230,10 @@ class ObservedPort : public PortSide
     observer_.observe(work, 1.0);
     noteMargin();
   }
-  // The other side's packet of `session` (s, any clock, compared for equality only).
-  void receive(const EnergyPacket& packet, double session)
-  {
-    if (session != session_)
-    {
-      remote_.reset();
-      session_ = session;
-    }
-    remote_.receive(packet);
-    ++packets_;
-  }
-  long packets() const  // received since the last reset
-  {
-    return packets_;
-  }
   void reset()
   {
     resetSide();
-    packets_ = 0;
-    session_ = std::numeric_limits<double>::quiet_NaN();
   }
-
- private:
-  double session_ = std::numeric_limits<double>::quiet_NaN();  // NaN: none yet (never equal)
-  long packets_ = 0;
 };
 
 // The device's side. Parameters: passivity_damping_limit (0: observer only, the force passes).

@@ -51,6 +51,8 @@
 
 namespace god_finger
 {
+struct InterfaceState;  // physics/world_state.h
+
 struct MultirateState
 {
   Eigen::Vector3d anchor = Eigen::Vector3d::Zero();  // m
@@ -89,6 +91,19 @@ struct MultirateStep
 // The proxy a step predicts for the device at `target` (m, world): the step's proxy while
 // `target` is behind one of the step's planes, else `target`.
 Eigen::Vector3d predictedProxy(const MultirateStep& step, const Eigen::Vector3d& target);
+
+// The step the world left for one interface (its proxy, coupling reaction, target, a soft
+// contact's stiffness and normal, the first kMaxPlanes contacts' planes), `lag` ticks old.
+MultirateStep multirateStepOf(const InterfaceState& state, long lag);
+
+// The force (N, world, on the hand) a step holds for the device at `target` moving at `velocity`
+// (m, m/s, world): the coupling's spring and damper to the predicted proxy, still where the
+// device presses into one of the step's planes, the device itself (no force) elsewhere;
+// saturated at max_force. What the hold settles to between steps (renderMultirate moves its
+// anchor there by bounded steps), and the force the physics port of the channel counts in the
+// nodes (ros/channel_port.h). A soft contact's yield is left out (a stiffer spring: more force).
+Eigen::Vector3d heldForce(const CouplingProfile& coupling, const MultirateStep& step, const Eigen::Vector3d& target,
+                          const Eigen::Vector3d& velocity);
 
 // Decides this tick's force (N, world, on the hand) into state->force and updates the anchor and
 // exactness; returns true when the force is the step's reaction (not stale).
