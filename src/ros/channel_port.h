@@ -7,8 +7,9 @@
 //    channel's and is left out); it sends its packet on NAME/device_energy with every state. Its
 //    controller is the device driver's (haptics/passivity_controller.h).
 //  - The physics node's physics port (PhysicsPortPassivity: answer()) takes the position a pose
-//    gave, counts the force the step before holds for it (runtime/multirate_render.h heldForce:
-//    what the haptic node's local coupling renders, no force in free space) over its moves, and
+//    gave, counts the spring the step before holds for it (runtime/multirate_render.h heldForce
+//    at rest: what the haptic node's local coupling renders, no force in free space; the
+//    coupling's damper only dissipates, and is left out) over its moves, and
 //    with passivity_damping_limit > 0 (the device profile's, as the driver's) pulls the position
 //    the world is given back out of a contact by what the device's energy and the contact's
 //    credit do not cover; it sends its packet on NAME/physics_energy with every step.
