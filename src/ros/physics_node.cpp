@@ -76,9 +76,7 @@ struct PhysicsNode::Impl
     // target it may use (pulled back out of a contact the device has not paid for), counting the
     // force the last step holds for it (heldForce), and sends its count after each step.
     std::unique_ptr<ChannelPort> channel;
-    PassivityParams passivity;  // the device profile's (NAME/passivity_*), as its driver's
-    MultirateStep held;         // the last step's, for heldForce (lag 1)
-    bool has_held = false;
+    MultirateStep held;          // the last step's, for heldForce (none yet: no planes, no force)
     bool port_answered = false;  // the port has answered once
   };
 
@@ -118,7 +116,6 @@ struct PhysicsNode::Impl
         interfaces[i].coupling = profile.coupling;
         if (!interfaces[i].port_answered)  // the port has not answered yet
         {
-          interfaces[i].passivity = profile.passivity;
           interfaces[i].channel->reconfigure(profile.passivity, world->params().time_step);
         }
         interfaces[i].profile_current = true;
@@ -234,15 +231,8 @@ struct PhysicsNode::Impl
       interface.channel->answer(
           interface.target, Eigen::Vector3d::Zero(),
           [&interface](const Eigen::Vector3d& x, const Eigen::Vector3d& /*v*/) -> Eigen::Vector3d
-          {
-            return interface.has_held ? heldForce(interface.coupling, interface.held, x, Eigen::Vector3d::Zero())
-                                      : Eigen::Vector3d::Zero();
-          },
+          { return heldForce(interface.coupling, interface.held, x, Eigen::Vector3d::Zero()); },
           &used, &used_velocity);
-      if (!used.allFinite())
-      {
-        used = interface.target;
-      }
       if (interface.oriented)
       {
         world->setInterfaceTarget(interface.index, used, interface.orientation);
@@ -269,7 +259,6 @@ struct PhysicsNode::Impl
       interface.proxy_position = state.proxy_position;
       interface.state = state;
       interface.held = multirateStepOf(state, 1);
-      interface.has_held = true;
     }
   }
 
@@ -453,18 +442,17 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   {
     Impl::Interface& interface = impl.interfaces[i];
     interface.name = names[i];
-    interface.coupling =
-        readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, names[i])), names[i]).profile.coupling;
+    const DeviceProfile profile =
+        readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, names[i])), names[i]).profile;
+    interface.coupling = profile.coupling;
     const std::string unstable =
         couplingStabilityError(interface.coupling, params.coupling.proxy_mass, params.time_step);
     if (!unstable.empty())
     {
       throw InputError("interface '" + names[i] + "': " + unstable);
     }
-    interface.passivity =
-        readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, names[i])), names[i]).profile.passivity;
     interface.channel.reset(new ChannelPort(nh, names[i] + "/physics_energy", names[i] + "/device_energy",
-                                            interface.passivity, params.time_step));
+                                            profile.passivity, params.time_step));
     interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
         names[i] + "/pose", kSubscriberQueue,
         [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),
