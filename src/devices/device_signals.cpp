@@ -1,10 +1,13 @@
 #include "god_finger/devices/device_signals.h"
 
+#include "god_finger/devices/vendor_frames.h"
+
 namespace god_finger
 {
 std::array<double, 3> deviceForceToVendorAxes(const Eigen::Vector3d& force)
 {
-  return {-force.y(), force.z(), -force.x()};
+  const Eigen::Vector3d vendor = hdFrame().toVendor(force);
+  return {vendor.x(), vendor.y(), vendor.z()};
 }
 
 Eigen::Vector3d motorCommand(const Eigen::Vector3d& force, double max_force)

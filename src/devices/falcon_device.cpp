@@ -1,5 +1,7 @@
 #include "god_finger/devices/falcon_device.h"
 
+#include "god_finger/devices/vendor_frames.h"
+
 #include <algorithm>
 
 namespace god_finger
@@ -40,7 +42,7 @@ FalconDevice::FalconDevice(std::unique_ptr<FalconIo> io, const FalconParams& par
 
 Eigen::Vector3d FalconDevice::falconToDevice(const std::array<double, 3>& falcon, double center_z)
 {
-  return Eigen::Vector3d(-(falcon[2] - center_z), -falcon[0], falcon[1]);
+  return hdFrame().toDevice(Eigen::Vector3d(falcon[0], falcon[1], falcon[2] - center_z));
 }
 
 void FalconDevice::start()

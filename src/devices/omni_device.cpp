@@ -1,5 +1,7 @@
 #include "god_finger/devices/omni_device.h"
 
+#include "god_finger/devices/vendor_frames.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -39,15 +41,15 @@ OmniDevice::OmniDevice(std::unique_ptr<OmniIo> io, const OmniParams& params, std
 
 Eigen::Vector3d OmniDevice::omniToDevice(const std::array<double, 3>& omni_mm, const std::array<double, 3>& center_mm)
 {
-  return Eigen::Vector3d(-(omni_mm[2] - center_mm[2]), -(omni_mm[0] - center_mm[0]), omni_mm[1] - center_mm[1]) * 1e-3;
+  const Eigen::Vector3d relative(omni_mm[0] - center_mm[0], omni_mm[1] - center_mm[1], omni_mm[2] - center_mm[2]);
+  return hdFrame().toDevice(relative) * 1e-3;
 }
 
 Eigen::Quaterniond OmniDevice::stylusToDevice(const std::array<double, 9>& rotation)
 {
   // Omni axes to device axes (device = (-z, -x, y)), and the finger's axes in the stylus frame
   // (columns: x = -z_s, y = x_s, z = -y_s).
-  Eigen::Matrix3d omni_to_device;
-  omni_to_device << 0, 0, -1, -1, 0, 0, 0, 1, 0;
+  const Eigen::Matrix3d& omni_to_device = hdFrame().to_device;
   Eigen::Matrix3d finger_in_stylus;
   finger_in_stylus << 0, 1, 0, 0, 0, -1, -1, 0, 0;
   const Eigen::Map<const Eigen::Matrix3d> stylus(rotation.data());  // column-major, as the HD API's

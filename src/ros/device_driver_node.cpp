@@ -3,6 +3,7 @@
 
 #include "bag_track.h"
 #include "diagnostics.h"
+#include "driver_link_ros.h"
 #include "god_finger/DeviceState.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/haptics/force_guard.h"
@@ -95,6 +96,8 @@ struct DeviceDriverNode::Impl
   std::atomic<long> ticks{0};
   std::atomic<long> overruns{0};
   std::atomic<long> dropped{0};        // samples the publisher thread had no room for
+  bool lost_device = false;            // the device loop's: its last reading untracked (a stale driver)
+  std::atomic<long> lost_device_events{0};  // untracked and tracked again, each counted
   std::mutex trips_mutex;              // guards round_trips_us (callback and publisher threads)
   std::vector<double> round_trips_us;  // since the last diagnostics
   std::uint32_t published = 0;         // publisher thread only
@@ -278,6 +281,15 @@ struct DeviceDriverNode::Impl
         return;
       }
       last_velocity = reading.velocity;
+      if (reading.tracked == lost_device)
+      {
+        // A device that lost its source (a stale ROS driver: devices/driver_bridge.h) is a fault:
+        // its force stops at once, and comes back through the soft start when it is tracked again.
+        std::lock_guard<std::mutex> lock(mutex);
+        lost_device = !reading.tracked;
+        lost_device ? guard->stop() : guard->resume(now());
+        ++lost_device_events;
+      }
       DriverSample* sample = samples.reserve();
       if (sample)
       {
@@ -387,6 +399,10 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   context.script_start = sharedScriptStart(pnh, impl.now());
   context.read_track = readBagTrack;
   context.default_track_topic = nh.resolveName("device/state");
+  const std::string node_name = impl.node_name;
+  context.connect_driver = [nh, node_name](const DriverBridgeParams& params, std::shared_ptr<DriverLink> link)
+  { return connectDriverLink(nh, node_name, params, std::move(link)); };
+  context.now = steadySeconds;
   impl.device = makeDevice(backend, context);
   impl.device->start();
   if (backend.hand_target)

@@ -9,6 +9,7 @@
 #include "interface_parameters.h"
 #include "node_parameters.h"
 #include "parameters.h"
+#include "driver_link_ros.h"
 #include "pose_feed_ros.h"
 #include "scene_parameter.h"
 
@@ -54,6 +55,9 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
     context.default_track_topic = interface_nh.resolveName("device/state");
     context.connect_poses = [interface_nh](const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed)
     { return connectPoseFeed(interface_nh, params, std::move(feed)); };
+    const std::string node_name = pnh.getNamespace();
+    context.connect_driver = [interface_nh, node_name](const DriverBridgeParams& params, std::shared_ptr<DriverLink> link)
+    { return connectDriverLink(interface_nh, node_name, params, std::move(link)); };
     context.now = steadySeconds;
     std::unique_ptr<HapticDevice> device = makeDevice(backend, context);
     // A hand (devices/hand_device.h) is one interface per finger, NAME/FINGER, with the

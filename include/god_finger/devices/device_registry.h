@@ -9,6 +9,7 @@
 
 #include "god_finger/support/parameter_source.h"
 #include "god_finger/haptics/waypoint_path.h"
+#include "god_finger/devices/driver_bridge.h"
 #include "god_finger/devices/haptic_device.h"
 #include "god_finger/devices/pose_source.h"
 
@@ -36,7 +37,12 @@ struct DeviceContext
   // namespace) or from the TF frames params.frames, stamps converted to now's clock; returns
   // what keeps the subscription alive. Unset where there is no ROS (then pose_source is refused).
   std::function<std::shared_ptr<void>(const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed)> connect_poses;
-  std::function<double()> now;  // s: the pose source's clock (steadySeconds() in the servo node)
+  // The ROS driver bridges (omni_msgs, ros_geomagic, crtk, ros_falcon; devices/driver_bridge.h):
+  // connects `link` to the driver's topics (src/ros/driver_link_ros.h); returns what keeps the
+  // connection alive. Unset where there is no ROS (then those backends are refused).
+  std::function<std::shared_ptr<void>(const DriverBridgeParams& params, std::shared_ptr<DriverLink> link)>
+      connect_driver;
+  std::function<double()> now;  // s: the pose source's and the driver links' clock (steadySeconds())
 };
 
 struct DeviceBackend
@@ -53,7 +59,8 @@ struct DeviceBackend
 };
 
 const std::vector<DeviceBackend>& deviceBackends();
-// "fake, interactive, replay, falcon, omni, fake_hand, pose_source".
+// "fake, interactive, replay, falcon, omni, fake_hand, pose_source, omni_msgs, ros_geomagic, crtk,
+// ros_falcon".
 std::string deviceBackendNames();
 // InputError naming `parameter` and the known names when there is no such backend.
 const DeviceBackend& findDeviceBackend(const std::string& name, const std::string& parameter);

@@ -11,8 +11,8 @@
 
 namespace god_finger
 {
-// The Falcon's and the Omni's own frames share their axes (x to the user's right, y up, z
-// towards the user): a force in the device frame (REP-103 as the user sees it) in theirs.
+// The Falcon's and the Omni's own frames share their axes (devices/vendor_frames.h, hdFrame():
+// x to the user's right, y up, z towards the user): a force in the device frame in theirs.
 std::array<double, 3> deviceForceToVendorAxes(const Eigen::Vector3d& force);
 
 // `force` scaled down to `max_force` if longer (direction kept); non-finite forces become zero.

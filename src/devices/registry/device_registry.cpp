@@ -155,6 +155,38 @@ std::unique_ptr<HapticDevice> makePoseSource(const DeviceContext& context)
   return makeHandDevice(makePoseSource(params, feed, context.now));
 }
 
+std::unique_ptr<HapticDevice> makeDriverBridge(const std::string& backend, const DeviceContext& context)
+{
+  const DriverBridgeParams params = readDriverBridgeParams(backend, context.params, context.max_force);
+  if (!context.connect_driver || !context.now)
+  {
+    throw InputError("backend '" + backend + "' talks to a ROS driver, which this program cannot (run it from a node)");
+  }
+  auto link = std::make_shared<DriverLink>();
+  link->connection = context.connect_driver(params, link);
+  return std::make_unique<DriverBridgeDevice>(params, std::move(link), context.now);
+}
+
+std::unique_ptr<HapticDevice> makeOmniMsgs(const DeviceContext& context)
+{
+  return makeDriverBridge("omni_msgs", context);
+}
+
+std::unique_ptr<HapticDevice> makeRosGeomagic(const DeviceContext& context)
+{
+  return makeDriverBridge("ros_geomagic", context);
+}
+
+std::unique_ptr<HapticDevice> makeCrtk(const DeviceContext& context)
+{
+  return makeDriverBridge("crtk", context);
+}
+
+std::unique_ptr<HapticDevice> makeRosFalcon(const DeviceContext& context)
+{
+  return makeDriverBridge("ros_falcon", context);
+}
+
 std::unique_ptr<HapticDevice> makeFalcon(const DeviceContext& context)
 {
   const FalconParams params = readFalconParams(context.params, context.max_force);
@@ -196,6 +228,12 @@ const std::vector<DeviceBackend>& deviceBackends()
       // Hands (devices/hand_device.h): one interface per finger, input only (no force rendered).
       {"fake_hand", "fake", true, false, makeFakeHand, false},
       {"pose_source", "fake", false, false, makePoseSource, false},
+      // The ROS drivers labs run (devices/driver_bridge.h): the device is the driver, over its topics.
+      // The device's profile is its hardware's; the driver's map is config/drivers/NAME.yaml.
+      {"omni_msgs", "omni", false, false, makeOmniMsgs},
+      {"ros_geomagic", "omni", false, false, makeRosGeomagic},
+      {"crtk", "omni", false, false, makeCrtk},
+      {"ros_falcon", "falcon", false, false, makeRosFalcon},
   };
   return backends;
 }
