@@ -104,3 +104,50 @@ DeviceReading FalconDevice::update(double time, const Eigen::Vector3d& force)
   return reading;
 }
 }  // namespace god_finger
+
+namespace god_finger
+{
+std::string nifalconErrorText(int code)
+{
+  struct NamedError
+  {
+    int code;
+    const char* name;
+    const char* meaning;
+  };
+  // libnifalcon's anonymous enums (FalconDevice.h, FalconComm.h, FalconFirmware.h, FalconGrip.h,
+  // FalconKinematic.h), their documented meanings.
+  static const NamedError errors[] = {
+      {1000, "FALCON_DEVICE_NO_COMM_SET", "no communications policy set"},
+      {1001, "FALCON_DEVICE_NO_FIRMWARE_SET", "no firmware policy set"},
+      {1002, "FALCON_DEVICE_NO_KINEMATIC_SET", "no kinematics policy set"},
+      {1003, "FALCON_DEVICE_NO_GRIP_SET", "no grip policy set"},
+      {1004, "FALCON_DEVICE_NO_FIRMWARE_LOADED", "no firmware loaded"},
+      {1005, "FALCON_DEVICE_FIRMWARE_NOT_VALID", "firmware file missing"},
+      {1006, "FALCON_DEVICE_FIRMWARE_CHECKSUM_MISMATCH", "checksum mismatch while loading the firmware"},
+      {2000, "FALCON_COMM_DEVICE_ERROR", "USB driver error"},
+      {2001, "FALCON_COMM_NOT_INITIALIZED", "USB driver not initialized"},
+      {2002, "FALCON_COMM_DEVICE_NOT_FOUND_ERROR", "no Falcon found on the system"},
+      {2003, "FALCON_COMM_DEVICE_NOT_VALID_ERROR", "device not opened"},
+      {2004, "FALCON_COMM_DEVICE_INDEX_OUT_OF_RANGE_ERROR", "device index out of range of the Falcons found"},
+      {2005, "FALCON_COMM_FIRMWARE_NOT_FOUND_ERROR", "firmware file not found"},
+      {2006, "FALCON_COMM_WRITE_ERROR", "USB write failed (time-out or underflow)"},
+      {2007, "FALCON_COMM_READ_ERROR", "USB read failed (time-out or underflow)"},
+      {3000, "FALCON_FIRMWARE_NO_COMM_SET", "no communications policy set"},
+      {3001, "FALCON_FIRMWARE_NO_FIRMWARE_SET", "no firmware policy set"},
+      {3002, "FALCON_FIRMWARE_NO_FIRMWARE_LOADED", "no firmware loaded"},
+      {3003, "FALCON_FIRMWARE_FILE_NOT_VALID", "firmware file missing"},
+      {3004, "FALCON_FIRMWARE_CHECKSUM_MISMATCH", "checksum mismatch while loading the firmware"},
+      {4000, "FALCON_GRIP_INDEX_OUT_OF_RANGE", "button index out of range for the grip"},
+      {5000, "FALCON_KINEMATIC_OUT_OF_RANGE", "position out of the workspace"},
+  };
+  for (const NamedError& error : errors)
+  {
+    if (error.code == code)
+    {
+      return "libnifalcon error " + std::to_string(code) + ": " + error.meaning + " (" + error.name + ")";
+    }
+  }
+  return "libnifalcon error " + std::to_string(code);
+}
+}  // namespace god_finger

@@ -60,6 +60,12 @@ const ParameterTable<FalconParams>& falconParameterTable();
 // rating. InputError on a bad one.
 FalconParams readFalconParams(const ParameterSource& source, double max_force);
 
+// libnifalcon's error code (FalconDevice::getErrorCode(), 0: none) with its name and meaning, as
+// libnifalcon's headers give them (the same in 1.0.1, 1.1 and git master), e.g. "libnifalcon error
+// 2004: device index out of range of the Falcons found (FALCON_COMM_DEVICE_INDEX_OUT_OF_RANGE_ERROR)";
+// a code it does not define: "libnifalcon error N".
+std::string nifalconErrorText(int code);
+
 class FalconDevice : public HapticDevice
 {
  public:

@@ -16,7 +16,6 @@ namespace god_finger
 {
 namespace
 {
-#if defined(GOD_FINGER_HAVE_NIFALCON) || defined(GOD_FINGER_HAVE_OPENHAPTICS)
 // Clock and wait for the hardware backends' start-up (homing, calibration), which waits for the user.
 double steadySeconds()
 {
@@ -27,7 +26,6 @@ void waitForUser()
 {
   std::this_thread::sleep_for(std::chrono::milliseconds(10));
 }
-#endif
 
 // Test seams of the fake backend, in its script's time (s), for rostests: readings non-finite
 // (position NaN) with every button pressed during [from, until), as a faulty device's are
@@ -203,14 +201,23 @@ std::unique_ptr<HapticDevice> makeFalcon(const DeviceContext& context)
 std::unique_ptr<HapticDevice> makeOmni(const DeviceContext& context)
 {
   const OmniParams params = readOmniParams(context.params, context.max_force);
-#ifdef GOD_FINGER_HAVE_OPENHAPTICS
-  return std::make_unique<OmniDevice>(makeOpenHapticsIo(), params, steadySeconds, waitForUser);
-#else
-  (void)params;
-  throw DeviceError(
-      "backend 'omni' needs the OpenHaptics HD API, which this build did not find: install 3D Systems' "
-      "OpenHaptics (and the Touch / Phantom device driver), then rebuild god_finger (docs/devices.md)");
-#endif
+  const VendorModule module = openHapticsModule();
+  if (module.file_name.empty())
+  {
+    throw DeviceError(
+        "backend 'omni' needs the OpenHaptics HD API, which this build did not find: install 3D Systems' "
+        "OpenHaptics (and the Touch / Phantom device driver), then rebuild god_finger (docs/devices.md)");
+  }
+  std::unique_ptr<OmniIo> io;
+  try
+  {
+    io = loadOpenHapticsIo(module.file_name);  // on the library path (the workspace's setup.bash)
+  }
+  catch (const DeviceError&)
+  {
+    io = loadOpenHapticsIo(module.build_path);  // where this build made it; its error says what to install
+  }
+  return std::make_unique<OmniDevice>(std::move(io), params, steadySeconds, waitForUser);
 }
 }  // namespace
 

@@ -71,7 +71,7 @@ class NifalconIo : public FalconIo
   }
   std::string lastError() override
   {
-    return "libnifalcon error code " + std::to_string(falcon_.getErrorCode());
+    return nifalconErrorText(falcon_.getErrorCode());
   }
 
  private:

@@ -1,7 +1,12 @@
 // OmniIo on the OpenHaptics HD API. The only file that includes an HD header; built when
-// CMake finds OpenHaptics. Every device access runs inside the HD scheduler's servo thread
-// (hdScheduleSynchronous), as the HD API requires for hdBeginFrame/hdEndFrame.
-#include "god_finger/devices/vendor_io.h"
+// CMake finds OpenHaptics, as a module of its own (god_finger_omni_io) that the device registry
+// loads only when backend omni is chosen (devices/vendor_io.h): libHD needs the Touch driver's
+// libPHANToMIO.so.4, which no other backend may need. Compiled with `linux` defined, as the
+// vendor's Makefiles do: HD/hdExport.h defines HDAPI, HDAPIENTRY and HDCALLBACK only under it.
+// Every device access runs inside the HD scheduler's servo thread (hdScheduleSynchronous), as
+// the HD API requires for hdBeginFrame/hdEndFrame and the vendor's examples do for calibration,
+// force enabling and queries once the scheduler runs.
+#include "god_finger/devices/omni_device.h"
 
 #include <HD/hd.h>
 
@@ -57,6 +62,20 @@ HDCallbackCode HDCALLBACK servoFrame(void* data)
   return HD_CALLBACK_DONE;
 }
 
+// Runs `work` in the servo thread while this one waits.
+template <class Work>
+HDCallbackCode HDCALLBACK runWork(void* data)
+{
+  (*static_cast<Work*>(data))();
+  return HD_CALLBACK_DONE;
+}
+
+template <class Work>
+void inServoThread(Work work)
+{
+  hdScheduleSynchronous(runWork<Work>, &work, HD_DEFAULT_SCHEDULER_PRIORITY);
+}
+
 struct CalibrationCheck
 {
   HHD device;
@@ -110,21 +129,33 @@ class OpenHapticsIo : public OmniIo
     return check.status == HD_CALIBRATION_NEEDS_UPDATE ? OmniCalibration::needs_update
                                                        : OmniCalibration::needs_manual_input;
   }
+  // In a scheduled callback, as the vendor's Calibration example does: the style the device
+  // supports (auto, then inkwell, then encoder reset), then hdUpdateCalibration with it.
   bool updateCalibration() override
   {
-    hdMakeCurrentDevice(device_);
-    HDint styles = 0;
-    hdGetIntegerv(HD_CALIBRATION_STYLE, &styles);
-    const HDenum style = (styles & HD_CALIBRATION_AUTO)      ? HD_CALIBRATION_AUTO
-                         : (styles & HD_CALIBRATION_INKWELL) ? HD_CALIBRATION_INKWELL
-                                                             : HD_CALIBRATION_ENCODER_RESET;
-    hdUpdateCalibration(style);
+    const HHD device = device_;
+    inServoThread(
+        [device]()
+        {
+          hdMakeCurrentDevice(device);
+          HDint styles = 0;
+          hdGetIntegerv(HD_CALIBRATION_STYLE, &styles);
+          const HDenum style = (styles & HD_CALIBRATION_AUTO)      ? HD_CALIBRATION_AUTO
+                               : (styles & HD_CALIBRATION_INKWELL) ? HD_CALIBRATION_INKWELL
+                                                                   : HD_CALIBRATION_ENCODER_RESET;
+          hdUpdateCalibration(style);
+        });
     return !failed(hdGetError());
   }
   bool startServo() override
   {
-    hdMakeCurrentDevice(device_);
-    hdEnable(HD_FORCE_OUTPUT);
+    const HHD device = device_;
+    inServoThread(
+        [device]()
+        {
+          hdMakeCurrentDevice(device);
+          hdEnable(HD_FORCE_OUTPUT);
+        });
     return !failed(hdGetError());
   }
   bool exchange(const std::array<double, 3>& force, OmniFrame* frame) override
@@ -149,9 +180,14 @@ class OpenHapticsIo : public OmniIo
   }
   double nominalMaxForce() override
   {
-    hdMakeCurrentDevice(device_);
+    const HHD device = device_;
     HDdouble force = 0.0;
-    hdGetDoublev(HD_NOMINAL_MAX_FORCE, &force);
+    inServoThread(
+        [device, &force]()
+        {
+          hdMakeCurrentDevice(device);
+          hdGetDoublev(HD_NOMINAL_MAX_FORCE, &force);
+        });
     return force;
   }
   std::string lastError() override
@@ -177,8 +213,10 @@ class OpenHapticsIo : public OmniIo
 };
 }  // namespace
 
-std::unique_ptr<OmniIo> makeOpenHapticsIo()
-{
-  return std::make_unique<OpenHapticsIo>();
-}
 }  // namespace god_finger
+
+// The module's one entry point (devices/vendor_io.h, loadOpenHapticsIo): a new OmniIo the caller owns.
+extern "C" __attribute__((visibility("default"))) god_finger::OmniIo* god_finger_make_openhaptics_io()
+{
+  return new god_finger::OpenHapticsIo();
+}
