@@ -29,7 +29,7 @@ DriverBridgeParams readDriverBridgeParams(const std::string& backend, const Para
   if (params.driver_ns.empty())
   {
     throw InputError("parameter '" + source.fullName("driver_ns") + "' is required by backend '" + backend +
-                     "' (the driver's namespace; config/devices/" + backend + ".yaml sets its default)");
+                     "' (the driver's namespace; config/drivers/" + backend + ".yaml sets its default)");
   }
   params.arm = readString(source, "arm", "");
   params.frame = &findVendorFrame(readString(source, "driver_frame", ""), source.fullName("driver_frame"));

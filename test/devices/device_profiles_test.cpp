@@ -1,6 +1,7 @@
 // The shipped device profiles (config/devices/*.yaml) set only rows of the one profile table
 // (haptics/device_profile.h; the fake device's own rows for fake.yaml), each in its range, and the
 // README shows the fake device's table as generated.
+#include "god_finger/devices/driver_bridge.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/devices/falcon_device.h"
 #include "god_finger/devices/omni_device.h"
@@ -112,6 +113,7 @@ TEST(DeviceProfiles, TheDocsShowTheBackendTablesAsGenerated)
       {"fake device's", markdownTable(fakeDeviceParameterTable())},
       {"Falcon's", markdownTable(falconParameterTable())},
       {"Omni's", markdownTable(omniParameterTable())},
+      {"ROS driver bridges'", markdownTable(driverBridgeParameterTable())},
   };
   for (const auto& [what, table] : tables)
   {

@@ -43,6 +43,8 @@ def why_skipped(launch, args):
     device = args.get("device", "fake")
     if device in ("falcon", "omni"):
         return "needs a %s attached" % device
+    if device in ("omni_msgs", "ros_geomagic", "crtk", "ros_falcon"):
+        return "needs the %s driver running: ros_driver_%s.test runs it against a fake of that driver" % (device, device)
     if device == "replay":
         return "replays a bag the user recorded"
     if device == "pose_source":
