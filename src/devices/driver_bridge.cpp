@@ -152,11 +152,10 @@ Eigen::Vector3d DriverBridgeDevice::forceToDriver(const Eigen::Vector3d& device_
   return params_.frame->toVendor(motorCommand(device_force, params_.max_force));
 }
 
-DeviceReading DriverBridgeDevice::update(double /*time*/, const Eigen::Vector3d& force)
+DeviceReading DriverBridgeDevice::read()
 {
   const DriverState& state = link_->read();
   const bool fresh = state.stamp >= 0.0 && now_() - state.stamp <= params_.stale_timeout;
-  link_->sendForce(fresh ? forceToDriver(force) : Eigen::Vector3d::Zero());
   if (fresh && state.stamp != last_stamp_)
   {
     last_position_ = toDevice(state.position);
@@ -168,6 +167,29 @@ DeviceReading DriverBridgeDevice::update(double /*time*/, const Eigen::Vector3d&
   reading.position = last_position_;
   reading.velocity = fresh ? last_velocity_ : Eigen::Vector3d::Zero();
   reading.buttons = link_->buttons();
+  return reading;
+}
+
+void DriverBridgeDevice::send(const DeviceReading& reading, const Eigen::Vector3d& force)
+{
+  link_->sendForce(reading.tracked ? forceToDriver(force) : Eigen::Vector3d::Zero());
+}
+
+DeviceReading DriverBridgeDevice::update(double /*time*/, const Eigen::Vector3d& force)
+{
+  // The force answers the last reading; a driver stale now gets zero whatever it answered.
+  const DeviceReading reading = read();
+  send(reading, force);
+  return reading;
+}
+
+DeviceReading DriverBridgeDevice::exchangeFrame(double /*time*/, FrameResponder& responder)
+{
+  const DeviceReading reading = read();
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();
+  responder.respond(reading, &force, &torque);
+  send(reading, force);
   return reading;
 }
 }  // namespace god_finger

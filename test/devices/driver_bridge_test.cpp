@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace god_finger
 {
 namespace
@@ -100,6 +102,34 @@ TEST(DriverBridge, MapsTheDriversStateAndSendsTheForceInItsFrame)
   bridge.link->writeState(Eigen::Vector3d(20.0, 45.0, 40.0), bridge.clock);
   reading = bridge.device->update(0.007, Eigen::Vector3d::Zero());
   EXPECT_NEAR(reading.velocity.z(), 1.0, 1e-9);
+}
+
+// Answers a reading with a force 100 N/m above the ball's top at z = 0 (device frame).
+class SpringResponder : public FrameResponder
+{
+ public:
+  void respond(const DeviceReading& reading, Eigen::Vector3d* force, Eigen::Vector3d* torque) override
+  {
+    asked = reading;
+    *force = Eigen::Vector3d(0.0, 0.0, std::max(0.0, -100.0 * reading.position.z()));
+    torque->setZero();
+  }
+  DeviceReading asked;
+};
+
+TEST(DriverBridge, TheServoLoopAnswersEachStateInTheTickThatReadIt)
+{
+  Bridge bridge(geomagicParams());
+  EXPECT_EQ(bridge.device->exchangeForm(), DeviceExchange::kFrame);
+  SpringResponder responder;
+  bridge.link->writeState(Eigen::Vector3d(0.0, 0.0, 0.0), bridge.clock);  // 10 mm down
+  const DeviceReading reading = bridge.device->exchangeFrame(0.0, responder);
+  EXPECT_NEAR(responder.asked.position.z(), -0.01, 1e-15);
+  EXPECT_EQ(reading.position, responder.asked.position);
+  EXPECT_NEAR(bridge.sent().y(), 1.0, 1e-12);  // its own force, in the same exchange
+  bridge.clock += 1.0;  // stale: whatever the responder says, zero
+  bridge.device->exchangeFrame(1.0, responder);
+  EXPECT_TRUE(bridge.sent().isZero());
 }
 
 TEST(DriverBridge, ASilentOrStaleDriverIsAFaultWithZeroForce)

@@ -124,12 +124,24 @@ class DriverBridgeDevice : public HapticDevice
   }
   // Nothing to open: the driver runs apart. A driver not yet heard from reads untracked.
   void start() override {}
+  // Sends `force` (decided for the last reading), then reads the newest state.
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
+  // The servo loop answers each state in the tick that read it (devices/haptic_device.h,
+  // kFrame): read the newest state, ask `responder`, send its force at once. The topic
+  // topologies' driver node uses update().
+  DeviceExchange exchangeForm() const override
+  {
+    return DeviceExchange::kFrame;
+  }
+  DeviceReading exchangeFrame(double time, FrameResponder& responder) override;
 
   Eigen::Vector3d toDevice(const Eigen::Vector3d& driver_position) const;
   Eigen::Vector3d forceToDriver(const Eigen::Vector3d& device_force) const;
 
  private:
+  DeviceReading read();  // the newest state (untracked when stale)
+  void send(const DeviceReading& reading, const Eigen::Vector3d& force);  // zero when untracked
+
   DriverBridgeParams params_;
   std::shared_ptr<DriverLink> link_;
   std::function<double()> now_;
