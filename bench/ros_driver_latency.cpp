@@ -3,6 +3,12 @@
 // 1 kHz), god_finger runs apart (`roslaunch god_finger demo.launch device:=DRIVER`).
 //
 // usage: ros_driver_latency DRIVER SECONDS   (omni_msgs | ros_geomagic | crtk | ros_falcon)
+//        ros_driver_latency --echo            (instead of god_finger: the floor, below)
+//
+// The floor: `--echo` answers each ros_falcon state at once in its subscriber callback (a
+// spring, no loop, no physics) with roscpp's default threads, as god_finger's side does; run
+// against `ros_driver_latency ros_falcon SECONDS` it measures what roscpp's round trip between
+// two processes costs on this machine, with the same messages.
 //
 // The stylus comes down onto the demo ball's top (2 s), rests 1 mm deep (2 s), then steps 1 mm
 // deeper or back every 50 ms (0.4 N to 0.8 N: under the Touch profile's continuous 0.88 N, which
@@ -68,12 +74,28 @@ double percentile(std::vector<double> values, double q)
 int main(int argc, char** argv)
 {
   ros::init(argc, argv, "ros_driver_latency", ros::init_options::AnonymousName);
+  const std::string name = argc > 1 ? argv[1] : "";
+  if (name == "--echo")
+  {
+    ros::NodeHandle nh;
+    ros::Publisher answer = nh.advertise<god_finger::driver_msgs::FalconForces>("/falconForce", 1);
+    ros::Subscriber states = nh.subscribe<god_finger::driver_msgs::FalconPos>(
+        "/falconPos", 1,
+        [&answer](const god_finger::driver_msgs::FalconPosConstPtr& m)
+        {
+          god_finger::driver_msgs::FalconForces force;  // 800 N/m below the demo ball's top, HD y up
+          force.Y = std::max(0.0, 800.0 * (-0.017 - m->Y));
+          answer.publish(force);
+        },
+        ros::VoidConstPtr(), ros::TransportHints().tcpNoDelay());
+    ros::spin();
+    return 0;
+  }
   if (argc < 3)
   {
-    std::fprintf(stderr, "usage: ros_driver_latency DRIVER SECONDS\n");
+    std::fprintf(stderr, "usage: ros_driver_latency DRIVER SECONDS | ros_driver_latency --echo\n");
     return 2;
   }
-  const std::string name = argv[1];
   const double run = std::stod(argv[2]);
   Driver driver{name, "", &findVendorFrame("hd", "frame"), 1.0, Eigen::Vector3d::Zero()};
   if (name == "omni_msgs")

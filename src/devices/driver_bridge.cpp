@@ -15,6 +15,10 @@ const ParameterTable<DriverBridgeParams>& driverBridgeParameterTable()
       realRow<P>("stale_timeout", "s", openClosed(0.0, 10.0),
                  "a ROS driver whose newest state is older is a device fault (the finger lets go, zero force)",
                  [](P& p) -> double& { return p.stale_timeout; }),
+      realRow<P>("state_wait", "s", closed(0.0, 0.01),
+                 "the servo loop's tick waits this long for a ROS driver's next state, to answer it at once "
+                 "(0: never waits; several drivers in one loop: their sum under the period)",
+                 [](P& p) -> double& { return p.state_wait; }),
   };
   return table;
 }
@@ -42,12 +46,14 @@ DriverBridgeParams readDriverBridgeParams(const std::string& backend, const Para
 DriverLink::DriverLink() : force_(Eigen::Vector3d::Zero())
 {
   sem_init(&force_ready_, 0, 0);
+  sem_init(&state_ready_, 0, 0);
 }
 
 DriverLink::~DriverLink()
 {
   connection.reset();  // its sender waits on the semaphore
   sem_destroy(&force_ready_);
+  sem_destroy(&state_ready_);
 }
 
 void DriverLink::writeState(const Eigen::Vector3d& position, double stamp)
@@ -62,6 +68,7 @@ void DriverLink::writeState(const Eigen::Vector3d& position, double stamp)
   state.stamp = stamp;
   state_.publish();
   states_.fetch_add(1, std::memory_order_relaxed);
+  sem_post(&state_ready_);
 }
 
 void DriverLink::setButtons(std::uint32_t buttons)
@@ -85,6 +92,27 @@ void DriverLink::setButton(int index, bool pressed)
 const DriverState& DriverLink::read()
 {
   state_.take();
+  return state_.front();
+}
+
+const DriverState& DriverLink::awaitState(double timeout)
+{
+  while (sem_trywait(&state_ready_) == 0)
+  {
+  }
+  if (!state_.take() && timeout > 0.0)
+  {
+    timespec wake;
+    clock_gettime(CLOCK_MONOTONIC, &wake);
+    const long nanoseconds = static_cast<long>(timeout * 1e9);
+    wake.tv_nsec += nanoseconds;
+    wake.tv_sec += wake.tv_nsec / 1000000000L;
+    wake.tv_nsec %= 1000000000L;
+    while (sem_clockwait(&state_ready_, CLOCK_MONOTONIC, &wake) != 0 && errno == EINTR)
+    {
+    }
+    state_.take();
+  }
   return state_.front();
 }
 
@@ -152,9 +180,9 @@ Eigen::Vector3d DriverBridgeDevice::forceToDriver(const Eigen::Vector3d& device_
   return params_.frame->toVendor(motorCommand(device_force, params_.max_force));
 }
 
-DeviceReading DriverBridgeDevice::read()
+DeviceReading DriverBridgeDevice::read(double wait)
 {
-  const DriverState& state = link_->read();
+  const DriverState& state = wait > 0.0 ? link_->awaitState(wait) : link_->read();
   const bool fresh = state.stamp >= 0.0 && now_() - state.stamp <= params_.stale_timeout;
   if (fresh && state.stamp != last_stamp_)
   {
@@ -178,14 +206,14 @@ void DriverBridgeDevice::send(const DeviceReading& reading, const Eigen::Vector3
 DeviceReading DriverBridgeDevice::update(double /*time*/, const Eigen::Vector3d& force)
 {
   // The force answers the last reading; a driver stale now gets zero whatever it answered.
-  const DeviceReading reading = read();
+  const DeviceReading reading = read(0.0);
   send(reading, force);
   return reading;
 }
 
 DeviceReading DriverBridgeDevice::exchangeFrame(double /*time*/, FrameResponder& responder)
 {
-  const DeviceReading reading = read();
+  const DeviceReading reading = read(params_.state_wait);
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   responder.respond(reading, &force, &torque);

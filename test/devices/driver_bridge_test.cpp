@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <thread>
 
 namespace god_finger
 {
@@ -130,6 +131,20 @@ TEST(DriverBridge, TheServoLoopAnswersEachStateInTheTickThatReadIt)
   bridge.clock += 1.0;  // stale: whatever the responder says, zero
   bridge.device->exchangeFrame(1.0, responder);
   EXPECT_TRUE(bridge.sent().isZero());
+}
+
+TEST(DriverBridge, TheTickWaitsForTheDriversNextStateOnly)
+{
+  DriverLink link;
+  link.writeState(Eigen::Vector3d(1.0, 0.0, 0.0), 1.0);
+  // A state not yet read: no wait (a 10 s timeout would fail the test's own time limit).
+  EXPECT_EQ(link.awaitState(10.0).position.x(), 1.0);
+  // None newer: the wait ends with the driver's next state, written by its own thread.
+  std::thread driver([&link]() { link.writeState(Eigen::Vector3d(2.0, 0.0, 0.0), 2.0); });
+  EXPECT_EQ(link.awaitState(10.0).position.x(), 2.0);
+  driver.join();
+  // None newer and no driver: the last one, after the bounded wait.
+  EXPECT_EQ(link.awaitState(1e-4).position.x(), 2.0);
 }
 
 TEST(DriverBridge, ASilentOrStaleDriverIsAFaultWithZeroForce)

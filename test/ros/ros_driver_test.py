@@ -16,6 +16,9 @@ own code (docs/devices.md), not read from god_finger.
    - the stylus comes down onto the ball and stays where the reference handle was: the force the
      driver gets points up in its own frame and is within 5 % of the reference's (times the ratio
      of the two profiles' coupling stiffnesses: 1 for the Touch's, 2 for the Falcon's);
+   - /diagnostics reports the driver's rate (within 10 % of the fake's) and its state's age;
+   - the driver falls silent: /diagnostics names its topic (ERROR), the force it last got is zero;
+     it comes back: the force comes back;
    - Ctrl-C of the launch (SIGINT): the last force the driver got is zero.
 Every wait is on a condition with a deadline; the fake's timer paces the stylus."""
 import math
@@ -34,6 +37,7 @@ import genpy.dynamic
 import rospkg
 import rospy
 import rostest
+from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 from geometry_msgs.msg import PoseStamped, WrenchStamped
 from god_finger.msg import DeviceState
 from ros_test_support import RosTestSupport, drag_marker
@@ -119,6 +123,7 @@ class FakeDriver:
         self.spec = DRIVERS[driver]
         self.classes = classes
         self.position = (0.0, 0.0, 0.0)
+        self.silent = False  # True: publishes nothing (a driver that stalled)
         self.forces = []  # (driver-frame force, its connection header)
         self.lock = threading.Lock()
         ns = self.spec["ns"].rstrip("/")
@@ -172,7 +177,8 @@ class FakeDriver:
         period = 1.0 / self.spec["rate"]
         tick = time.time()
         while self.running and not rospy.is_shutdown():
-            self.state.publish(self.message())
+            if not self.silent:
+                self.state.publish(self.message())
             tick += period
             # Paces the driver's rate (a real driver's servo clock), not a synchronisation.
             time.sleep(max(0.0, tick - time.time()))
@@ -208,6 +214,17 @@ class RosDriverBridge(RosTestSupport, unittest.TestCase):
         self.pose = None
         rospy.Subscriber("/finger/device/state", DeviceState, self.states.append, queue_size=100)
         rospy.Subscriber("/finger/pose", PoseStamped, lambda m: setattr(self, "pose", m), queue_size=1)
+        self.driver_status = None  # the bridge's newest status on /diagnostics
+        rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=20)
+
+    def on_diagnostics(self, array):
+        for status in array.status:
+            if (": %s driver " % self.driver) in status.name:
+                self.driver_status = status
+
+    def driver_value(self, key):
+        status = self.driver_status
+        return None if status is None else next((v.value for v in status.values if v.key == key), None)
 
     def launch(self, device):
         command = ["roslaunch", "god_finger", "demo.launch", "device:=%s" % device, "topology:=%s" % self.topology]
@@ -327,6 +344,25 @@ class RosDriverBridge(RosTestSupport, unittest.TestCase):
         if self.driver != "crtk":
             self.assertEqual(self.texts[header["type"]], header["message_definition"], header["type"])
             self.assertEqual(REAL_MD5[header["type"]], header["md5sum"])
+
+        # Measured: the driver's rate and its state's age.
+        self.wait_for(lambda: self.driver_status is not None and self.driver_status.level == DiagnosticStatus.OK, 10,
+                      "the driver's status on /diagnostics")
+        rate = float(self.driver_value("driver_rate_hz"))
+        print("%s: /diagnostics %s: %s, driver_rate_hz %.0f, state_age_ms %s" % (
+            self.driver, self.driver_status.name, self.driver_status.message, rate, self.driver_value("state_age_ms")))
+        self.assertLess(abs(rate - DRIVERS[self.driver]["rate"]), 0.1 * DRIVERS[self.driver]["rate"])
+        self.assertLess(float(self.driver_value("state_age_ms")), 500.0)
+
+        # The driver falls silent: a device fault that names its topic, and a zero force.
+        fake.silent = True
+        self.wait_for(lambda: self.driver_status.level == DiagnosticStatus.ERROR, 10, "the stale driver's ERROR")
+        topic = {"omni_msgs": "/phantom/phantom/state", "ros_geomagic": "/Geomagic/pose", "crtk": "/arm/measured_cp",
+                 "ros_falcon": "/falconPos"}[self.driver]
+        self.assertIn("no state on " + topic, self.driver_status.message)
+        self.wait_for(lambda: fake.last_force()[0] == (0.0, 0.0, 0.0), 5, "a zero force for a stale driver")
+        fake.silent = False
+        self.wait_for(lambda: (fake.last_force()[0] or (0, 0, 0))[up] > 0.3, 10, "the force back with the driver")
 
         # Ctrl-C: the last force the driver got is zero.
         self.stop(process)

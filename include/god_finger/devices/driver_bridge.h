@@ -49,10 +49,11 @@ struct DriverBridgeParams
   double position_unit = 1.0;                    // m per driver position unit (`driver_position_unit`)
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // driver frame and units (`driver_center`)
   double stale_timeout = 0.1;                    // s: an older driver state is a device fault
+  double state_wait = 0.0005;                    // s: how long the servo loop's tick waits for the driver's next state
   double max_force = 3.3;                        // N: the profile's limit (what is sent never exceeds it)
 };
 
-// stale_timeout (the numeric row; the others are names, a frame and a vector).
+// stale_timeout, state_wait (the numeric rows; the others are names, a frame and a vector).
 const ParameterTable<DriverBridgeParams>& driverBridgeParameterTable();
 
 // `backend`'s parameters: driver_ns (required: the profile sets it), arm, driver_frame,
@@ -80,8 +81,10 @@ class DriverLink
   void writeState(const Eigen::Vector3d& position, double stamp);
   void setButtons(std::uint32_t buttons);
   void setButton(int index, bool pressed);
-  // Device side.
+  // Device side: the newest state; awaitState() first waits up to `timeout` s for one newer
+  // than the last read (a semaphore's bounded wait: real-time safe, as a vendor's servo frame).
   const DriverState& read();
+  const DriverState& awaitState(double timeout);
   std::uint32_t buttons() const
   {
     return buttons_.load(std::memory_order_relaxed);
@@ -106,6 +109,7 @@ class DriverLink
   LatestValue<DriverState> state_;
   LatestValue<Eigen::Vector3d> force_;
   sem_t force_ready_;
+  sem_t state_ready_;  // posted per state written
   std::atomic<std::uint32_t> buttons_{0};
   std::atomic<long> states_{0};
   std::atomic<long> rejected_{0};
@@ -127,8 +131,10 @@ class DriverBridgeDevice : public HapticDevice
   // Sends `force` (decided for the last reading), then reads the newest state.
   DeviceReading update(double time, const Eigen::Vector3d& force) override;
   // The servo loop answers each state in the tick that read it (devices/haptic_device.h,
-  // kFrame): read the newest state, ask `responder`, send its force at once. The topic
-  // topologies' driver node uses update().
+  // kFrame): wait up to state_wait for a state newer than the last (the driver's clock, not the
+  // loop's, then paces the answer: a state arriving in that window is answered at once, one after
+  // it at the next tick), ask `responder`, send its force at once. The topic topologies' driver
+  // node uses update(), which never waits.
   DeviceExchange exchangeForm() const override
   {
     return DeviceExchange::kFrame;
@@ -139,7 +145,7 @@ class DriverBridgeDevice : public HapticDevice
   Eigen::Vector3d forceToDriver(const Eigen::Vector3d& device_force) const;
 
  private:
-  DeviceReading read();  // the newest state (untracked when stale)
+  DeviceReading read(double wait);  // the newest state, after waiting up to `wait` s for one (untracked when stale)
   void send(const DeviceReading& reading, const Eigen::Vector3d& force);  // zero when untracked
 
   DriverBridgeParams params_;
