@@ -12,11 +12,10 @@
 //
 // The stylus comes down onto the demo ball's top (2 s), rests 1 mm deep (2 s), then steps 1 mm
 // deeper or back every 50 ms (0.4 N to 0.8 N: under the Touch profile's continuous 0.88 N, which
-// the force guard's budget would otherwise hold it to). A step's latency: from the publication of the first state at the
-// new depth to the arrival of the first force that differs from the force before the step by
-// more than 0.1 N (the 400 N/m spring's 1 mm is 0.4 N; the coupling's damper adds to it at the
-// step). Prints one JSON line: the driver, the steps, their latency's p50, p99 and max (us), the
-// state rate it published at, and the forces it got.
+// the force guard's budget would otherwise hold it to). A step's latency: from the publication of the first state at
+// the new depth to the arrival of the first force that differs from the force before the step by more than 0.1 N (the
+// 400 N/m spring's 1 mm is 0.4 N; the coupling's damper adds to it at the step). Prints one JSON line: the driver, the
+// steps, their latency's p50, p99 and max (us), the state rate it published at, and the forces it got.
 #include "driver_messages.h"
 #include "god_finger/devices/vendor_frames.h"
 
@@ -154,7 +153,8 @@ int main(int argc, char** argv)
   {
     state = nh.advertise<geometry_msgs::PoseStamped>(driver.ns + "/measured_cp", 1);
     force = nh.subscribe<geometry_msgs::WrenchStamped>(
-        driver.ns + "/servo_cf", 100, [&record](const geometry_msgs::WrenchStampedConstPtr& m)
+        driver.ns + "/servo_cf", 100,
+        [&record](const geometry_msgs::WrenchStampedConstPtr& m)
         { record(Eigen::Vector3d(m->wrench.force.x, m->wrench.force.y, m->wrench.force.z)); },
         ros::VoidConstPtr(), hints);
   }
@@ -163,7 +163,8 @@ int main(int argc, char** argv)
     state = nh.advertise<god_finger::driver_msgs::FalconPos>("/falconPos", 1);
     force = nh.subscribe<god_finger::driver_msgs::FalconForces>(
         "/falconForce", 100,
-        [&record](const god_finger::driver_msgs::FalconForcesConstPtr& m) { record(Eigen::Vector3d(m->X, m->Y, m->Z)); },
+        [&record](const god_finger::driver_msgs::FalconForcesConstPtr& m)
+        { record(Eigen::Vector3d(m->X, m->Y, m->Z)); },
         ros::VoidConstPtr(), hints);
   }
   spinner.start();
@@ -184,7 +185,8 @@ int main(int argc, char** argv)
   };
   auto publish = [&](double depth, std::uint32_t seq)
   {
-    const Eigen::Vector3d p = driver.frame->toVendor(Eigen::Vector3d(0.0, 0.0, top - depth)) / driver.unit + driver.center;
+    const Eigen::Vector3d p =
+        driver.frame->toVendor(Eigen::Vector3d(0.0, 0.0, top - depth)) / driver.unit + driver.center;
     if (name == "omni_msgs")
     {
       god_finger::driver_msgs::OmniState m;

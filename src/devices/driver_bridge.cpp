@@ -23,8 +23,7 @@ const ParameterTable<DriverBridgeParams>& driverBridgeParameterTable()
   return table;
 }
 
-DriverBridgeParams readDriverBridgeParams(const std::string& backend, const ParameterSource& source,
-                                          double max_force)
+DriverBridgeParams readDriverBridgeParams(const std::string& backend, const ParameterSource& source, double max_force)
 {
   DriverBridgeParams params;
   params.backend = backend;

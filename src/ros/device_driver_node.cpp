@@ -95,13 +95,13 @@ struct DeviceDriverNode::Impl
   sem_t samples_ready;                                 // posted by the loop per sample (lock-free)
   std::atomic<long> ticks{0};
   std::atomic<long> overruns{0};
-  std::atomic<long> dropped{0};        // samples the publisher thread had no room for
-  bool lost_device = false;            // the device loop's: its last reading untracked (a stale driver)
+  std::atomic<long> dropped{0};             // samples the publisher thread had no room for
+  bool lost_device = false;                 // the device loop's: its last reading untracked (a stale driver)
   std::atomic<long> lost_device_events{0};  // untracked and tracked again, each counted
-  std::mutex trips_mutex;              // guards round_trips_us (callback and publisher threads)
-  std::vector<double> round_trips_us;  // since the last diagnostics
-  std::uint32_t published = 0;         // publisher thread only
-  std::FILE* timing = nullptr;         // ~timing_csv: every round trip (us), for the bench (callback thread)
+  std::mutex trips_mutex;                   // guards round_trips_us (callback and publisher threads)
+  std::vector<double> round_trips_us;       // since the last diagnostics
+  std::uint32_t published = 0;              // publisher thread only
+  std::FILE* timing = nullptr;              // ~timing_csv: every round trip (us), for the bench (callback thread)
 
   double now() const
   {

@@ -10,6 +10,7 @@
 #include <diagnostic_msgs/DiagnosticArray.h>
 #include <geometry_msgs/PoseStamped.h>
 #include <geometry_msgs/WrenchStamped.h>
+#include <ros/callback_queue.h>
 #include <ros/ros.h>
 #include <sensor_msgs/Joy.h>
 
@@ -23,8 +24,8 @@ const std::vector<DriverWire>& driverWires()
 {
   static const std::vector<DriverWire> wires = {
       {"omni_msgs", "the Geomagic Touch / Phantom Omni driver omni_common (fsuarez6/phantom_omni)", "state",
-       "omni_msgs/OmniState", "button (omni_msgs/OmniButtonEvent): grey = button 0, white = button 1",
-       "force_feedback", "omni_msgs/OmniFeedback"},
+       "omni_msgs/OmniState", "button (omni_msgs/OmniButtonEvent): grey = button 0, white = button 1", "force_feedback",
+       "omni_msgs/OmniFeedback"},
       {"ros_geomagic", "WPI's ros_geomagic, geomagic_control (WPI-AIM/ros_geomagic)", "pose",
        "geometry_msgs/PoseStamped", "button (geomagic_control/DeviceButtonEvent): grey = button 0, white = button 1",
        "force_feedback", "geomagic_control/DeviceFeedback"},
@@ -91,7 +92,12 @@ class DriverConnection
     state_topic_ = driverTopic(params.driver_ns, wire_.state_topic);
     force_topic_ = driverTopic(params.driver_ns, wire_.force_topic);
     status_name_ = node_name + ": " + params.backend + " driver " + state_topic_;
+    // The driver's states on a queue and thread of their own: never behind the node's other
+    // callbacks (markers, services), one hop from roscpp's poll thread to the link.
+    states_nh_ = nh_;
+    states_nh_.setCallbackQueue(&states_queue_);
     subscribe();
+    states_spinner_.start();
     diagnostics_ = nh_.advertise<diagnostic_msgs::DiagnosticArray>("/diagnostics", 10);
     timer_ = nh_.createWallTimer(ros::WallDuration(1.0), [this](const ros::WallTimerEvent&) { report(); });
     zero_hook_ = registerZeroOnStop([this]() { stop(); });
@@ -106,6 +112,7 @@ class DriverConnection
     {
       subscriber.shutdown();  // waits for a callback under way: none runs on what goes below
     }
+    states_spinner_.stop();
     unregisterZeroOnStop(zero_hook_);
     running_ = false;
     sender_.join();
@@ -121,15 +128,16 @@ class DriverConnection
     const std::string& backend = params_.backend;
     if (backend == "omni_msgs")
     {
-      subscribers_.push_back(subscribeTo<driver_msgs::OmniState>(nh_, 
-          state_topic_, 1, [this](const driver_msgs::OmniStateConstPtr& m) { onState(m->pose.position); }, hints));
-      subscribers_.push_back(subscribeTo<driver_msgs::OmniButtonEvent>(nh_, 
-          driverTopic(params_.driver_ns, "button"), 100,
-          [this](const driver_msgs::OmniButtonEventConstPtr& m)
-          {
-            link_->setButton(0, m->grey_button != 0);
-            link_->setButton(1, m->white_button != 0);
-          }));
+      subscribers_.push_back(subscribeTo<driver_msgs::OmniState>(
+          states_nh_, state_topic_, 1, [this](const driver_msgs::OmniStateConstPtr& m) { onState(m->pose.position); },
+          hints));
+      subscribers_.push_back(
+          subscribeTo<driver_msgs::OmniButtonEvent>(states_nh_, driverTopic(params_.driver_ns, "button"), 100,
+                                                    [this](const driver_msgs::OmniButtonEventConstPtr& m)
+                                                    {
+                                                      link_->setButton(0, m->grey_button != 0);
+                                                      link_->setButton(1, m->white_button != 0);
+                                                    }));
       publisher_ = nh_.advertise<driver_msgs::OmniFeedback>(force_topic_, 1);
       publish_ = [this](const Eigen::Vector3d& force)
       {
@@ -141,15 +149,16 @@ class DriverConnection
     }
     else if (backend == "ros_geomagic")
     {
-      subscribers_.push_back(subscribeTo<geometry_msgs::PoseStamped>(nh_, 
-          state_topic_, 1, [this](const geometry_msgs::PoseStampedConstPtr& m) { onState(m->pose.position); }, hints));
-      subscribers_.push_back(subscribeTo<driver_msgs::DeviceButtonEvent>(nh_, 
-          driverTopic(params_.driver_ns, "button"), 100,
-          [this](const driver_msgs::DeviceButtonEventConstPtr& m)
-          {
-            link_->setButton(0, m->grey_button != 0);
-            link_->setButton(1, m->white_button != 0);
-          }));
+      subscribers_.push_back(subscribeTo<geometry_msgs::PoseStamped>(
+          states_nh_, state_topic_, 1,
+          [this](const geometry_msgs::PoseStampedConstPtr& m) { onState(m->pose.position); }, hints));
+      subscribers_.push_back(
+          subscribeTo<driver_msgs::DeviceButtonEvent>(states_nh_, driverTopic(params_.driver_ns, "button"), 100,
+                                                      [this](const driver_msgs::DeviceButtonEventConstPtr& m)
+                                                      {
+                                                        link_->setButton(0, m->grey_button != 0);
+                                                        link_->setButton(1, m->white_button != 0);
+                                                      }));
       publisher_ = nh_.advertise<driver_msgs::DeviceFeedback>(force_topic_, 1);
       publish_ = [this](const Eigen::Vector3d& force)
       {
@@ -162,23 +171,25 @@ class DriverConnection
     }
     else if (backend == "crtk")
     {
-      subscribers_.push_back(subscribeTo<geometry_msgs::PoseStamped>(nh_, 
-          state_topic_, 1, [this](const geometry_msgs::PoseStampedConstPtr& m) { onState(m->pose.position); }, hints));
+      subscribers_.push_back(subscribeTo<geometry_msgs::PoseStamped>(
+          states_nh_, state_topic_, 1,
+          [this](const geometry_msgs::PoseStampedConstPtr& m) { onState(m->pose.position); }, hints));
       const std::pair<const char*, int> buttons[] = {{"front", 0}, {"button1", 0}, {"back", 1}, {"button2", 1}};
       for (const auto& [topic, bit] : buttons)
       {
         const int index = bit;
-        subscribers_.push_back(subscribeTo<sensor_msgs::Joy>(nh_, 
-            driverTopic(params_.driver_ns, topic), 10, [this, index](const sensor_msgs::JoyConstPtr& m)
-            { link_->setButton(index, !m->buttons.empty() && m->buttons[0] == 1); }));
+        subscribers_.push_back(
+            subscribeTo<sensor_msgs::Joy>(states_nh_, driverTopic(params_.driver_ns, topic), 10,
+                                          [this, index](const sensor_msgs::JoyConstPtr& m)
+                                          { link_->setButton(index, !m->buttons.empty() && m->buttons[0] == 1); }));
       }
-      subscribers_.push_back(subscribeTo<driver_msgs::OperatingState>(nh_, 
-          driverTopic(params_.driver_ns, "operating_state"), 10,
-          [this](const driver_msgs::OperatingStateConstPtr& m)
-          {
-            std::lock_guard<std::mutex> lock(mutex_);
-            operating_state_ = m->state;
-          }));
+      subscribers_.push_back(
+          subscribeTo<driver_msgs::OperatingState>(states_nh_, driverTopic(params_.driver_ns, "operating_state"), 10,
+                                                   [this](const driver_msgs::OperatingStateConstPtr& m)
+                                                   {
+                                                     std::lock_guard<std::mutex> lock(mutex_);
+                                                     operating_state_ = m->state;
+                                                   }));
       publisher_ = nh_.advertise<geometry_msgs::WrenchStamped>(force_topic_, 1);
       publish_ = [this](const Eigen::Vector3d& force)
       {
@@ -190,8 +201,8 @@ class DriverConnection
     }
     else
     {
-      subscribers_.push_back(subscribeTo<driver_msgs::FalconPos>(nh_, 
-          state_topic_, 1,
+      subscribers_.push_back(subscribeTo<driver_msgs::FalconPos>(
+          states_nh_, state_topic_, 1,
           [this](const driver_msgs::FalconPosConstPtr& m)
           {
             geometry_msgs::Point position;
@@ -276,11 +287,11 @@ class DriverConnection
     if (stale)
     {
       status.level = diagnostic_msgs::DiagnosticStatus::ERROR;
-      status.message = arrival > 0.0 ? "driver stale: no state on " + state_topic_ + " for " + jsonNumber(age) +
-                                           " s (the finger lets go, the force is zero)"
-                                     : "waiting for the driver: no state on " + state_topic_ + " (" +
-                                           wire_.state_type + ") yet; is it running in namespace " +
-                                           params_.driver_ns + "? (rostopic list)";
+      status.message = arrival > 0.0
+                           ? "driver stale: no state on " + state_topic_ + " for " + jsonNumber(age) +
+                                 " s (the finger lets go, the force is zero)"
+                           : "waiting for the driver: no state on " + state_topic_ + " (" + wire_.state_type +
+                                 ") yet; is it running in namespace " + params_.driver_ns + "? (rostopic list)";
       ROS_WARN_THROTTLE(5.0, "%s: %s", params_.backend.c_str(), status.message.c_str());
     }
     else if (takers == 0)
@@ -316,6 +327,9 @@ class DriverConnection
   }
 
   ros::NodeHandle nh_;
+  ros::CallbackQueue states_queue_;
+  ros::NodeHandle states_nh_;                            // nh_ on states_queue_
+  ros::AsyncSpinner states_spinner_{1, &states_queue_};  // declared after the queue it spins
   DriverBridgeParams params_;
   const DriverWire& wire_;
   DriverLink* link_;  // owns this connection (DriverLink::connection): outlives it

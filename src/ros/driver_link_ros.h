@@ -28,7 +28,7 @@ struct DriverWire
   const char* driver;       // the driver as users know it, and its repository
   const char* state_topic;  // relative to driver_ns (an absolute one stays as it is)
   const char* state_type;
-  const char* buttons;      // the button topics and how they map to god_finger's buttons
+  const char* buttons;  // the button topics and how they map to god_finger's buttons
   const char* force_topic;
   const char* force_type;
 };

@@ -1,6 +1,7 @@
 #include "servo_setup.h"
 
 #include "bag_track.h"
+#include "driver_link_ros.h"
 #include "god_finger/devices/device_registry.h"
 #include "god_finger/runtime/servo_clock.h"
 #include "god_finger/scene/urdf_scene.h"
@@ -9,7 +10,6 @@
 #include "interface_parameters.h"
 #include "node_parameters.h"
 #include "parameters.h"
-#include "driver_link_ros.h"
 #include "pose_feed_ros.h"
 #include "scene_parameter.h"
 
@@ -56,7 +56,8 @@ ServoSetup makeServoSetup(const ros::NodeHandle& nh, const ros::NodeHandle& pnh,
     context.connect_poses = [interface_nh](const PoseSourceParams& params, std::shared_ptr<PoseFeed> feed)
     { return connectPoseFeed(interface_nh, params, std::move(feed)); };
     const std::string node_name = pnh.getNamespace();
-    context.connect_driver = [interface_nh, node_name](const DriverBridgeParams& params, std::shared_ptr<DriverLink> link)
+    context.connect_driver =
+        [interface_nh, node_name](const DriverBridgeParams& params, std::shared_ptr<DriverLink> link)
     { return connectDriverLink(interface_nh, node_name, params, std::move(link)); };
     context.now = steadySeconds;
     std::unique_ptr<HapticDevice> device = makeDevice(backend, context);

@@ -9,8 +9,8 @@
 //    sent from the hook's thread while the crashing one waits for them (at most 0.2 s), then the
 //    signal takes its default course (the core dump, the exit code).
 // Installed once per process, at the first registration (after ros::init: its handler is the
-// one handed on); the zeros are written (waitForPublishes) before it. Threads: register/unregister from any thread; the zeros are sent from the
-// hook's own thread, never from the signal handler (only async-signal-safe calls there).
+// one handed on); the zeros are written (waitForPublishes) before it. Threads: register/unregister from any thread; the
+// zeros are sent from the hook's own thread, never from the signal handler (only async-signal-safe calls there).
 #pragma once
 
 #include <functional>

@@ -13,8 +13,9 @@ constexpr double kMaxForce = 8.0;  // N: a device profile's limit (the Falcon ca
 
 TEST(DeviceRegistry, ListsEveryBackendOnce)
 {
-  EXPECT_EQ(deviceBackendNames(),
-            "fake, interactive, replay, falcon, omni, fake_hand, pose_source, omni_msgs, ros_geomagic, crtk, ros_falcon");
+  EXPECT_EQ(
+      deviceBackendNames(),
+      "fake, interactive, replay, falcon, omni, fake_hand, pose_source, omni_msgs, ros_geomagic, crtk, ros_falcon");
   EXPECT_TRUE(findDeviceBackend("fake", "backend").simulated);
   EXPECT_FALSE(findDeviceBackend("falcon", "backend").simulated);
   EXPECT_TRUE(findDeviceBackend("interactive", "backend").hand_target);

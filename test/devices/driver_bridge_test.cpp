@@ -1,8 +1,8 @@
 // The ROS driver bridges without ROS (devices/driver_bridge.h): the named frames (one table), a
 // driver's state in its units and axes to the device frame, the force back, a stale or silent
 // driver as a fault (untracked, zero force), the last force zero, bad parameters named.
-#include "god_finger/devices/device_registry.h"
 #include "god_finger/devices/driver_bridge.h"
+#include "god_finger/devices/device_registry.h"
 #include "god_finger/devices/vendor_frames.h"
 #include "god_finger/support/input_error.h"
 
@@ -128,7 +128,7 @@ TEST(DriverBridge, TheServoLoopAnswersEachStateInTheTickThatReadIt)
   EXPECT_NEAR(responder.asked.position.z(), -0.01, 1e-15);
   EXPECT_EQ(reading.position, responder.asked.position);
   EXPECT_NEAR(bridge.sent().y(), 1.0, 1e-12);  // its own force, in the same exchange
-  bridge.clock += 1.0;  // stale: whatever the responder says, zero
+  bridge.clock += 1.0;                         // stale: whatever the responder says, zero
   bridge.device->exchangeFrame(1.0, responder);
   EXPECT_TRUE(bridge.sent().isZero());
 }

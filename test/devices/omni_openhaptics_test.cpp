@@ -107,7 +107,8 @@ TEST(OmniOpenHaptics, WithTheTouchDriverItCalibratesInTheServoThreadAndRenders)
   OmniParams params;
   params.max_force = 3.3;
   double clock = 0.0;
-  OmniDevice device(std::move(io), params, [&clock]() { return clock; }, [&clock]() { clock += 0.01; });
+  OmniDevice device(
+      std::move(io), params, [&clock]() { return clock; }, [&clock]() { clock += 0.01; });
   device.start();
   const auto calls = control<int (*)(int)>("hdStandInUpdateCalibrationCalls");
   EXPECT_EQ(calls(1), 1) << "hdUpdateCalibration in a scheduled callback, as the vendor's example";

@@ -1,7 +1,8 @@
 // The last force a held-force driver gets is zero (src/ros/zero_on_stop.h), on the stops that
 // never reach a destructor: Ctrl-C (SIGINT, handed on afterwards to the handler that was there:
 // here the default, which ends the process) and a crash (SIGSEGV: the zeros first, then the
-// signal's own end). Each in a child process (a death test): the zero it sends is a file written.
+// signal's own end). Each in a child process (a death test, forked: this process starts no thread
+// before it): the zero it sends is a file written.
 #include "zero_on_stop.h"
 
 #include <gtest/gtest.h>
@@ -50,7 +51,6 @@ void stopBy(int number, const std::string& path)
 
 TEST(ZeroOnStop, CtrlCSendsTheZerosThenHandsTheSignalOn)
 {
-  ::testing::FLAGS_gtest_death_test_style = "threadsafe";
   const std::string path = temporaryFile();
   EXPECT_EXIT(stopBy(SIGINT, path), ::testing::KilledBySignal(SIGINT), "");
   EXPECT_EQ(contents(path), "zero ");
@@ -58,7 +58,6 @@ TEST(ZeroOnStop, CtrlCSendsTheZerosThenHandsTheSignalOn)
 
 TEST(ZeroOnStop, ACrashSendsTheZerosBeforeItEnds)
 {
-  ::testing::FLAGS_gtest_death_test_style = "threadsafe";
   const std::string path = temporaryFile();
   EXPECT_EXIT(stopBy(SIGSEGV, path), ::testing::KilledBySignal(SIGSEGV), "");
   EXPECT_EQ(contents(path), "zero ");

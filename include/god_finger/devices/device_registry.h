@@ -7,11 +7,11 @@
 // to install.
 #pragma once
 
-#include "god_finger/support/parameter_source.h"
-#include "god_finger/haptics/waypoint_path.h"
 #include "god_finger/devices/driver_bridge.h"
 #include "god_finger/devices/haptic_device.h"
 #include "god_finger/devices/pose_source.h"
+#include "god_finger/haptics/waypoint_path.h"
+#include "god_finger/support/parameter_source.h"
 
 #include <cmath>
 #include <functional>

@@ -42,15 +42,15 @@ namespace god_finger
 {
 struct DriverBridgeParams
 {
-  std::string backend;        // the registry's name: omni_msgs, ros_geomagic, crtk, ros_falcon
-  std::string driver_ns;      // the driver's topics' namespace (`driver_ns`; the profile gives its default)
-  std::string arm;            // crtk: the arm's name under driver_ns ("" = the topics are in driver_ns)
-  const VendorFrame* frame = nullptr;            // `driver_frame`
-  double position_unit = 1.0;                    // m per driver position unit (`driver_position_unit`)
+  std::string backend;                 // the registry's name: omni_msgs, ros_geomagic, crtk, ros_falcon
+  std::string driver_ns;               // the driver's topics' namespace (`driver_ns`; the profile gives its default)
+  std::string arm;                     // crtk: the arm's name under driver_ns ("" = the topics are in driver_ns)
+  const VendorFrame* frame = nullptr;  // `driver_frame`
+  double position_unit = 1.0;          // m per driver position unit (`driver_position_unit`)
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // driver frame and units (`driver_center`)
-  double stale_timeout = 0.1;                    // s: an older driver state is a device fault
-  double state_wait = 0.0005;                    // s: how long the servo loop's tick waits for the driver's next state
-  double max_force = 3.3;                        // N: the profile's limit (what is sent never exceeds it)
+  double stale_timeout = 0.1;                        // s: an older driver state is a device fault
+  double state_wait = 0.0005;  // s: how long the servo loop's tick waits for the driver's next state
+  double max_force = 3.3;      // N: the profile's limit (what is sent never exceeds it)
 };
 
 // stale_timeout, state_wait (the numeric rows; the others are names, a frame and a vector).
@@ -59,8 +59,7 @@ const ParameterTable<DriverBridgeParams>& driverBridgeParameterTable();
 // `backend`'s parameters: driver_ns (required: the profile sets it), arm, driver_frame,
 // driver_position_unit (> 0), driver_center, the table's rows; max_force is the profile's limit.
 // InputError naming a bad one.
-DriverBridgeParams readDriverBridgeParams(const std::string& backend, const ParameterSource& source,
-                                          double max_force);
+DriverBridgeParams readDriverBridgeParams(const std::string& backend, const ParameterSource& source, double max_force);
 
 // The driver's newest state, as it sent it (driver frame and units).
 struct DriverState

@@ -12,10 +12,10 @@
 // as zero.
 #pragma once
 
-#include "god_finger/support/parameter_source.h"
-#include "god_finger/support/parameter_table.h"
 #include "god_finger/devices/device_signals.h"
 #include "god_finger/devices/haptic_device.h"
+#include "god_finger/support/parameter_source.h"
+#include "god_finger/support/parameter_table.h"
 
 #include <array>
 #include <functional>

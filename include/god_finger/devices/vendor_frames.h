@@ -18,9 +18,9 @@ namespace god_finger
 {
 struct VendorFrame
 {
-  const char* name;      // as profiles and parameters spell it
-  const char* axes;      // the frame's axes as the user sees them, for docs and messages
-  const char* users;     // who reports in it
+  const char* name;   // as profiles and parameters spell it
+  const char* axes;   // the frame's axes as the user sees them, for docs and messages
+  const char* users;  // who reports in it
   Eigen::Matrix3d to_device;
 
   Eigen::Vector3d toDevice(const Eigen::Vector3d& vendor) const

@@ -23,8 +23,9 @@ std::unique_ptr<OmniIo> loadOpenHapticsIo(const std::string& module)
     std::string what = "install 3D Systems' OpenHaptics, then rebuild god_finger";
     if (why.find("PHANToMIO") != std::string::npos)
     {
-      what = "libHD needs the Touch device driver's libPHANToMIO: install 3D Systems' Touch device driver for "
-             "Linux (and check the device with Touch_Setup)";
+      what =
+          "libHD needs the Touch device driver's libPHANToMIO: install 3D Systems' Touch device driver for "
+          "Linux (and check the device with Touch_Setup)";
     }
     else if (why.find("libHD") != std::string::npos)
     {
