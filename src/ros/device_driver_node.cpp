@@ -97,7 +97,8 @@ struct DeviceDriverNode::Impl
   std::atomic<long> overruns{0};
   std::atomic<long> dropped{0};             // samples the publisher thread had no room for
   bool lost_device = false;                 // the device loop's: its last reading untracked (a stale driver)
-  std::atomic<long> lost_device_events{0};  // untracked and tracked again, each counted
+  bool stopped_by_loss = false;             // under `mutex`: the loss stopped the force (not the user)
+  std::atomic<long> lost_device_events{0};  // losses and regains, each counted
   std::mutex trips_mutex;                   // guards round_trips_us (callback and publisher threads)
   std::vector<double> round_trips_us;       // since the last diagnostics
   std::uint32_t published = 0;              // publisher thread only
@@ -164,6 +165,7 @@ struct DeviceDriverNode::Impl
     if (request.data)
     {
       guard->stop();
+      stopped_by_loss = false;  // the user's stop: a regained device does not resume it
     }
     else
     {
@@ -219,6 +221,7 @@ struct DeviceDriverNode::Impl
     add("force_stopped", stopped ? "true" : "false");
     add("budget_limited_outputs", std::to_string(budget_limited));
     add("watchdog_timed_out", timed_out ? "true" : "false");
+    add("device_lost_events", std::to_string(lost_device_events.load()));  // a stale ROS driver, lost and back
     add("commands", std::to_string(trips.size()));
     add("round_trip_us_p50", jsonNumber(percentile(trips, 0.5)));
     add("round_trip_us_p99", jsonNumber(percentile(trips, 0.99)));
@@ -285,9 +288,19 @@ struct DeviceDriverNode::Impl
       {
         // A device that lost its source (a stale ROS driver: devices/driver_bridge.h) is a fault:
         // its force stops at once, and comes back through the soft start when it is tracked again.
+        // A force the user stopped (stop_force) stays stopped.
         std::lock_guard<std::mutex> lock(mutex);
         lost_device = !reading.tracked;
-        lost_device ? guard->stop() : guard->resume(now());
+        if (lost_device && !guard->stopped())
+        {
+          guard->stop();
+          stopped_by_loss = true;
+        }
+        else if (!lost_device && stopped_by_loss)
+        {
+          guard->resume(now());
+          stopped_by_loss = false;
+        }
         ++lost_device_events;
       }
       DriverSample* sample = samples.reserve();
