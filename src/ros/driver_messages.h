@@ -7,6 +7,7 @@
 // by roscpp, which names the topic and both md5sums. docs/decisions.md says why this form.
 // The fakes of test/ros/ros_drivers/ build their messages with genpy from those .msg files: a
 // rostest connecting them is the check that these match.
+
 #pragma once
 
 #include <geometry_msgs/Pose.h>
@@ -18,6 +19,66 @@
 #include <cstdint>
 #include <string>
 #include <vector>
+
+// A driver's message: `Message` names its type, md5sum and definition (kType, kMd5,
+// kDefinition) and visits its fields in the .msg's order (fields()); this gives roscpp its traits
+// and its serialiser, as gencpp's generated code does. At global scope.
+#define GOD_FINGER_DRIVER_MESSAGE(Message)                                                         \
+  namespace ros                                                                                    \
+  {                                                                                                \
+  namespace message_traits                                                                         \
+  {                                                                                                \
+  template <>                                                                                      \
+  struct MD5Sum<god_finger::driver_msgs::Message>                                                  \
+  {                                                                                                \
+    static const char* value()                                                                     \
+    {                                                                                              \
+      return god_finger::driver_msgs::Message::kMd5;                                               \
+    }                                                                                              \
+    static const char* value(const god_finger::driver_msgs::Message&)                              \
+    {                                                                                              \
+      return value();                                                                              \
+    }                                                                                              \
+  };                                                                                               \
+  template <>                                                                                      \
+  struct DataType<god_finger::driver_msgs::Message>                                                \
+  {                                                                                                \
+    static const char* value()                                                                     \
+    {                                                                                              \
+      return god_finger::driver_msgs::Message::kType;                                              \
+    }                                                                                              \
+    static const char* value(const god_finger::driver_msgs::Message&)                              \
+    {                                                                                              \
+      return value();                                                                              \
+    }                                                                                              \
+  };                                                                                               \
+  template <>                                                                                      \
+  struct Definition<god_finger::driver_msgs::Message>                                              \
+  {                                                                                                \
+    static const char* value()                                                                     \
+    {                                                                                              \
+      return god_finger::driver_msgs::Message::kDefinition;                                        \
+    }                                                                                              \
+    static const char* value(const god_finger::driver_msgs::Message&)                              \
+    {                                                                                              \
+      return value();                                                                              \
+    }                                                                                              \
+  };                                                                                               \
+  }                                                                                                \
+  namespace serialization                                                                          \
+  {                                                                                                \
+  template <>                                                                                      \
+  struct Serializer<god_finger::driver_msgs::Message>                                              \
+  {                                                                                                \
+    template <typename Stream, typename T>                                                         \
+    inline static void allInOne(Stream& stream, T m)                                               \
+    {                                                                                              \
+      god_finger::driver_msgs::Message::fields(m, [&stream](auto& field) { stream.next(field); }); \
+    }                                                                                              \
+    ROS_DECLARE_ALLINONE_SERIALIZER                                                                \
+  };                                                                                               \
+  }                                                                                                \
+  }
 
 namespace god_finger
 {
@@ -31,94 +92,10 @@ struct OmniState
   geometry_msgs::Pose pose;
   geometry_msgs::Vector3 current;
   geometry_msgs::Vector3 velocity;
-};
-using OmniStateConstPtr = boost::shared_ptr<const OmniState>;
-struct OmniFeedback
-{
-  geometry_msgs::Vector3 force;
-  geometry_msgs::Vector3 position;
-};
-using OmniFeedbackConstPtr = boost::shared_ptr<const OmniFeedback>;
-struct OmniButtonEvent
-{
-  std::int32_t grey_button = 0;
-  std::int32_t white_button = 0;
-};
-using OmniButtonEventConstPtr = boost::shared_ptr<const OmniButtonEvent>;
-struct DeviceFeedback
-{
-  geometry_msgs::Vector3 force;
-  geometry_msgs::Vector3 position;
-  std::vector<std::uint8_t> lock;
-};
-using DeviceFeedbackConstPtr = boost::shared_ptr<const DeviceFeedback>;
-struct DeviceButtonEvent
-{
-  std::int32_t grey_button = 0;
-  std::int32_t white_button = 0;
-};
-using DeviceButtonEventConstPtr = boost::shared_ptr<const DeviceButtonEvent>;
-struct OperatingState
-{
-  std_msgs::Header header;
-  std::string state;
-  std::uint8_t is_homed = 0;
-  std::uint8_t is_busy = 0;
-};
-using OperatingStateConstPtr = boost::shared_ptr<const OperatingState>;
-struct FalconPos
-{
-  double X = 0.0;
-  double Y = 0.0;
-  double Z = 0.0;
-};
-using FalconPosConstPtr = boost::shared_ptr<const FalconPos>;
-struct FalconForces
-{
-  double X = 0.0;
-  double Y = 0.0;
-  double Z = 0.0;
-};
-using FalconForcesConstPtr = boost::shared_ptr<const FalconForces>;
-}  // namespace driver_msgs
-}  // namespace god_finger
 
-namespace ros
-{
-namespace message_traits
-{
-template <>
-struct MD5Sum<god_finger::driver_msgs::OmniState>
-{
-  static const char* value()
-  {
-    return "89c2a741de66e9e904f59a02b171dd6e";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniState&)
-  {
-    return value();
-  }
-  static const std::uint64_t static_value1 = 0x89c2a741de66e9e9ULL;
-  static const std::uint64_t static_value2 = 0x04f59a02b171dd6eULL;
-};
-template <>
-struct DataType<god_finger::driver_msgs::OmniState>
-{
-  static const char* value()
-  {
-    return "omni_msgs/OmniState";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniState&)
-  {
-    return value();
-  }
-};
-template <>
-struct Definition<god_finger::driver_msgs::OmniState>
-{
-  static const char* value()
-  {
-    return R"DEF(std_msgs/Header         header
+  static constexpr const char* kType = "omni_msgs/OmniState";
+  static constexpr const char* kMd5 = "89c2a741de66e9e904f59a02b171dd6e";
+  static constexpr const char* kDefinition = R"DEF(std_msgs/Header         header
 
 bool                    locked
 
@@ -180,48 +157,28 @@ MSG: geometry_msgs/Vector3
 float64 x
 float64 y
 float64 z)DEF";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniState&)
+  template <class Self, class Visit>
+  static void fields(Self& m, Visit visit)
   {
-    return value();
-  }
-};
-template <>
-struct HasHeader<god_finger::driver_msgs::OmniState> : TrueType
-{
-};
-template <>
-struct MD5Sum<god_finger::driver_msgs::OmniFeedback>
-{
-  static const char* value()
-  {
-    return "e9083ac4fd95494e94fbb0c0f90b6c00";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniFeedback&)
-  {
-    return value();
-  }
-  static const std::uint64_t static_value1 = 0xe9083ac4fd95494eULL;
-  static const std::uint64_t static_value2 = 0x94fbb0c0f90b6c00ULL;
-};
-template <>
-struct DataType<god_finger::driver_msgs::OmniFeedback>
-{
-  static const char* value()
-  {
-    return "omni_msgs/OmniFeedback";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniFeedback&)
-  {
-    return value();
+    visit(m.header);
+    visit(m.locked);
+    visit(m.close_gripper);
+    visit(m.pose);
+    visit(m.current);
+    visit(m.velocity);
   }
 };
-template <>
-struct Definition<god_finger::driver_msgs::OmniFeedback>
+using OmniStateConstPtr = boost::shared_ptr<const OmniState>;
+
+struct OmniFeedback
 {
-  static const char* value()
-  {
-    return R"DEF(# This is the force as estimated from the applied torques as well as the
+  geometry_msgs::Vector3 force;
+  geometry_msgs::Vector3 position;
+
+  static constexpr const char* kType = "omni_msgs/OmniFeedback";
+  static constexpr const char* kMd5 = "e9083ac4fd95494e94fbb0c0f90b6c00";
+  static constexpr const char* kDefinition =
+      R"DEF(# This is the force as estimated from the applied torques as well as the
 # current end effector position of the robot arm
 geometry_msgs/Vector3  force
 geometry_msgs/Vector3  position
@@ -238,84 +195,44 @@ MSG: geometry_msgs/Vector3
 float64 x
 float64 y
 float64 z)DEF";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniFeedback&)
+  template <class Self, class Visit>
+  static void fields(Self& m, Visit visit)
   {
-    return value();
-  }
-};
-template <>
-struct MD5Sum<god_finger::driver_msgs::OmniButtonEvent>
-{
-  static const char* value()
-  {
-    return "fb77877e6b639935c3360838062f05f0";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniButtonEvent&)
-  {
-    return value();
-  }
-  static const std::uint64_t static_value1 = 0xfb77877e6b639935ULL;
-  static const std::uint64_t static_value2 = 0xc3360838062f05f0ULL;
-};
-template <>
-struct DataType<god_finger::driver_msgs::OmniButtonEvent>
-{
-  static const char* value()
-  {
-    return "omni_msgs/OmniButtonEvent";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniButtonEvent&)
-  {
-    return value();
+    visit(m.force);
+    visit(m.position);
   }
 };
-template <>
-struct Definition<god_finger::driver_msgs::OmniButtonEvent>
+using OmniFeedbackConstPtr = boost::shared_ptr<const OmniFeedback>;
+
+struct OmniButtonEvent
 {
-  static const char* value()
-  {
-    return R"DEF(int32 grey_button
+  std::int32_t grey_button = 0;
+  std::int32_t white_button = 0;
+
+  static constexpr const char* kType = "omni_msgs/OmniButtonEvent";
+  static constexpr const char* kMd5 = "fb77877e6b639935c3360838062f05f0";
+  static constexpr const char* kDefinition = R"DEF(int32 grey_button
 int32 white_button
 )DEF";
-  }
-  static const char* value(const god_finger::driver_msgs::OmniButtonEvent&)
+  template <class Self, class Visit>
+  static void fields(Self& m, Visit visit)
   {
-    return value();
-  }
-};
-template <>
-struct MD5Sum<god_finger::driver_msgs::DeviceFeedback>
-{
-  static const char* value()
-  {
-    return "94755b031db27fe99c2c235c0da9b072";
-  }
-  static const char* value(const god_finger::driver_msgs::DeviceFeedback&)
-  {
-    return value();
-  }
-  static const std::uint64_t static_value1 = 0x94755b031db27fe9ULL;
-  static const std::uint64_t static_value2 = 0x9c2c235c0da9b072ULL;
-};
-template <>
-struct DataType<god_finger::driver_msgs::DeviceFeedback>
-{
-  static const char* value()
-  {
-    return "geomagic_control/DeviceFeedback";
-  }
-  static const char* value(const god_finger::driver_msgs::DeviceFeedback&)
-  {
-    return value();
+    visit(m.grey_button);
+    visit(m.white_button);
   }
 };
-template <>
-struct Definition<god_finger::driver_msgs::DeviceFeedback>
+using OmniButtonEventConstPtr = boost::shared_ptr<const OmniButtonEvent>;
+
+struct DeviceFeedback
 {
-  static const char* value()
-  {
-    return R"DEF(# This is the force as estimated from the applied torques as well as the current
+  geometry_msgs::Vector3 force;
+  geometry_msgs::Vector3 position;
+  std::vector<std::uint8_t> lock;
+
+  static constexpr const char* kType = "geomagic_control/DeviceFeedback";
+  static constexpr const char* kMd5 = "94755b031db27fe99c2c235c0da9b072";
+  static constexpr const char* kDefinition =
+      R"DEF(# This is the force as estimated from the applied torques as well as the current
 # end effector position of the robot arm                           
 geometry_msgs/Vector3  force                                                                  
 geometry_msgs/Vector3  position 
@@ -332,84 +249,45 @@ MSG: geometry_msgs/Vector3
 float64 x
 float64 y
 float64 z)DEF";
-  }
-  static const char* value(const god_finger::driver_msgs::DeviceFeedback&)
+  template <class Self, class Visit>
+  static void fields(Self& m, Visit visit)
   {
-    return value();
-  }
-};
-template <>
-struct MD5Sum<god_finger::driver_msgs::DeviceButtonEvent>
-{
-  static const char* value()
-  {
-    return "fb77877e6b639935c3360838062f05f0";
-  }
-  static const char* value(const god_finger::driver_msgs::DeviceButtonEvent&)
-  {
-    return value();
-  }
-  static const std::uint64_t static_value1 = 0xfb77877e6b639935ULL;
-  static const std::uint64_t static_value2 = 0xc3360838062f05f0ULL;
-};
-template <>
-struct DataType<god_finger::driver_msgs::DeviceButtonEvent>
-{
-  static const char* value()
-  {
-    return "geomagic_control/DeviceButtonEvent";
-  }
-  static const char* value(const god_finger::driver_msgs::DeviceButtonEvent&)
-  {
-    return value();
+    visit(m.force);
+    visit(m.position);
+    visit(m.lock);
   }
 };
-template <>
-struct Definition<god_finger::driver_msgs::DeviceButtonEvent>
+using DeviceFeedbackConstPtr = boost::shared_ptr<const DeviceFeedback>;
+
+struct DeviceButtonEvent
 {
-  static const char* value()
-  {
-    return R"DEF(int32 grey_button
+  std::int32_t grey_button = 0;
+  std::int32_t white_button = 0;
+
+  static constexpr const char* kType = "geomagic_control/DeviceButtonEvent";
+  static constexpr const char* kMd5 = "fb77877e6b639935c3360838062f05f0";
+  static constexpr const char* kDefinition = R"DEF(int32 grey_button
 int32 white_button
 )DEF";
-  }
-  static const char* value(const god_finger::driver_msgs::DeviceButtonEvent&)
+  template <class Self, class Visit>
+  static void fields(Self& m, Visit visit)
   {
-    return value();
-  }
-};
-template <>
-struct MD5Sum<god_finger::driver_msgs::OperatingState>
-{
-  static const char* value()
-  {
-    return "b1bd4021639d9d9c5fbfff78d6ff3158";
-  }
-  static const char* value(const god_finger::driver_msgs::OperatingState&)
-  {
-    return value();
-  }
-  static const std::uint64_t static_value1 = 0xb1bd4021639d9d9cULL;
-  static const std::uint64_t static_value2 = 0x5fbfff78d6ff3158ULL;
-};
-template <>
-struct DataType<god_finger::driver_msgs::OperatingState>
-{
-  static const char* value()
-  {
-    return "crtk_msgs/OperatingState";
-  }
-  static const char* value(const god_finger::driver_msgs::OperatingState&)
-  {
-    return value();
+    visit(m.grey_button);
+    visit(m.white_button);
   }
 };
-template <>
-struct Definition<god_finger::driver_msgs::OperatingState>
+using DeviceButtonEventConstPtr = boost::shared_ptr<const DeviceButtonEvent>;
+
+struct OperatingState
 {
-  static const char* value()
-  {
-    return R"DEF(#
+  std_msgs::Header header;
+  std::string state;
+  std::uint8_t is_homed = 0;
+  std::uint8_t is_busy = 0;
+
+  static constexpr const char* kType = "crtk_msgs/OperatingState";
+  static constexpr const char* kMd5 = "b1bd4021639d9d9c5fbfff78d6ff3158";
+  static constexpr const char* kDefinition = R"DEF(#
 # See https://github.com/collaborative-robotics/documentation/wiki/Robot-API-status
 #
 # Standard states include DISABLED, ENABLED, PAUSED and FAULT
@@ -435,198 +313,84 @@ time stamp
 #Frame this data is associated with
 string frame_id
 )DEF";
-  }
-  static const char* value(const god_finger::driver_msgs::OperatingState&)
+  template <class Self, class Visit>
+  static void fields(Self& m, Visit visit)
   {
-    return value();
+    visit(m.header);
+    visit(m.state);
+    visit(m.is_homed);
+    visit(m.is_busy);
   }
+};
+using OperatingStateConstPtr = boost::shared_ptr<const OperatingState>;
+
+struct FalconPos
+{
+  double X = 0.0;
+  double Y = 0.0;
+  double Z = 0.0;
+
+  static constexpr const char* kType = "ros_falcon/falconPos";
+  static constexpr const char* kMd5 = "8219583d7802cc50be3e9ab911877ba5";
+  static constexpr const char* kDefinition = R"DEF(float64 X
+float64 Y
+float64 Z
+)DEF";
+  template <class Self, class Visit>
+  static void fields(Self& m, Visit visit)
+  {
+    visit(m.X);
+    visit(m.Y);
+    visit(m.Z);
+  }
+};
+using FalconPosConstPtr = boost::shared_ptr<const FalconPos>;
+
+struct FalconForces
+{
+  double X = 0.0;
+  double Y = 0.0;
+  double Z = 0.0;
+
+  static constexpr const char* kType = "ros_falcon/falconForces";
+  static constexpr const char* kMd5 = "8219583d7802cc50be3e9ab911877ba5";
+  static constexpr const char* kDefinition = R"DEF(float64 X
+float64 Y
+float64 Z
+)DEF";
+  template <class Self, class Visit>
+  static void fields(Self& m, Visit visit)
+  {
+    visit(m.X);
+    visit(m.Y);
+    visit(m.Z);
+  }
+};
+using FalconForcesConstPtr = boost::shared_ptr<const FalconForces>;
+
+}  // namespace driver_msgs
+}  // namespace god_finger
+
+GOD_FINGER_DRIVER_MESSAGE(OmniState)
+GOD_FINGER_DRIVER_MESSAGE(OmniFeedback)
+GOD_FINGER_DRIVER_MESSAGE(OmniButtonEvent)
+GOD_FINGER_DRIVER_MESSAGE(DeviceFeedback)
+GOD_FINGER_DRIVER_MESSAGE(DeviceButtonEvent)
+GOD_FINGER_DRIVER_MESSAGE(OperatingState)
+GOD_FINGER_DRIVER_MESSAGE(FalconPos)
+GOD_FINGER_DRIVER_MESSAGE(FalconForces)
+
+namespace ros
+{
+namespace message_traits
+{
+template <>
+struct HasHeader<god_finger::driver_msgs::OmniState> : TrueType
+{
 };
 template <>
 struct HasHeader<god_finger::driver_msgs::OperatingState> : TrueType
 {
 };
-template <>
-struct MD5Sum<god_finger::driver_msgs::FalconPos>
-{
-  static const char* value()
-  {
-    return "8219583d7802cc50be3e9ab911877ba5";
-  }
-  static const char* value(const god_finger::driver_msgs::FalconPos&)
-  {
-    return value();
-  }
-  static const std::uint64_t static_value1 = 0x8219583d7802cc50ULL;
-  static const std::uint64_t static_value2 = 0xbe3e9ab911877ba5ULL;
-};
-template <>
-struct DataType<god_finger::driver_msgs::FalconPos>
-{
-  static const char* value()
-  {
-    return "ros_falcon/falconPos";
-  }
-  static const char* value(const god_finger::driver_msgs::FalconPos&)
-  {
-    return value();
-  }
-};
-template <>
-struct Definition<god_finger::driver_msgs::FalconPos>
-{
-  static const char* value()
-  {
-    return R"DEF(float64 X
-float64 Y
-float64 Z
-)DEF";
-  }
-  static const char* value(const god_finger::driver_msgs::FalconPos&)
-  {
-    return value();
-  }
-};
-template <>
-struct MD5Sum<god_finger::driver_msgs::FalconForces>
-{
-  static const char* value()
-  {
-    return "8219583d7802cc50be3e9ab911877ba5";
-  }
-  static const char* value(const god_finger::driver_msgs::FalconForces&)
-  {
-    return value();
-  }
-  static const std::uint64_t static_value1 = 0x8219583d7802cc50ULL;
-  static const std::uint64_t static_value2 = 0xbe3e9ab911877ba5ULL;
-};
-template <>
-struct DataType<god_finger::driver_msgs::FalconForces>
-{
-  static const char* value()
-  {
-    return "ros_falcon/falconForces";
-  }
-  static const char* value(const god_finger::driver_msgs::FalconForces&)
-  {
-    return value();
-  }
-};
-template <>
-struct Definition<god_finger::driver_msgs::FalconForces>
-{
-  static const char* value()
-  {
-    return R"DEF(float64 X
-float64 Y
-float64 Z
-)DEF";
-  }
-  static const char* value(const god_finger::driver_msgs::FalconForces&)
-  {
-    return value();
-  }
-};
 }  // namespace message_traits
-
-namespace serialization
-{
-template <>
-struct Serializer<god_finger::driver_msgs::OmniState>
-{
-  template <typename Stream, typename T>
-  inline static void allInOne(Stream& stream, T m)
-  {
-    stream.next(m.header);
-    stream.next(m.locked);
-    stream.next(m.close_gripper);
-    stream.next(m.pose);
-    stream.next(m.current);
-    stream.next(m.velocity);
-  }
-  ROS_DECLARE_ALLINONE_SERIALIZER
-};
-template <>
-struct Serializer<god_finger::driver_msgs::OmniFeedback>
-{
-  template <typename Stream, typename T>
-  inline static void allInOne(Stream& stream, T m)
-  {
-    stream.next(m.force);
-    stream.next(m.position);
-  }
-  ROS_DECLARE_ALLINONE_SERIALIZER
-};
-template <>
-struct Serializer<god_finger::driver_msgs::OmniButtonEvent>
-{
-  template <typename Stream, typename T>
-  inline static void allInOne(Stream& stream, T m)
-  {
-    stream.next(m.grey_button);
-    stream.next(m.white_button);
-  }
-  ROS_DECLARE_ALLINONE_SERIALIZER
-};
-template <>
-struct Serializer<god_finger::driver_msgs::DeviceFeedback>
-{
-  template <typename Stream, typename T>
-  inline static void allInOne(Stream& stream, T m)
-  {
-    stream.next(m.force);
-    stream.next(m.position);
-    stream.next(m.lock);
-  }
-  ROS_DECLARE_ALLINONE_SERIALIZER
-};
-template <>
-struct Serializer<god_finger::driver_msgs::DeviceButtonEvent>
-{
-  template <typename Stream, typename T>
-  inline static void allInOne(Stream& stream, T m)
-  {
-    stream.next(m.grey_button);
-    stream.next(m.white_button);
-  }
-  ROS_DECLARE_ALLINONE_SERIALIZER
-};
-template <>
-struct Serializer<god_finger::driver_msgs::OperatingState>
-{
-  template <typename Stream, typename T>
-  inline static void allInOne(Stream& stream, T m)
-  {
-    stream.next(m.header);
-    stream.next(m.state);
-    stream.next(m.is_homed);
-    stream.next(m.is_busy);
-  }
-  ROS_DECLARE_ALLINONE_SERIALIZER
-};
-template <>
-struct Serializer<god_finger::driver_msgs::FalconPos>
-{
-  template <typename Stream, typename T>
-  inline static void allInOne(Stream& stream, T m)
-  {
-    stream.next(m.X);
-    stream.next(m.Y);
-    stream.next(m.Z);
-  }
-  ROS_DECLARE_ALLINONE_SERIALIZER
-};
-template <>
-struct Serializer<god_finger::driver_msgs::FalconForces>
-{
-  template <typename Stream, typename T>
-  inline static void allInOne(Stream& stream, T m)
-  {
-    stream.next(m.X);
-    stream.next(m.Y);
-    stream.next(m.Z);
-  }
-  ROS_DECLARE_ALLINONE_SERIALIZER
-};
-}  // namespace serialization
 }  // namespace ros
