@@ -516,11 +516,32 @@ bool finite(const BodyState& state)
   return state.pose.matrix().allFinite() && state.linear_velocity.allFinite() && state.angular_velocity.allFinite();
 }
 
-class CsvWriter
+// The time series of a run: one row per step (the watched object's pose, velocities and net
+// force, then each finger's target, proxy, force, contacts and sub-god-objects), written to the
+// CSV file (ExperimentOptions::csv) and kept in the result (ExperimentOptions::series).
+class SeriesRecorder
 {
  public:
-  CsvWriter(const std::string& path, int fingers)
+  SeriesRecorder(const std::string& path, bool keep, int fingers, ExperimentResult* result)
+      : keep_(keep), result_(result)
   {
+    if (path.empty() && !keep)
+    {
+      return;
+    }
+    names_ = {"t", "x", "y", "z", "qx", "qy", "qz", "qw", "vx", "vy", "vz", "wx", "wy", "wz", "fx", "fy", "fz"};
+    for (int i = 0; i < fingers; ++i)
+    {
+      const std::string f = "f" + std::to_string(i) + "_";
+      for (const char* column : {"ix", "iy", "iz", "px", "py", "pz", "ux", "uy", "uz", "contacts", "sgo"})
+      {
+        names_.push_back(f + column);
+      }
+    }
+    if (keep_)
+    {
+      result_->series_names = names_;
+    }
     if (path.empty())
     {
       return;
@@ -530,29 +551,25 @@ class CsvWriter
     {
       throw InputError("csv file '" + path + "': cannot be written");
     }
-    file_ << "t,x,y,z,qx,qy,qz,qw,vx,vy,vz,wx,wy,wz,fx,fy,fz";
-    for (int i = 0; i < fingers; ++i)
+    std::string header;
+    for (const std::string& name : names_)
     {
-      file_ << ",f" << i << "_ix,f" << i << "_iy,f" << i << "_iz,f" << i << "_px,f" << i << "_py,f" << i << "_pz,f" << i
-            << "_ux,f" << i << "_uy,f" << i << "_uz,f" << i << "_contacts,f" << i << "_sgo";
+      header += (header.empty() ? "" : ",") + name;
     }
-    file_ << "\n";
+    file_ << header << "\n";
   }
 
   void add(double time, const BodyState& body, const GodFingerWorld& world)
   {
-    if (!file_.is_open())
+    if (names_.empty())
     {
       return;
     }
     const Eigen::Quaterniond q(body.pose.linear());
-    line_.clear();
-    append(time);
+    row_.clear();
+    row_.push_back(time);
     appendAll(body.pose.translation());
-    append(q.x());
-    append(q.y());
-    append(q.z());
-    append(q.w());
+    row_.insert(row_.end(), {q.x(), q.y(), q.z(), q.w()});
     appendAll(body.linear_velocity);
     appendAll(body.angular_velocity);
     appendAll(body.net_force);
@@ -567,11 +584,25 @@ class CsvWriter
       {
         sgo += state.contacts[c].sub_god_object_count;
       }
-      append(state.contact_count);
-      append(sgo);
+      row_.push_back(state.contact_count);
+      row_.push_back(sgo);
     }
-    line_.back() = '\n';
-    file_ << line_;
+    if (keep_)
+    {
+      result_->series.insert(result_->series.end(), row_.begin(), row_.end());
+    }
+    if (file_.is_open())
+    {
+      line_.clear();
+      for (double value : row_)
+      {
+        char buffer[32];
+        std::snprintf(buffer, sizeof(buffer), "%.17g,", value);
+        line_ += buffer;
+      }
+      line_.back() = '\n';
+      file_ << line_;
+    }
   }
 
   void close()
@@ -587,19 +618,15 @@ class CsvWriter
   }
 
  private:
-  void append(double value)
-  {
-    char buffer[32];
-    std::snprintf(buffer, sizeof(buffer), "%.17g,", value);
-    line_ += buffer;
-  }
   void appendAll(const Eigen::Vector3d& v)
   {
-    append(v.x());
-    append(v.y());
-    append(v.z());
+    row_.insert(row_.end(), {v.x(), v.y(), v.z()});
   }
+  bool keep_ = false;
+  ExperimentResult* result_ = nullptr;
+  std::vector<std::string> names_;
   std::ofstream file_;
+  std::vector<double> row_;
   std::string line_;
 };
 
@@ -752,7 +779,8 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   {
     roll = std::make_unique<RollMetrics>(object, script.lift_start);
   }
-  CsvWriter csv(options.csv, world.interfaceCount());
+  ExperimentResult result;
+  SeriesRecorder csv(options.csv, options.series, world.interfaceCount(), &result);
   // pinch_thin's hand metrics (the other scenarios' results stay as they were).
   const bool overlap_metrics_wanted = options.scenario == Scenario::kPinchThin;
   OverlapMetrics overlap_metrics(world);
@@ -778,7 +806,6 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
   }
   std::vector<double> step_us;
   step_us.reserve(static_cast<std::size_t>(steps));
-  ExperimentResult result;
   const long sample_every =
       options.sample_period > 0.0 ? std::max(1L, std::lround(options.sample_period / options.time_step)) : 0;
   for (long i = 0; i < steps; ++i)

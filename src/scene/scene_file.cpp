@@ -177,10 +177,7 @@ class SceneListParser
     if (object["rpy"])
     {
       const Eigen::Vector3d rpy = vector3(object["rpy"], where + ".rpy");
-      placement.linear() =
-          (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
-           Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
-              .toRotationMatrix();
+      placement.linear() = rpyRotation(rpy);
     }
     ObjectPlacement placed;
     placed.pose = placement;
@@ -218,6 +215,13 @@ class SceneListParser
   PackageResolver packages_;
 };
 }  // namespace
+
+Eigen::Matrix3d rpyRotation(const Eigen::Vector3d& rpy)
+{
+  return (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
 
 BodyDescription supportTable()
 {

@@ -136,6 +136,7 @@ struct ExperimentOptions
   double push_height = 0.0125;
   std::uint64_t seed = 1;
   std::string csv;         // time series path, empty for none
+  bool series = false;     // the same time series kept in ExperimentResult::series
   std::string scenes_dir;  // folder of the scene URDFs (urdf/scenes of the package)
   // The world's (world_params.h) unless a caller sets them.
   int solver_iterations = WorldParams().solver_iterations;
@@ -170,6 +171,11 @@ struct ExperimentResult
   double step_us_total = 0.0;  // compute time of all steps (us)
   std::map<std::string, double> metrics;
   std::vector<PoseSample> trajectory;  // see ExperimentOptions::sample_period
+  // ExperimentOptions::series: the CSV's columns (t, the object's x y z, qx qy qz qw, vx vy vz,
+  // wx wy wz, fx fy fz, then per finger i: fi_ix.. target, fi_px.. proxy, fi_ux.. force on the
+  // hand, fi_contacts, fi_sgo), and its rows one after another (steps x series_names.size()).
+  std::vector<std::string> series_names;
+  std::vector<double> series;
 };
 
 // The world parameters a scenario runs with: the defaults (WorldParams), with the options'

@@ -50,6 +50,10 @@ void placeObject(const SceneDescription& object, const ObjectPlacement& placemen
 SceneDescription loadPlacedObject(const std::string& path, const ObjectPlacement& placement,
                                   const PackageResolver& packages = PackageResolver());
 
+// URDF's roll, pitch, yaw (rad, about the fixed x, y, z axes in that order) as a rotation: a scene
+// list's rpy, a spawned object's.
+Eigen::Matrix3d rpyRotation(const Eigen::Vector3d& rpy);
+
 // The table a scene list stands its objects on (support: table): static, 1 m x 1 m x 4 cm, its
 // top the plane z = 0, lateral friction 0.6 as the shipped scenes' tables.
 BodyDescription supportTable();
