@@ -32,6 +32,10 @@ Eigen::Vector3d vector3(const py::handle& value, const std::string& what);
 // A unit quaternion from (x, y, z, w): InputError on a shape other than (4,), a non-finite
 // number or a norm outside [0.5, 2] (the world's own bounds); the world normalises it.
 Eigen::Quaterniond quaternion(const py::handle& value, const std::string& what);
+// numpy's C API for array3 (the module's init calls it once).
+void initNumpy();
+// A copy of `v` as a numpy array of shape (3,).
+py::object array3(const Eigen::Vector3d& v);
 // (x, y, z, w) as a numpy array.
 py::object quaternionArray(const Eigen::Quaterniond& q);
 

@@ -265,12 +265,13 @@ void bindContact(py::module_& module)
             out["point"] = Eigen::Vector3d(location.point);
             out["face"] = mesh.mesh().sourceTriangle(location.face);
             out["feature"] = featureKindName(location.feature);
+            out["normal"] = Eigen::Vector3d(mesh.mesh().normals()[location.face]);
             out["distance"] = location.distance;
             return out;
           },
           py::arg("point"),
           "The closest point of the surface to `point` (m): {'point', 'face' (the file's triangle index), "
-          "'feature' (face, edge, vertex), 'distance' (m)}.")
+          "'feature' (face, edge, vertex), 'normal' (the face's, unit, outward), 'distance' (m)}.")
       .def("__repr__",
            [](const Mesh& mesh)
            {

@@ -50,6 +50,7 @@ PYBIND11_MODULE(_core, module)
   module.doc() =
       "god_finger's compiled core: the god-finger method (Bullet world, god-object proxies, god-finger\n"
       "contact areas) without ROS. Import the package god_finger, not this module.";
+  god_finger::python::initNumpy();
   god_finger::python::bindErrors(module);
   god_finger::python::bindContact(module);
   god_finger::python::bindWorld(module);

@@ -13,7 +13,9 @@
 
 #include <memory>
 #include <mutex>
+#include <cstring>
 #include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 namespace god_finger::python
@@ -46,7 +48,10 @@ struct FingerView
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   bool saturated = false;
   bool oriented = false;
-  std::vector<ContactView> contacts;
+  // The contact areas as the world gave them, and the names of the bodies they touch: made into
+  // Contact objects when read (a loop that reads only the force pays nothing for them).
+  std::vector<WorldContactArea> areas;
+  std::vector<std::string> bodies;
   double overlap_area = 0.0;
   Eigen::Vector3d overlap_push = Eigen::Vector3d::Zero();
 };
@@ -158,7 +163,6 @@ class World
 
   void setTarget(int finger, const py::handle& position, const py::object& orientation, const py::object& velocity)
   {
-    checkFinger(finger);
     const Eigen::Vector3d target = vector3(position, "position");
     if (!orientation.is_none() && !velocity.is_none())
     {
@@ -166,6 +170,7 @@ class World
                        "difference of its targets over a step)");
     }
     const std::lock_guard<std::mutex> lock(mutex_);
+    checkFinger(finger);
     if (!orientation.is_none())
     {
       world_->setInterfaceTarget(finger, target, quaternion(orientation, "orientation"));
@@ -182,8 +187,8 @@ class World
 
   FingerView finger(int finger) const
   {
-    checkFinger(finger);
     const std::lock_guard<std::mutex> lock(mutex_);
+    checkFinger(finger);
     return fingerView(world_->interfaceState(finger));
   }
 
@@ -192,6 +197,14 @@ class World
     if (count < 0)
     {
       throw InputError("step: n must be >= 0, not " + std::to_string(count));
+    }
+    if (count == 1)
+    {
+      // One step (a few microseconds): the GIL is kept, as a Python loop calling it takes it
+      // back at once (releasing it would cost a tenth of the call).
+      const std::lock_guard<std::mutex> lock(mutex_);
+      world_->step();
+      return;
     }
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -393,9 +406,10 @@ class World
     return names(std::vector<std::string>(set.begin(), set.end()));
   }
 
+  // Under the mutex.
   void checkFinger(int finger) const
   {
-    const int count = fingerCount();
+    const int count = world_->interfaceCount();
     if (finger < 0 || finger >= count)
     {
       throw InputError("no finger " + std::to_string(finger) + " (the world has " + std::to_string(count) +
@@ -460,24 +474,11 @@ class World
     view.target_orientation = state.oriented ? quaternionArray(state.interface_orientation) : py::none();
     view.overlap_area = state.overlap_area;
     view.overlap_push = state.overlap_push;
-    for (int c = 0; c < state.contact_count; ++c)
+    view.areas.assign(state.contacts.begin(), state.contacts.begin() + state.contact_count);
+    for (const WorldContactArea& area : view.areas)
     {
-      const WorldContactArea& area = state.contacts[c];
-      ContactView contact;
-      contact.body_index = area.body;
-      contact.body = area.body >= 0 && area.body < world_->bodyCount() ? world_->scene().bodies[area.body].name : "";
-      contact.point = area.point;
-      contact.normal = area.normal;
-      contact.depth = area.depth;
-      contact.radius = area.radius;
-      contact.feature = featureKindName(area.feature);
-      contact.sub_god_objects.resize(area.sub_god_object_count, 3);
-      for (int i = 0; i < area.sub_god_object_count; ++i)
-      {
-        contact.sub_god_objects.row(i) = area.positions[i].transpose();
-      }
-      contact.overlap_area = area.overlap_area;
-      view.contacts.push_back(std::move(contact));
+      view.bodies.push_back(area.body >= 0 && area.body < world_->bodyCount() ? world_->scene().bodies[area.body].name
+                                                                              : std::string());
     }
     return view;
   }
@@ -487,6 +488,43 @@ class World
   std::unique_ptr<GodFingerWorld> world_;
   mutable std::mutex mutex_;
 };
+
+// The getter of a vector member: a fresh array each read (numpy's own, not a view of the state).
+template <typename View>
+auto vectorGetter(Eigen::Vector3d View::*member)
+{
+  return [member](const View& view) { return array3(view.*member); };
+}
+
+ContactView contactView(const FingerView& finger, std::size_t c)
+{
+  const WorldContactArea& area = finger.areas[c];
+  ContactView contact;
+  contact.body_index = area.body;
+  contact.body = finger.bodies[c];
+  contact.point = area.point;
+  contact.normal = area.normal;
+  contact.depth = area.depth;
+  contact.radius = area.radius;
+  contact.feature = featureKindName(area.feature);
+  contact.sub_god_objects.resize(area.sub_god_object_count, 3);
+  for (int i = 0; i < area.sub_god_object_count; ++i)
+  {
+    contact.sub_god_objects.row(i) = area.positions[i].transpose();
+  }
+  contact.overlap_area = area.overlap_area;
+  return contact;
+}
+
+std::vector<ContactView> contactViews(const FingerView& finger)
+{
+  std::vector<ContactView> contacts;
+  for (std::size_t c = 0; c < finger.areas.size(); ++c)
+  {
+    contacts.push_back(contactView(finger, c));
+  }
+  return contacts;
+}
 
 std::string vectorText(const Eigen::Vector3d& v)
 {
@@ -502,8 +540,8 @@ void bindWorld(py::module_& module)
                           "One contact area of a finger (physics/world_state.h WorldContactArea). m, world frame.")
       .def_readonly("body", &ContactView::body, "the body touched (its name)")
       .def_readonly("body_index", &ContactView::body_index, "its index in World.bodies")
-      .def_readonly("point", &ContactView::point, "c_p (m, world)")
-      .def_readonly("normal", &ContactView::normal, "c_n (world, unit, out of the body)")
+      .def_property_readonly("point", vectorGetter(&ContactView::point), "c_p (m, world)")
+      .def_property_readonly("normal", vectorGetter(&ContactView::normal), "c_n (world, unit, out of the body)")
       .def_readonly("depth", &ContactView::depth, "m, > 0 when penetrating")
       .def_readonly("radius", &ContactView::radius, "r (m), Eq. 1 (0 for the god_object and soft_finger models)")
       .def_readonly("feature", &ContactView::feature, "where c_p lies: face, edge or vertex")
@@ -517,39 +555,39 @@ void bindWorld(py::module_& module)
   py::class_<FingerView>(module, "Finger",
                          "A finger's state after the last step (physics/world_state.h InterfaceState). m, N, world "
                          "frame; quaternions (x, y, z, w).")
-      .def_readonly("position", &FingerView::position, "p_GO: the proxy (god-object) (m, world)")
+      .def_property_readonly("position", vectorGetter(&FingerView::position), "p_GO: the proxy (god-object) (m, world)")
       .def_readonly("orientation", &FingerView::orientation,
                     "the proxy's orientation (x, y, z, w) of an oriented finger, else None")
-      .def_readonly("velocity", &FingerView::velocity, "the proxy's velocity (m/s, world)")
-      .def_readonly("target", &FingerView::target, "p_I: the target set (the device in the world) (m)")
+      .def_property_readonly("velocity", vectorGetter(&FingerView::velocity), "the proxy's velocity (m/s, world)")
+      .def_property_readonly("target", vectorGetter(&FingerView::target), "p_I: the target set (the device in the world) (m)")
       .def_readonly("target_orientation", &FingerView::target_orientation,
                     "the target's orientation (x, y, z, w) of an oriented finger, else None")
-      .def_readonly("force", &FingerView::force, "the force on the hand (N, world): minus the coupling's on the proxy")
-      .def_readonly("torque", &FingerView::torque, "the torque on the hand (N m, world; oriented fingers)")
+      .def_property_readonly("force", vectorGetter(&FingerView::force), "the force on the hand (N, world): minus the coupling's on the proxy")
+      .def_property_readonly("torque", vectorGetter(&FingerView::torque), "the torque on the hand (N m, world; oriented fingers)")
       .def_readonly("saturated", &FingerView::saturated, "the coupling force hit max_force")
       .def_readonly("oriented", &FingerView::oriented, "the finger was given an orientation (6-DOF)")
-      .def_readonly("contacts", &FingerView::contacts, "the contact areas (one per body touched, at most 4)")
+      .def_property_readonly("contacts", &contactViews, "the contact areas (one per body touched, at most 4)")
       .def_property_readonly(
           "contact",
-          [](const FingerView& f) -> py::object { return f.contacts.empty() ? py::none() : py::cast(f.contacts[0]); },
+          [](const FingerView& f) -> py::object { return f.areas.empty() ? py::none() : py::cast(contactView(f, 0)); },
           "the first contact, or None when the finger touches nothing")
       .def_readonly("overlap_area", &FingerView::overlap_area, "m^2: overlap of its areas with other fingers'")
-      .def_readonly("overlap_push", &FingerView::overlap_push, "N: the push apart it gets in the next step")
+      .def_property_readonly("overlap_push", vectorGetter(&FingerView::overlap_push), "N: the push apart it gets in the next step")
       .def("__repr__", [](const FingerView& f)
            { return "<god_finger.Finger at " + vectorText(f.position) + ", force " + vectorText(f.force) + " N, " +
-                    std::to_string(f.contacts.size()) + " contacts>"; });
+                    std::to_string(f.areas.size()) + " contacts>"; });
 
   py::class_<BodyView>(module, "Body", "A body's state (physics/world_state.h BodyState). m, world frame.")
       .def_readonly("name", &BodyView::name)
       .def_readonly("index", &BodyView::index)
       .def_readonly("static", &BodyView::is_static, "fixed to the world")
       .def_readonly("mass", &BodyView::mass, "kg (0 when static)")
-      .def_readonly("position", &BodyView::position, "the link frame's origin (m, world)")
+      .def_property_readonly("position", vectorGetter(&BodyView::position), "the link frame's origin (m, world)")
       .def_readonly("orientation", &BodyView::orientation, "the link frame's orientation (x, y, z, w)")
       .def_readonly("pose", &BodyView::pose, "the link frame in the world, a 4x4 homogeneous matrix")
-      .def_readonly("center_of_mass", &BodyView::center_of_mass, "m, world")
-      .def_readonly("linear_velocity", &BodyView::linear_velocity, "of the centre of mass (m/s, world)")
-      .def_readonly("angular_velocity", &BodyView::angular_velocity, "rad/s, world")
+      .def_property_readonly("center_of_mass", vectorGetter(&BodyView::center_of_mass), "m, world")
+      .def_property_readonly("linear_velocity", vectorGetter(&BodyView::linear_velocity), "of the centre of mass (m/s, world)")
+      .def_property_readonly("angular_velocity", vectorGetter(&BodyView::angular_velocity), "rad/s, world")
       .def_readonly("awake", &BodyView::awake, "simulated in the next step (False: asleep, WorldParams sleep)")
       .def_readonly("left_world", &BodyView::left_world,
                     "times it left the world's bounds and was put back at its initial pose")
@@ -595,7 +633,7 @@ void bindWorld(py::module_& module)
            "finger(finger) -> Finger: the proxy's pose, the force on the hand, the contacts, after the last step.")
       .def_property_readonly("fingers", &World::fingerCount, "how many fingers were added")
       .def("step", &World::step, py::arg("n") = 1,
-           "step(n=1): n fixed steps of time_step (s). The GIL is released while it steps.")
+           "step(n=1): n fixed steps of time_step (s). For n > 1 the GIL is released while it steps.")
       .def_property_readonly("time", &World::time, "world time (s)")
       .def_property_readonly("steps", &World::steps, "steps taken since the world was made or reset")
       .def("reset", &World::reset,
