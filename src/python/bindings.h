@@ -12,8 +12,8 @@
 
 #include "god_finger/support/parameter_table.h"
 
-#include <Eigen/Geometry>
 #include <pybind11/pybind11.h>
+#include <Eigen/Geometry>
 #include <set>
 #include <string>
 

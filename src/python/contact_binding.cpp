@@ -8,10 +8,10 @@
 #include "god_finger/mesh_io/mesh_loader.h"
 #include "god_finger/support/input_error.h"
 
-#include <memory>
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <memory>
 
 namespace god_finger::python
 {
@@ -121,7 +121,7 @@ struct ContactAreaView
   std::vector<std::string> stops;
 };
 
-ContactAreaView contactArea(const Mesh& mesh, const py::handle& point_object, const py::handle& normal_object,
+ContactAreaView contactArea(const Mesh& mesh, const py::object& point_object, const py::object& normal_object,
                             const py::object& coupling_object, const py::object& force_object,
                             const py::object& stiffness_object, double depth, const py::object& reference_object,
                             const py::kwargs& kwargs)
@@ -215,9 +215,8 @@ void bindContact(py::module_& module)
                                           "(geometry/triangle_mesh.h).\n"
                                           "Mesh(vertices, triangles): from an (n, 3) array of vertices (m) and an (m, "
                                           "3) array of vertex indices; load_mesh(path) reads a file.")
-      .def(py::init(
-               [](const py::handle& vertices, const py::handle& triangles)
-               { return std::make_shared<Mesh>(meshFromArrays(vertices, triangles)); }),
+      .def(py::init([](const py::object& vertices, const py::object& triangles)
+                    { return std::make_shared<Mesh>(meshFromArrays(vertices, triangles)); }),
            py::arg("vertices"), py::arg("triangles"))
       .def_property_readonly(
           "vertices", [](const Mesh& mesh) { return rows(mesh.mesh().vertices()); },
@@ -258,7 +257,7 @@ void bindContact(py::module_& module)
           "non-manifold, inconsistent winding edges; components)")
       .def(
           "closest",
-          [](const Mesh& mesh, const py::handle& point)
+          [](const Mesh& mesh, const py::object& point)
           {
             const SurfaceLocation location = mesh.locator().closest(vector3(point, "point"));
             py::dict out;

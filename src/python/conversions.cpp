@@ -2,9 +2,9 @@
 
 #include "god_finger/support/input_error.h"
 
+#include <pybind11/numpy.h>
 #include <cmath>
 #include <cstring>
-#include <pybind11/numpy.h>
 
 // numpy's C API, in this file only (its table is static here; initNumpy fills it): a vector of
 // three as an array costs a tenth of a microsecond this way, a third through pybind11's.
@@ -180,8 +180,7 @@ ParameterValue parameterValue(const py::handle& value, const std::string& name)
 }
 }  // namespace
 
-MapParameterSource parameterSource(const py::dict& kwargs, const std::set<std::string>& known,
-                                   const std::string& owner)
+MapParameterSource parameterSource(const py::dict& kwargs, const std::set<std::string>& known, const std::string& owner)
 {
   MapParameterSource source;
   for (const auto& item : kwargs)

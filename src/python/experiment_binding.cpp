@@ -18,8 +18,8 @@ namespace
 // What run_experiment's keyword arguments may name besides experimentOptionTable()'s rows.
 const std::set<std::string>& extraOptions()
 {
-  static const std::set<std::string> names = {"seed",          "fast",          "pad_solver", "overlap_stiffness",
-                                              "solver_iterations", "sample_period", "csv",        "scenes"};
+  static const std::set<std::string> names = {
+      "seed", "fast", "pad_solver", "overlap_stiffness", "solver_iterations", "sample_period", "csv", "scenes"};
   return names;
 }
 

@@ -15,8 +15,9 @@ void bindErrors(py::module_& module)
       "A bad file, parameter or argument (a subclass of ValueError), with the C++ message: one line naming the\n"
       "file, body or parameter and the problem. The world it came from is unchanged.";
   static py::exception<ProxyInsideBodyError> inside(module, "ProxyInsideBodyError", error.ptr());
-  inside.doc() = "A finger added inside a body (its message names the body and the position); "
-                 "add_finger(..., allow_inside=True) allows it.";
+  inside.doc() =
+      "A finger added inside a body (its message names the body and the position); "
+      "add_finger(..., allow_inside=True) allows it.";
   static py::exception<ResourceLimitError> limit(module, "ResourceLimitError", error.ptr());
   limit.doc() = "A file too large for the memory left (its message names the file, the count and the limit).";
   py::register_exception_translator(

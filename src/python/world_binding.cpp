@@ -11,12 +11,12 @@
 #include "god_finger/scene/scene_file.h"
 #include "god_finger/support/input_error.h"
 
-#include <memory>
-#include <mutex>
-#include <cstring>
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <cstring>
+#include <memory>
+#include <mutex>
 
 namespace god_finger::python
 {
@@ -133,7 +133,7 @@ class World
     world_ = std::make_unique<GodFingerWorld>(description, params_);
   }
 
-  int addFinger(const py::handle& position, const py::object& orientation, const py::object& coupling,
+  int addFinger(const py::object& position, const py::object& orientation, const py::object& coupling,
                 bool allow_inside)
   {
     const Eigen::Vector3d start = vector3(position, "position");
@@ -149,8 +149,9 @@ class World
       {
         throw InputError("coupling must be a dict of " + names(rowNames(couplingParameterTable())));
       }
-      readRows(parameterSource(coupling.cast<py::dict>(), rowNames(couplingParameterTable()), "the coupling's parameters"),
-               couplingParameterTable(), &profile);
+      readRows(
+          parameterSource(coupling.cast<py::dict>(), rowNames(couplingParameterTable()), "the coupling's parameters"),
+          couplingParameterTable(), &profile);
     }
     const std::lock_guard<std::mutex> lock(mutex_);
     const int finger = world_->addInterface(start, profile, allow_inside);
@@ -161,13 +162,14 @@ class World
     return finger;
   }
 
-  void setTarget(int finger, const py::handle& position, const py::object& orientation, const py::object& velocity)
+  void setTarget(int finger, const py::object& position, const py::object& orientation, const py::object& velocity)
   {
     const Eigen::Vector3d target = vector3(position, "position");
     if (!orientation.is_none() && !velocity.is_none())
     {
-      throw InputError("set_target: give orientation or velocity, not both (an oriented finger's velocity is the "
-                       "difference of its targets over a step)");
+      throw InputError(
+          "set_target: give orientation or velocity, not both (an oriented finger's velocity is the "
+          "difference of its targets over a step)");
     }
     const std::lock_guard<std::mutex> lock(mutex_);
     checkFinger(finger);
@@ -308,7 +310,7 @@ class World
                      ")");
   }
 
-  void applyWrench(const std::string& name, const py::handle& force, const py::handle& torque)
+  void applyWrench(const std::string& name, const py::object& force, const py::object& torque)
   {
     const Eigen::Vector3d f = vector3(force, "force");
     const Eigen::Vector3d t = vector3(torque, "torque");
@@ -316,8 +318,8 @@ class World
     world_->applyBodyWrench(bodyIndex(name), f, t);
   }
 
-  std::vector<std::string> spawn(const std::string& file, const std::string& name, const py::handle& xyz,
-                                 const py::handle& rpy, const py::object& fixed)
+  std::vector<std::string> spawn(const std::string& file, const std::string& name, const py::object& xyz,
+                                 const py::object& rpy, const py::object& fixed)
   {
     ObjectPlacement placement;
     placement.name = name;
@@ -549,8 +551,12 @@ void bindWorld(py::module_& module)
                     "(n, 3) array: the active sub-god-objects' positions (m, world)")
       .def_readonly("overlap_area", &ContactView::overlap_area,
                     "m^2: its overlap with other fingers' areas on this body (god_finger model)")
-      .def("__repr__", [](const ContactView& c)
-           { return "<god_finger.Contact on " + c.body + " at " + vectorText(c.point) + ", r " + std::to_string(c.radius) + " m>"; });
+      .def("__repr__",
+           [](const ContactView& c)
+           {
+             return "<god_finger.Contact on " + c.body + " at " + vectorText(c.point) + ", r " +
+                    std::to_string(c.radius) + " m>";
+           });
 
   py::class_<FingerView>(module, "Finger",
                          "A finger's state after the last step (physics/world_state.h InterfaceState). m, N, world "
@@ -559,11 +565,14 @@ void bindWorld(py::module_& module)
       .def_readonly("orientation", &FingerView::orientation,
                     "the proxy's orientation (x, y, z, w) of an oriented finger, else None")
       .def_property_readonly("velocity", vectorGetter(&FingerView::velocity), "the proxy's velocity (m/s, world)")
-      .def_property_readonly("target", vectorGetter(&FingerView::target), "p_I: the target set (the device in the world) (m)")
+      .def_property_readonly("target", vectorGetter(&FingerView::target),
+                             "p_I: the target set (the device in the world) (m)")
       .def_readonly("target_orientation", &FingerView::target_orientation,
                     "the target's orientation (x, y, z, w) of an oriented finger, else None")
-      .def_property_readonly("force", vectorGetter(&FingerView::force), "the force on the hand (N, world): minus the coupling's on the proxy")
-      .def_property_readonly("torque", vectorGetter(&FingerView::torque), "the torque on the hand (N m, world; oriented fingers)")
+      .def_property_readonly("force", vectorGetter(&FingerView::force),
+                             "the force on the hand (N, world): minus the coupling's on the proxy")
+      .def_property_readonly("torque", vectorGetter(&FingerView::torque),
+                             "the torque on the hand (N m, world; oriented fingers)")
       .def_readonly("saturated", &FingerView::saturated, "the coupling force hit max_force")
       .def_readonly("oriented", &FingerView::oriented, "the finger was given an orientation (6-DOF)")
       .def_property_readonly("contacts", &contactViews, "the contact areas (one per body touched, at most 4)")
@@ -572,10 +581,14 @@ void bindWorld(py::module_& module)
           [](const FingerView& f) -> py::object { return f.areas.empty() ? py::none() : py::cast(contactView(f, 0)); },
           "the first contact, or None when the finger touches nothing")
       .def_readonly("overlap_area", &FingerView::overlap_area, "m^2: overlap of its areas with other fingers'")
-      .def_property_readonly("overlap_push", vectorGetter(&FingerView::overlap_push), "N: the push apart it gets in the next step")
-      .def("__repr__", [](const FingerView& f)
-           { return "<god_finger.Finger at " + vectorText(f.position) + ", force " + vectorText(f.force) + " N, " +
-                    std::to_string(f.areas.size()) + " contacts>"; });
+      .def_property_readonly("overlap_push", vectorGetter(&FingerView::overlap_push),
+                             "N: the push apart it gets in the next step")
+      .def("__repr__",
+           [](const FingerView& f)
+           {
+             return "<god_finger.Finger at " + vectorText(f.position) + ", force " + vectorText(f.force) + " N, " +
+                    std::to_string(f.areas.size()) + " contacts>";
+           });
 
   py::class_<BodyView>(module, "Body", "A body's state (physics/world_state.h BodyState). m, world frame.")
       .def_readonly("name", &BodyView::name)
@@ -586,12 +599,14 @@ void bindWorld(py::module_& module)
       .def_readonly("orientation", &BodyView::orientation, "the link frame's orientation (x, y, z, w)")
       .def_readonly("pose", &BodyView::pose, "the link frame in the world, a 4x4 homogeneous matrix")
       .def_property_readonly("center_of_mass", vectorGetter(&BodyView::center_of_mass), "m, world")
-      .def_property_readonly("linear_velocity", vectorGetter(&BodyView::linear_velocity), "of the centre of mass (m/s, world)")
+      .def_property_readonly("linear_velocity", vectorGetter(&BodyView::linear_velocity),
+                             "of the centre of mass (m/s, world)")
       .def_property_readonly("angular_velocity", vectorGetter(&BodyView::angular_velocity), "rad/s, world")
       .def_readonly("awake", &BodyView::awake, "simulated in the next step (False: asleep, WorldParams sleep)")
       .def_readonly("left_world", &BodyView::left_world,
                     "times it left the world's bounds and was put back at its initial pose")
-      .def("__repr__", [](const BodyView& b) { return "<god_finger.Body " + b.name + " at " + vectorText(b.position) + ">"; });
+      .def("__repr__",
+           [](const BodyView& b) { return "<god_finger.Body " + b.name + " at " + vectorText(b.position) + ">"; });
 
   py::class_<JointView>(module, "Joint", "An articulated object's joint (physics/world_state.h JointState).")
       .def_readonly("name", &JointView::name)
@@ -601,19 +616,20 @@ void bindWorld(py::module_& module)
       .def("__repr__", [](const JointView& j)
            { return "<god_finger.Joint " + j.name + " (" + j.kind + ") at " + std::to_string(j.position) + ">"; });
 
-  py::class_<World>(module, "World",
-                    "A Bullet world of rigid (and soft) bodies touched by god-object proxies with god-finger contact\n"
-                    "areas (physics/god_finger_world.h). Fixed time step, deterministic: the same calls give the same\n"
-                    "trajectory bit for bit, the same as the C++ world's.\n\n"
-                    "World(scene, model='god_finger', **params)\n"
-                    "  scene: any file the loader takes (scene/scene_file.h): a URDF scene, an object URDF whose root\n"
-                    "    link is the body, a xacro file, a scene list (.yaml), soft bodies in them.\n"
-                    "  model: god_object, god_finger or soft_finger.\n"
-                    "  params: the world's parameters by their table names (README, 'Parameters': r_max, d0, alpha,\n"
-                    "    n_sgo, tau_a, friction, walk, pad_solver, solver_iterations, proxy_mass, ...), the coupling's\n"
-                    "    default (coupling_stiffness N/m, coupling_damping N s/m, max_force N) and time_step (s,\n"
-                    "    default 0.001). Checked as everywhere: god_finger.Error names the first bad one.\n"
-                    "Frames: z up, SI units; quaternions (x, y, z, w).")
+  py::class_<World>(
+      module, "World",
+      "A Bullet world of rigid (and soft) bodies touched by god-object proxies with god-finger contact\n"
+      "areas (physics/god_finger_world.h). Fixed time step, deterministic: the same calls give the same\n"
+      "trajectory bit for bit, the same as the C++ world's.\n\n"
+      "World(scene, model='god_finger', **params)\n"
+      "  scene: any file the loader takes (scene/scene_file.h): a URDF scene, an object URDF whose root\n"
+      "    link is the body, a xacro file, a scene list (.yaml), soft bodies in them.\n"
+      "  model: god_object, god_finger or soft_finger.\n"
+      "  params: the world's parameters by their table names (docs/parameters.md: r_max, d0, alpha,\n"
+      "    n_sgo, tau_a, friction, walk, pad_solver, solver_iterations, proxy_mass, ...), the coupling's\n"
+      "    default (coupling_stiffness N/m, coupling_damping N s/m, max_force N) and time_step (s,\n"
+      "    default 0.001). Checked as everywhere: god_finger.Error names the first bad one.\n"
+      "Frames: z up, SI units; quaternions (x, y, z, w).")
       .def(py::init<const std::string&, const std::string&, const py::kwargs&>(), py::arg("scene"),
            py::arg("model") = "god_finger")
       .def("add_finger", &World::addFinger, py::arg("position"), py::arg("orientation") = py::none(),
@@ -647,11 +663,13 @@ void bindWorld(py::module_& module)
       .def("body", &World::body, py::arg("name"), "body(name) -> Body: its pose, velocities, centre of mass, awake")
       .def_property_readonly("joints", &World::joints, "the joints' names (articulated objects)")
       .def("joint", &World::joint, py::arg("name"), "joint(name) -> Joint: its position and velocity")
-      .def("apply_wrench", &World::applyWrench, py::arg("body"), py::arg("force"), py::arg("torque") = Eigen::Vector3d::Zero().eval(),
+      .def("apply_wrench", &World::applyWrench, py::arg("body"), py::arg("force"),
+           py::arg("torque") = Eigen::Vector3d::Zero().eval(),
            "apply_wrench(body, force, torque=(0, 0, 0)): a force (N, world, at the centre of mass) and torque (N m, "
            "world)\non a dynamic body during the next step only; ignored for a static body.")
-      .def("spawn", &World::spawn, py::arg("file"), py::arg("name") = "", py::arg("xyz") = Eigen::Vector3d::Zero().eval(),
-           py::arg("rpy") = Eigen::Vector3d::Zero().eval(), py::arg("fixed") = py::none(),
+      .def("spawn", &World::spawn, py::arg("file"), py::arg("name") = "",
+           py::arg("xyz") = Eigen::Vector3d::Zero().eval(), py::arg("rpy") = Eigen::Vector3d::Zero().eval(),
+           py::arg("fixed") = py::none(),
            "spawn(file, name='', xyz=(0, 0, 0), rpy=(0, 0, 0), fixed=None) -> list of warnings\n\n"
            "Adds an object file (a URDF of either form, or xacro) with its frame at xyz (m) and rpy (rad, URDF's), "
            "named\n`name` (default: the file's; several links: NAME/LINK). fixed: None keeps the file's own (a body "
@@ -665,8 +683,11 @@ void bindWorld(py::module_& module)
       .def_property_readonly("warnings", &World::warnings,
                              "what the loader and the world found about the scene (one line each)")
       .def_property_readonly("rejected_targets", &World::rejectedTargets, "targets the C++ world ignored")
-      .def("__repr__", [](const World& w)
-           { return "<god_finger.World " + w.path() + ", " + std::to_string(w.bodies().size()) + " bodies, model " +
-                    w.contactModel() + ">"; });
+      .def("__repr__",
+           [](const World& w)
+           {
+             return "<god_finger.World " + w.path() + ", " + std::to_string(w.bodies().size()) + " bodies, model " +
+                    w.contactModel() + ">";
+           });
 }
 }  // namespace god_finger::python
