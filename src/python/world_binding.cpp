@@ -40,10 +40,10 @@ struct ContactView
 struct FingerView
 {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
-  py::object orientation;
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // meaningful when oriented
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d target = Eigen::Vector3d::Zero();
-  py::object target_orientation;
+  Eigen::Quaterniond target_orientation = Eigen::Quaterniond::Identity();
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
   Eigen::Vector3d torque = Eigen::Vector3d::Zero();
   bool saturated = false;
@@ -187,11 +187,14 @@ class World
     }
   }
 
-  FingerView finger(int finger) const
+  // Made in place on the heap: Python takes it as it is (no move into a holder).
+  std::unique_ptr<FingerView> finger(int finger) const
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     checkFinger(finger);
-    return fingerView(world_->interfaceState(finger));
+    auto view = std::make_unique<FingerView>();
+    fillFingerView(world_->interfaceState(finger), view.get());
+    return view;
   }
 
   void step(long count)
@@ -465,6 +468,13 @@ class World
   FingerView fingerView(const InterfaceState& state) const
   {
     FingerView view;
+    fillFingerView(state, &view);
+    return view;
+  }
+
+  void fillFingerView(const InterfaceState& state, FingerView* out) const
+  {
+    FingerView& view = *out;
     view.position = state.proxy_position;
     view.velocity = state.proxy_velocity;
     view.target = state.interface_position;
@@ -472,8 +482,8 @@ class World
     view.torque = state.user_torque;
     view.saturated = state.saturated;
     view.oriented = state.oriented;
-    view.orientation = state.oriented ? quaternionArray(state.proxy_orientation) : py::none();
-    view.target_orientation = state.oriented ? quaternionArray(state.interface_orientation) : py::none();
+    view.orientation = state.proxy_orientation;
+    view.target_orientation = state.interface_orientation;
     view.overlap_area = state.overlap_area;
     view.overlap_push = state.overlap_push;
     view.areas.assign(state.contacts.begin(), state.contacts.begin() + state.contact_count);
@@ -482,7 +492,6 @@ class World
       view.bodies.push_back(area.body >= 0 && area.body < world_->bodyCount() ? world_->scene().bodies[area.body].name
                                                                               : std::string());
     }
-    return view;
   }
 
   std::string path_;
@@ -562,13 +571,17 @@ void bindWorld(py::module_& module)
                          "A finger's state after the last step (physics/world_state.h InterfaceState). m, N, world "
                          "frame; quaternions (x, y, z, w).")
       .def_property_readonly("position", vectorGetter(&FingerView::position), "p_GO: the proxy (god-object) (m, world)")
-      .def_readonly("orientation", &FingerView::orientation,
-                    "the proxy's orientation (x, y, z, w) of an oriented finger, else None")
+      .def_property_readonly(
+          "orientation",
+          [](const FingerView& f) { return f.oriented ? quaternionArray(f.orientation) : py::none(); },
+          "the proxy's orientation (x, y, z, w) of an oriented finger, else None")
       .def_property_readonly("velocity", vectorGetter(&FingerView::velocity), "the proxy's velocity (m/s, world)")
       .def_property_readonly("target", vectorGetter(&FingerView::target),
                              "p_I: the target set (the device in the world) (m)")
-      .def_readonly("target_orientation", &FingerView::target_orientation,
-                    "the target's orientation (x, y, z, w) of an oriented finger, else None")
+      .def_property_readonly(
+          "target_orientation",
+          [](const FingerView& f) { return f.oriented ? quaternionArray(f.target_orientation) : py::none(); },
+          "the target's orientation (x, y, z, w) of an oriented finger, else None")
       .def_property_readonly("force", vectorGetter(&FingerView::force),
                              "the force on the hand (N, world): minus the coupling's on the proxy")
       .def_property_readonly("torque", vectorGetter(&FingerView::torque),
