@@ -39,21 +39,6 @@ double firstExit(double rho, double delta, double level)
   return delta + std::acos(std::min(1.0, level / rho));
 }
 
-// Why a surface of normal `normal` cannot be entered (kDistanceReached: it can).
-WalkStop blockedBy(const Eigen::Vector3d& normal, const WalkLimits& limits)
-{
-  const double c = limits.normal_sign * normal.dot(limits.contact_normal);
-  if (!(c > limits.cos_max_angle))
-  {
-    return WalkStop::kAngleLimit;
-  }
-  if (!(c > limits.cos_friction))
-  {
-    return WalkStop::kFrictionLimit;
-  }
-  return WalkStop::kDistanceReached;
-}
-
 // True when the allowed set of a circle (the normal turning in one plane) is one arc about the
 // start no longer than a half turn, so that a walk of at most a half turn that ends inside it
 // never left it: each level is at least 0 (limits of at most 90 degrees) or at most -1 (no limit
@@ -203,11 +188,10 @@ WalkResult walkCylinder(double radius, double half_length, CylinderState state, 
 {
   // The start's own surface may be beyond the limits (a contact normal far from it): dropped,
   // as the mesh walk drops a start face beyond them.
-  const WalkStop start_blocked =
-      blockedBy(state.cap != 0 ? Eigen::Vector3d(0.0, 0.0, state.cap) : state.outward(), limits);
-  if (start_blocked != WalkStop::kDistanceReached)
+  if (const std::optional<WalkStop> start_blocked =
+          surfaceLimit(state.cap != 0 ? Eigen::Vector3d(0.0, 0.0, state.cap) : state.outward(), limits))
   {
-    return finish(state.point, 0.0, 0, start_blocked);
+    return finish(state.point, 0.0, 0, *start_blocked);
   }
   // The direction along the surface; none (a direction along the normal): dropped.
   const Eigen::Vector2d on_cap(direction.x(), direction.y());
@@ -268,10 +252,10 @@ WalkResult walkCylinder(double radius, double half_length, CylinderState state, 
           const double from = std::remainder(state.theta - beta, 2.0 * M_PI);
           limit = limitedArc(c_xy.norm(), turn > 0.0 ? -from : from, 1.0 / std::abs(turn), limits, &limit_stop);
         }
-        else if (blockedBy(state.outward(), limits) != WalkStop::kDistanceReached)
+        else if (const std::optional<WalkStop> blocked = surfaceLimit(state.outward(), limits))
         {
           limit = 0.0;
-          limit_stop = blockedBy(state.outward(), limits);
+          limit_stop = *blocked;
         }
         state.setTheta(state.theta + turn * std::min(candidate, limit));
       }
@@ -289,11 +273,10 @@ WalkResult walkCylinder(double radius, double half_length, CylinderState state, 
       }
       // The rim: onto the cap, if it may be entered and rims are left.
       const int cap = state.along.y() > 0.0 ? 1 : -1;
-      const WalkStop blocked = blockedBy(Eigen::Vector3d(0.0, 0.0, cap), limits);
-      if (blocked != WalkStop::kDistanceReached || crossings >= kMaxRims)
+      const std::optional<WalkStop> blocked = surfaceLimit(Eigen::Vector3d(0.0, 0.0, cap), limits);
+      if (blocked || crossings >= kMaxRims)
       {
-        return finish(state.point, walked, crossings,
-                      blocked != WalkStop::kDistanceReached ? blocked : WalkStop::kCrossingCap);
+        return finish(state.point, walked, crossings, blocked ? *blocked : WalkStop::kCrossingCap);
       }
       state.heading = state.along.x() * state.circumferential() - std::abs(state.along.y()) * state.outward();
       state.cap = cap;
@@ -315,11 +298,10 @@ WalkResult walkCylinder(double radius, double half_length, CylinderState state, 
       }
       // The rim: onto the mantle, going away from the cap.
       state.setTheta(std::atan2(state.point.y(), state.point.x()));
-      const WalkStop blocked = blockedBy(state.outward(), limits);
-      if (blocked != WalkStop::kDistanceReached || crossings >= kMaxRims)
+      const std::optional<WalkStop> blocked = surfaceLimit(state.outward(), limits);
+      if (blocked || crossings >= kMaxRims)
       {
-        return finish(state.point, walked, crossings,
-                      blocked != WalkStop::kDistanceReached ? blocked : WalkStop::kCrossingCap);
+        return finish(state.point, walked, crossings, blocked ? *blocked : WalkStop::kCrossingCap);
       }
       state.along = Eigen::Vector2d(state.heading.dot(state.circumferential()),
                                     -state.cap * std::max(0.0, state.heading.dot(state.outward())))

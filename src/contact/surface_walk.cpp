@@ -91,21 +91,6 @@ bool carryDirection(const Eigen::Vector3d& direction, const Eigen::Vector3d& fro
   return true;
 }
 
-// Why a face cannot be entered (kDistanceReached: it can).
-WalkStop faceBlocked(const Eigen::Vector3d& face_normal, const WalkLimits& limits)
-{
-  const double c = limits.normal_sign * face_normal.dot(limits.contact_normal);
-  if (!(c > limits.cos_max_angle))
-  {
-    return WalkStop::kAngleLimit;
-  }
-  if (!(c > limits.cos_friction))
-  {
-    return WalkStop::kFrictionLimit;
-  }
-  return WalkStop::kDistanceReached;
-}
-
 // How far inside face `face` a direction points from a point whose barycentric coordinates
 // listed in `zero_mask` are zero: the smallest sine of the angle between the direction and
 // the edges it must not cross. >= 0 means the direction enters the face.
@@ -203,6 +188,214 @@ WalkResult finish(const TriangleMesh& mesh, int face, const Eigen::Vector3d& bar
   result.crossings = crossings;
   result.stop = stop;
   return result;
+}
+
+// Where the walk leaves its face: the edge opposite the first barycentric coordinate to reach
+// zero along r (index -1: none falls, the direction runs along the face's edges), after t
+// metres, and every coordinate's rate of change (1/m).
+struct ExitEdge
+{
+  int index = -1;
+  double t = std::numeric_limits<double>::infinity();
+  double rate[3] = {0.0, 0.0, 0.0};
+};
+
+// Algorithm 1's loop state: where the walk is (a face and barycentric coordinates on it), its
+// direction in the face's plane, and how far it went.
+struct Walk
+{
+  int face = -1;
+  // Barycentric coordinates as plain doubles: stores at a runtime index followed by vector
+  // loads of the same bytes (an Eigen vector) stall store forwarding on every crossing.
+  double lambda[3] = {0.0, 0.0, 0.0};
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // unit, in the face's plane
+  // The current face's gradients; an edge crossing computes the next face's anyway and hands
+  // them on, so each face entered costs one faceGradients().
+  FaceGradients gradients;
+  double walked = 0.0;
+  double remaining = 0.0;
+  int crossings = 0;
+  int stalled = 0;  // crossings in a row without progress
+
+  Eigen::Vector3d coordinates() const
+  {
+    return Eigen::Vector3d(lambda[0], lambda[1], lambda[2]);
+  }
+
+  // The walk stops where it is.
+  WalkResult stopHere(const TriangleMesh& mesh, WalkStop stop) const
+  {
+    return finish(mesh, face, coordinates(), walked, crossings, stop);
+  }
+
+  // The exit lies beyond the distance left: the walk ends inside the face.
+  WalkResult endInsideFace(const TriangleMesh& mesh, const ExitEdge& exit);
+
+  // Onto the exit edge: the exiting coordinate zero, the others moved and renormalised.
+  void moveOntoExitEdge(const ExitEdge& exit);
+
+  // Whether the point on exit edge `exit_index` is on one of its ends too: that end's local
+  // vertex, or -1.
+  int vertexReached(int exit_index) const
+  {
+    const int a_local = (exit_index + 1) % 3;
+    const int b_local = (exit_index + 2) % 3;
+    if (lambda[a_local] <= kVertexTolerance)
+    {
+      return b_local;
+    }
+    if (lambda[b_local] <= kVertexTolerance)
+    {
+      return a_local;
+    }
+    return -1;
+  }
+
+  // Onto `next` (its local coordinates, its gradients), with the direction carried there.
+  void enter(int next, const Eigen::Vector3d& next_lambda, const Eigen::Vector3d& carried,
+             const FaceGradients& next_gradients)
+  {
+    face = next;
+    for (int j = 0; j < 3; ++j)
+    {
+      lambda[j] = next_lambda[j];
+    }
+    r = carried;
+    gradients = next_gradients;
+    ++crossings;
+  }
+};
+
+// The smallest lambda_j / -rate_j over the coordinates that fall faster than the parallel
+// tolerance, compared as cross products so that only the winner is divided.
+inline ExitEdge findExitEdge(const Walk& walk)
+{
+  ExitEdge exit;
+  double numerator_of_exit = 1.0;
+  double denominator_of_exit = 0.0;
+  for (int j = 0; j < 3; ++j)
+  {
+    exit.rate[j] = walk.gradients.gradient[j].dot(walk.r);
+    if (fallsAcross(walk.gradients, j, exit.rate[j]))
+    {
+      const double numerator = std::max(walk.lambda[j], 0.0);
+      if (exit.index < 0 || numerator * denominator_of_exit < numerator_of_exit * -exit.rate[j])
+      {
+        numerator_of_exit = numerator;
+        denominator_of_exit = -exit.rate[j];
+        exit.index = j;
+      }
+    }
+  }
+  if (exit.index >= 0)
+  {
+    exit.t = numerator_of_exit / denominator_of_exit;
+  }
+  return exit;
+}
+
+WalkResult Walk::endInsideFace(const TriangleMesh& mesh, const ExitEdge& exit)
+{
+  for (int j = 0; j < 3; ++j)
+  {
+    lambda[j] += remaining * exit.rate[j];
+  }
+  const Eigen::Vector3d reached = coordinates().cwiseMax(0.0);
+  return finish(mesh, face, reached / reached.sum(), walked + remaining, crossings, WalkStop::kDistanceReached);
+}
+
+void Walk::moveOntoExitEdge(const ExitEdge& exit)
+{
+  const double l0 = exit.index == 0 ? 0.0 : std::max(lambda[0] + exit.t * exit.rate[0], 0.0);
+  const double l1 = exit.index == 1 ? 0.0 : std::max(lambda[1] + exit.t * exit.rate[1], 0.0);
+  const double l2 = exit.index == 2 ? 0.0 : std::max(lambda[2] + exit.t * exit.rate[2], 0.0);
+  const double inverse_sum = 1.0 / (l0 + l1 + l2);
+  lambda[0] = l0 * inverse_sum;
+  lambda[1] = l1 * inverse_sum;
+  lambda[2] = l2 * inverse_sum;
+  walked += exit.t;
+  remaining -= exit.t;
+  // No progress: a step below 1e-12 of the face's largest height (t * min |gradient|, squared),
+  // looked at only for steps below a nanometre (faces up to a kilometre).
+  const bool no_progress =
+      exit.t < 1e-9 &&
+      exit.t * exit.t * std::min({gradients.squaredNorm(0), gradients.squaredNorm(1), gradients.squaredNorm(2)}) <
+          1e-24;
+  stalled = no_progress ? stalled + 1 : 0;
+}
+
+// Through vertex `vertex_local` of the walk's face: into the incident face whose corner wedge
+// holds the direction, if it may be entered; else why the walk stops there.
+inline std::optional<WalkStop> crossVertex(const TriangleMesh& mesh, const WalkLimits& limits, int vertex_local,
+                                           Walk* walk)
+{
+  walk->lambda[0] = walk->lambda[1] = walk->lambda[2] = 0.0;
+  walk->lambda[vertex_local] = 1.0;
+  const int vertex = mesh.triangles()[walk->face][vertex_local];
+  const double weight = 1.0;
+  const FaceChoice choice =
+      chooseFaceAround(mesh, &vertex, &weight, 1, walk->r, mesh.normals()[walk->face], walk->face, limits);
+  if (choice.face < 0 || choice.score < -kParallelTolerance)
+  {
+    return WalkStop::kVertexBlocked;
+  }
+  if (const std::optional<WalkStop> limit = surfaceLimit(mesh.normals()[choice.face], limits))
+  {
+    return limit;
+  }
+  walk->enter(choice.face, choice.barycentric, choice.direction, faceGradients(mesh, choice.face));
+  return std::nullopt;
+}
+
+// Across exit edge `exit_index` (from local corner exit_index + 1 to exit_index + 2), through the
+// neighbour table, if the next face may be entered and the carried direction enters it; else why
+// the walk stops on the edge.
+inline std::optional<WalkStop> crossEdge(const TriangleMesh& mesh, const WalkLimits& limits, int exit_index, Walk* walk)
+{
+  const int a_local = (exit_index + 1) % 3;
+  const int b_local = (exit_index + 2) % 3;
+  const int face = walk->face;
+  const int next = mesh.neighbours()[face][a_local];  // edge k runs from corner k to corner k+1
+  if (next == TriangleMesh::kBoundaryEdge)
+  {
+    return WalkStop::kBoundaryEdge;
+  }
+  if (next < 0)
+  {
+    return WalkStop::kNonManifoldEdge;
+  }
+  if (const std::optional<WalkStop> limit = surfaceLimit(mesh.normals()[next], limits))
+  {
+    return limit;
+  }
+  const Eigen::Vector3i& corners = mesh.triangles()[face];
+  const int a_next = mesh.localVertex(next, corners[a_local]);
+  const int b_next = mesh.localVertex(next, corners[b_local]);
+  if (a_next < 0 || b_next < 0)
+  {
+    return WalkStop::kNonManifoldEdge;
+  }
+  Eigen::Vector3d carried;
+  if (!carryDirection(walk->r, mesh.normals()[face], mesh.normals()[next], limits.variant, &carried))
+  {
+    return WalkStop::kDirectionLost;
+  }
+  // The carried direction must enter the new face: its coordinate opposite the shared edge has
+  // to grow. The walk left the old face across this edge, so the unfolded direction always does;
+  // the projection fails at folds of 90 degrees or more.
+  const int opposite_next = 3 - a_next - b_next;
+  const FaceGradients next_gradients = faceGradients(mesh, next);
+  const double entering = next_gradients.gradient[opposite_next].dot(carried);
+  if (entering <= 0.0 ||
+      entering * entering <= kParallelTolerance * kParallelTolerance * next_gradients.squaredNorm(opposite_next))
+  {
+    return WalkStop::kDirectionLost;
+  }
+  Eigen::Vector3d next_lambda = Eigen::Vector3d::Zero();
+  next_lambda[a_next] = walk->lambda[a_local];
+  next_lambda[b_next] = walk->lambda[b_local];
+  walk->enter(next, next_lambda, carried, next_gradients);
+  return std::nullopt;
 }
 }  // namespace
 
@@ -315,7 +508,7 @@ bool chooseStartFace(const TriangleMesh& mesh, const SurfaceLocation& start, con
       choice.direction /= length;
     }
   }
-  if (faceBlocked(mesh.normals()[choice.face], limits) != WalkStop::kDistanceReached)
+  if (surfaceLimit(mesh.normals()[choice.face], limits))
   {
     *stop = WalkStop::kDropped;
     return false;
@@ -329,16 +522,8 @@ bool chooseStartFace(const TriangleMesh& mesh, const SurfaceLocation& start, con
 WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, const Eigen::Vector3d& direction,
                        double distance, const WalkLimits& limits)
 {
-  int face = start.face;
-  // Barycentric coordinates as plain doubles: stores at a runtime index followed by vector
-  // loads of the same bytes (an Eigen vector) stall store forwarding on every crossing.
-  double lambda[3] = {start.barycentric[0], start.barycentric[1], start.barycentric[2]};
-  const auto coordinates = [&lambda]() { return Eigen::Vector3d(lambda[0], lambda[1], lambda[2]); };
-  double walked = 0.0;
-  int crossings = 0;
-  int stalled = 0;
-  if (face < 0 || face >= mesh.triangleCount() || !start.barycentric.allFinite() || !direction.allFinite() ||
-      !std::isfinite(distance) || distance < 0.0 ||
+  if (start.face < 0 || start.face >= mesh.triangleCount() || !start.barycentric.allFinite() ||
+      !direction.allFinite() || !std::isfinite(distance) || distance < 0.0 ||
       !(std::abs(start.barycentric.sum() - 1.0) <= kBarycentricTolerance) ||
       !(start.barycentric.minCoeff() >= -kBarycentricTolerance))
   {
@@ -346,168 +531,46 @@ WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, c
     invalid.stop = WalkStop::kInvalidInput;
     return invalid;
   }
-  Eigen::Vector3d r = direction - direction.dot(mesh.normals()[face]) * mesh.normals()[face];
-  if (!(r.norm() > 1e-9))
+  Walk walk;
+  walk.face = start.face;
+  walk.lambda[0] = start.barycentric[0];
+  walk.lambda[1] = start.barycentric[1];
+  walk.lambda[2] = start.barycentric[2];
+  walk.r = direction - direction.dot(mesh.normals()[walk.face]) * mesh.normals()[walk.face];
+  if (!(walk.r.norm() > 1e-9))
   {
-    return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kDirectionLost);
+    return walk.stopHere(mesh, WalkStop::kDirectionLost);
   }
-  r.normalize();
-  double remaining = distance;
-  // The current face's gradients; an edge crossing computes the next face's anyway and hands
-  // them on, so each face entered costs one faceGradients().
-  FaceGradients gradients = faceGradients(mesh, face);
+  walk.r.normalize();
+  walk.remaining = distance;
+  walk.gradients = faceGradients(mesh, walk.face);
 
+  // Algorithm 1: until the distance is walked, leave the face across the edge the direction
+  // meets first, test the next face against tau_a and the friction cone, cross onto it and
+  // carry the direction over.
   while (true)
   {
-    double rate[3];
-    int exit_index = -1;
-    // The first coordinate to reach zero: the smallest lambda_j / -rate_j, compared as
-    // cross products so that only the winner is divided.
-    double exit_numerator = 1.0;
-    double exit_denominator = 0.0;
-    for (int j = 0; j < 3; ++j)
+    const ExitEdge exit = findExitEdge(walk);
+    if (exit.index < 0)
     {
-      rate[j] = gradients.gradient[j].dot(r);
-      // Only coordinates that decrease faster than the parallel tolerance can reach zero.
-      if (fallsAcross(gradients, j, rate[j]))
-      {
-        const double numerator = std::max(lambda[j], 0.0);
-        if (exit_index < 0 || numerator * exit_denominator < exit_numerator * -rate[j])
-        {
-          exit_numerator = numerator;
-          exit_denominator = -rate[j];
-          exit_index = j;
-        }
-      }
+      return walk.stopHere(mesh, WalkStop::kDirectionLost);
     }
-    const double exit_t = exit_index < 0 ? std::numeric_limits<double>::infinity() : exit_numerator / exit_denominator;
-    if (exit_index < 0)
+    if (exit.t >= walk.remaining)
     {
-      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kDirectionLost);
+      return walk.endInsideFace(mesh, exit);
     }
-    if (exit_t >= remaining)
+    walk.moveOntoExitEdge(exit);
+    if (walk.crossings >= limits.max_crossings || walk.stalled > kMaxStalledCrossings)
     {
-      for (int j = 0; j < 3; ++j)
-      {
-        lambda[j] += remaining * rate[j];
-      }
-      const Eigen::Vector3d reached = coordinates().cwiseMax(0.0);
-      return finish(mesh, face, reached / reached.sum(), walked + remaining, crossings, WalkStop::kDistanceReached);
+      return walk.stopHere(mesh, WalkStop::kCrossingCap);
     }
-
-    // Move onto the exit edge.
+    const int vertex_local = walk.vertexReached(exit.index);
+    const std::optional<WalkStop> stop =
+        vertex_local >= 0 ? crossVertex(mesh, limits, vertex_local, &walk) : crossEdge(mesh, limits, exit.index, &walk);
+    if (stop)
     {
-      const double l0 = exit_index == 0 ? 0.0 : std::max(lambda[0] + exit_t * rate[0], 0.0);
-      const double l1 = exit_index == 1 ? 0.0 : std::max(lambda[1] + exit_t * rate[1], 0.0);
-      const double l2 = exit_index == 2 ? 0.0 : std::max(lambda[2] + exit_t * rate[2], 0.0);
-      const double inverse_sum = 1.0 / (l0 + l1 + l2);
-      lambda[0] = l0 * inverse_sum;
-      lambda[1] = l1 * inverse_sum;
-      lambda[2] = l2 * inverse_sum;
+      return walk.stopHere(mesh, *stop);
     }
-    walked += exit_t;
-    remaining -= exit_t;
-    // No progress: a step below 1e-12 of the face's largest height (exit_t * min |gradient|,
-    // squared), looked at only for steps below a nanometre (faces up to a kilometre).
-    const bool no_progress =
-        exit_t < 1e-9 &&
-        exit_t * exit_t * std::min({gradients.squaredNorm(0), gradients.squaredNorm(1), gradients.squaredNorm(2)}) <
-            1e-24;
-    stalled = no_progress ? stalled + 1 : 0;
-    if (crossings >= limits.max_crossings || stalled > kMaxStalledCrossings)
-    {
-      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kCrossingCap);
-    }
-
-    const int a_local = (exit_index + 1) % 3;
-    const int b_local = (exit_index + 2) % 3;
-    const Eigen::Vector3i& corners = mesh.triangles()[face];
-    int vertex_local = -1;
-    if (lambda[a_local] <= kVertexTolerance)
-    {
-      vertex_local = b_local;
-    }
-    else if (lambda[b_local] <= kVertexTolerance)
-    {
-      vertex_local = a_local;
-    }
-
-    if (vertex_local >= 0)
-    {
-      // Through a vertex: into the incident face whose corner wedge holds the direction.
-      lambda[0] = lambda[1] = lambda[2] = 0.0;
-      lambda[vertex_local] = 1.0;
-      const int vertex = corners[vertex_local];
-      const double weight = 1.0;
-      const FaceChoice choice = chooseFaceAround(mesh, &vertex, &weight, 1, r, mesh.normals()[face], face, limits);
-      if (choice.face < 0 || choice.score < -kParallelTolerance)
-      {
-        return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kVertexBlocked);
-      }
-      const WalkStop blocked = faceBlocked(mesh.normals()[choice.face], limits);
-      if (blocked != WalkStop::kDistanceReached)
-      {
-        return finish(mesh, face, coordinates(), walked, crossings, blocked);
-      }
-      face = choice.face;
-      for (int j = 0; j < 3; ++j)
-      {
-        lambda[j] = choice.barycentric[j];
-      }
-      r = choice.direction;
-      gradients = faceGradients(mesh, face);
-      ++crossings;
-      continue;
-    }
-
-    // Across an edge, through the neighbour table.
-    const int edge = a_local;  // edge k runs from corner k to corner k+1
-    const int next = mesh.neighbours()[face][edge];
-    if (next == TriangleMesh::kBoundaryEdge)
-    {
-      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kBoundaryEdge);
-    }
-    if (next < 0)
-    {
-      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kNonManifoldEdge);
-    }
-    const WalkStop blocked = faceBlocked(mesh.normals()[next], limits);
-    if (blocked != WalkStop::kDistanceReached)
-    {
-      return finish(mesh, face, coordinates(), walked, crossings, blocked);
-    }
-    const int a_next = mesh.localVertex(next, corners[a_local]);
-    const int b_next = mesh.localVertex(next, corners[b_local]);
-    if (a_next < 0 || b_next < 0)
-    {
-      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kNonManifoldEdge);
-    }
-    Eigen::Vector3d carried;
-    if (!carryDirection(r, mesh.normals()[face], mesh.normals()[next], limits.variant, &carried))
-    {
-      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kDirectionLost);
-    }
-    // The carried direction must enter the new face: its coordinate opposite the shared edge
-    // has to grow. The walk left the old face across this edge, so the unfolded direction
-    // always does; the projection fails at folds of 90 degrees or more.
-    const int opposite_next = 3 - a_next - b_next;
-    const FaceGradients next_gradients = faceGradients(mesh, next);
-    const double entering = next_gradients.gradient[opposite_next].dot(carried);
-    if (entering <= 0.0 ||
-        entering * entering <= kParallelTolerance * kParallelTolerance * next_gradients.squaredNorm(opposite_next))
-    {
-      return finish(mesh, face, coordinates(), walked, crossings, WalkStop::kDirectionLost);
-    }
-    const double on_a = lambda[a_local];
-    const double on_b = lambda[b_local];
-    face = next;
-    for (int j = 0; j < 3; ++j)
-    {
-      lambda[j] = j == a_next ? on_a : (j == b_next ? on_b : 0.0);
-    }
-    r = carried;
-    gradients = next_gradients;
-    ++crossings;
   }
 }
 }  // namespace god_finger

@@ -23,6 +23,7 @@
 #include "god_finger/geometry/surface_location.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace god_finger
 {
@@ -67,6 +68,23 @@ struct WalkLimits
   int max_crossings = 4096;
 };
 WalkLimits makeWalkLimits(const ContactParams& params, const Eigen::Vector3d& contact_normal, double normal_sign);
+
+// Algorithm 1's test of the next face (or a primitive's next surface): none when a surface of unit
+// normal `normal` may be entered, its normal within tau_a of the contact normal and inside the
+// friction cone; else why not (kAngleLimit, then kFrictionLimit). Real-time safe.
+inline std::optional<WalkStop> surfaceLimit(const Eigen::Vector3d& normal, const WalkLimits& limits)
+{
+  const double c = limits.normal_sign * normal.dot(limits.contact_normal);
+  if (!(c > limits.cos_max_angle))
+  {
+    return WalkStop::kAngleLimit;
+  }
+  if (!(c > limits.cos_friction))
+  {
+    return WalkStop::kFrictionLimit;
+  }
+  return std::nullopt;
+}
 
 // Picks the face to start from at `start` (on a face, an edge or a vertex) for a direction
 // given in the plane orthogonal to `direction_normal`, and carries the direction onto it.
