@@ -1,5 +1,6 @@
 """god_finger.World: the same trajectory as the C++ world, and the calls a user makes."""
 import math
+import os
 import time
 import subprocess
 import threading
@@ -197,3 +198,18 @@ def test_step_releases_the_gil(scene):
     times["main_ran"] = time.monotonic()
     thread.join()
     assert times["main_ran"] < times["returned"] - 0.05
+
+
+@pytest.mark.parametrize("file, body", [("urdf/lists/table_objects.yaml", "ball"),
+                                        ("urdf/objects/stool.urdf.xacro", None),
+                                        ("urdf/scenes/soft_block.urdf", None)])
+def test_any_scene_the_loader_takes(root, file, body):
+    """A scene list, a xacro object file and a scene with a soft body load and step as URDFs do."""
+    world = god_finger.World(os.path.join(root, file))
+    assert world.bodies
+    name = body or world.bodies[-1]
+    top = max(world.body(n).position[2] for n in world.bodies) + 0.3
+    finger = world.add_finger([world.body(name).center_of_mass[0], world.body(name).center_of_mass[1], top])
+    world.step(100)
+    assert world.steps == 100 and np.all(np.isfinite(world.finger(finger).position))
+    assert all(np.all(np.isfinite(world.body(n).pose)) for n in world.bodies)
