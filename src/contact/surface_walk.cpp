@@ -251,15 +251,11 @@ struct Walk
     return -1;
   }
 
-  // Onto `next` (its local coordinates, its gradients), with the direction carried there.
-  void enter(int next, const Eigen::Vector3d& next_lambda, const Eigen::Vector3d& carried,
-             const FaceGradients& next_gradients)
+  // Onto face `next` (its gradients), with the direction carried there; the caller has set the
+  // coordinates on it.
+  void enter(int next, const Eigen::Vector3d& carried, const FaceGradients& next_gradients)
   {
     face = next;
-    for (int j = 0; j < 3; ++j)
-    {
-      lambda[j] = next_lambda[j];
-    }
     r = carried;
     gradients = next_gradients;
     ++crossings;
@@ -343,7 +339,11 @@ inline std::optional<WalkStop> crossVertex(const TriangleMesh& mesh, const WalkL
   {
     return limit;
   }
-  walk->enter(choice.face, choice.barycentric, choice.direction, faceGradients(mesh, choice.face));
+  for (int j = 0; j < 3; ++j)
+  {
+    walk->lambda[j] = choice.barycentric[j];
+  }
+  walk->enter(choice.face, choice.direction, faceGradients(mesh, choice.face));
   return std::nullopt;
 }
 
@@ -391,10 +391,14 @@ inline std::optional<WalkStop> crossEdge(const TriangleMesh& mesh, const WalkLim
   {
     return WalkStop::kDirectionLost;
   }
-  Eigen::Vector3d next_lambda = Eigen::Vector3d::Zero();
-  next_lambda[a_next] = walk->lambda[a_local];
-  next_lambda[b_next] = walk->lambda[b_local];
-  walk->enter(next, next_lambda, carried, next_gradients);
+  // The point keeps its place on the shared edge (scalar stores: see Walk::lambda).
+  const double on_a = walk->lambda[a_local];
+  const double on_b = walk->lambda[b_local];
+  for (int j = 0; j < 3; ++j)
+  {
+    walk->lambda[j] = j == a_next ? on_a : (j == b_next ? on_b : 0.0);
+  }
+  walk->enter(next, carried, next_gradients);
   return std::nullopt;
 }
 }  // namespace
