@@ -10,6 +10,7 @@
 // quaternions are (x, y, z, w), PyBullet's order. None of this is real-time safe.
 #pragma once
 
+#include "god_finger/support/input_error.h"
 #include "god_finger/support/parameter_table.h"
 
 #include <pybind11/pybind11.h>
@@ -38,6 +39,21 @@ void initNumpy();
 py::object array3(const Eigen::Vector3d& v);
 // (x, y, z, w) as a numpy array.
 py::object quaternionArray(const Eigen::Quaterniond& q);
+
+// `value` as a T (`kind` names it: "a number", "an integer", "text"); InputError naming `what` when
+// it is not one or does not fit (an integer beyond int's range).
+template <typename T>
+T argument(const py::handle& value, const std::string& what, const char* kind)
+{
+  try
+  {
+    return value.cast<T>();
+  }
+  catch (const py::cast_error&)
+  {
+    throw InputError(what + " must be " + kind + ", not " + std::string(py::repr(value)));
+  }
+}
 
 // Keyword arguments as a parameter source (a bool, int, float, str or list each); every name
 // must be in `known` (InputError listing them otherwise, with `owner` saying whose they are).

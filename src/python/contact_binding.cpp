@@ -148,7 +148,9 @@ ContactAreaView contactArea(const Mesh& mesh, const py::object& point_object, co
   if (!force_object.is_none())
   {
     // v = f / k: the coupling spring's stretch that pushes with `force` (N, on the object).
-    const double stiffness = stiffness_object.is_none() ? CouplingProfile().stiffness : stiffness_object.cast<double>();
+    const double stiffness = stiffness_object.is_none()
+                                 ? CouplingProfile().stiffness
+                                 : argument<double>(stiffness_object, "stiffness", "a number (N/m)");
     if (!(stiffness > 0.0) || !std::isfinite(stiffness))
     {
       throw InputError("stiffness must be a finite number > 0 (N/m)");

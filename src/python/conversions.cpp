@@ -144,19 +144,19 @@ ParameterValue parameterValue(const py::handle& value, const std::string& name)
 {
   if (py::isinstance<py::bool_>(value))
   {
-    return ParameterValue::of(value.cast<bool>());
+    return ParameterValue::of(argument<bool>(value, "parameter '" + name + "'", "true or false"));
   }
   if (py::isinstance<py::int_>(value))
   {
-    return ParameterValue::ofInteger(value.cast<int>());
+    return ParameterValue::ofInteger(argument<int>(value, "parameter '" + name + "'", "an integer within int's range"));
   }
   if (py::isinstance<py::float_>(value))
   {
-    return ParameterValue::of(value.cast<double>());
+    return ParameterValue::of(argument<double>(value, "parameter '" + name + "'", "a number"));
   }
   if (py::isinstance<py::str>(value))
   {
-    return ParameterValue::of(value.cast<std::string>());
+    return ParameterValue::of(argument<std::string>(value, "parameter '" + name + "'", "text"));
   }
   if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value))
   {

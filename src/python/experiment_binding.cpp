@@ -48,7 +48,7 @@ ExperimentOptions experimentOptions(const std::string& scenario, const std::stri
     }
     if (name == "seed")
     {
-      const long long seed = item.second.cast<long long>();
+      const long long seed = argument<long long>(item.second, "option 'seed'", "an integer");
       if (seed < 0)
       {
         throw InputError("option 'seed' = " + std::to_string(seed) + " is not a non-negative integer");
@@ -57,11 +57,11 @@ ExperimentOptions experimentOptions(const std::string& scenario, const std::stri
     }
     else if (name == "fast")
     {
-      options.fast = item.second.cast<bool>();
+      options.fast = argument<bool>(item.second, "option 'fast'", "true or false");
     }
     else if (name == "pad_solver")
     {
-      const std::string text = item.second.cast<std::string>();
+      const std::string text = argument<std::string>(item.second, "option 'pad_solver'", "text");
       if (!parsePadSolver(text, &options.pad_solver))
       {
         throw InputError("option 'pad_solver' = '" + text + "' is not one of " + padSolverNames());
@@ -69,23 +69,25 @@ ExperimentOptions experimentOptions(const std::string& scenario, const std::stri
     }
     else if (name == "overlap_stiffness")
     {
-      options.overlap_stiffness = item.second.cast<double>();  // the world's table checks it
+      options.overlap_stiffness =
+          argument<double>(item.second, "option 'overlap_stiffness'", "a number");  // the world's table checks it
     }
     else if (name == "solver_iterations")
     {
-      options.solver_iterations = item.second.cast<int>();  // the world's table checks it
+      options.solver_iterations =
+          argument<int>(item.second, "option 'solver_iterations'", "an integer");  // the world's table checks it
     }
     else if (name == "sample_period")
     {
-      options.sample_period = item.second.cast<double>();
+      options.sample_period = argument<double>(item.second, "option 'sample_period'", "a number");
     }
     else if (name == "csv")
     {
-      options.csv = item.second.cast<std::string>();
+      options.csv = argument<std::string>(item.second, "option 'csv'", "a path");
     }
     else if (name == "scenes")
     {
-      options.scenes_dir = item.second.cast<std::string>();
+      options.scenes_dir = argument<std::string>(item.second, "option 'scenes'", "a folder");
     }
     else
     {

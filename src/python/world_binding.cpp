@@ -14,6 +14,7 @@
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -211,11 +212,25 @@ class World
       world_->step();
       return;
     }
-    py::gil_scoped_release release;
-    const std::lock_guard<std::mutex> lock(mutex_);
-    for (long i = 0; i < count; ++i)
+    // In chunks, the GIL released for each: between them Ctrl-C (KeyboardInterrupt) stops a long
+    // run, the world left at the last whole step.
+    constexpr long kChunk = 1000;
+    for (long done = 0; done < count;)
     {
-      world_->step();
+      const long chunk = std::min(kChunk, count - done);
+      {
+        py::gil_scoped_release release;
+        const std::lock_guard<std::mutex> lock(mutex_);
+        for (long i = 0; i < chunk; ++i)
+        {
+          world_->step();
+        }
+      }
+      done += chunk;
+      if (done < count && PyErr_CheckSignals() != 0)
+      {
+        throw py::error_already_set();
+      }
     }
   }
 
@@ -330,7 +345,7 @@ class World
     placement.pose.linear() = rpyRotation(vector3(rpy, "rpy"));
     if (!fixed.is_none())
     {
-      placement.fixed = fixed.cast<bool>();
+      placement.fixed = argument<bool>(fixed, "fixed", "true, false or None");
     }
     const SceneDescription object = loadPlacedObject(file, placement);
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -572,8 +587,7 @@ void bindWorld(py::module_& module)
                          "frame; quaternions (x, y, z, w).")
       .def_property_readonly("position", vectorGetter(&FingerView::position), "p_GO: the proxy (god-object) (m, world)")
       .def_property_readonly(
-          "orientation",
-          [](const FingerView& f) { return f.oriented ? quaternionArray(f.orientation) : py::none(); },
+          "orientation", [](const FingerView& f) { return f.oriented ? quaternionArray(f.orientation) : py::none(); },
           "the proxy's orientation (x, y, z, w) of an oriented finger, else None")
       .def_property_readonly("velocity", vectorGetter(&FingerView::velocity), "the proxy's velocity (m/s, world)")
       .def_property_readonly("target", vectorGetter(&FingerView::target),
@@ -662,7 +676,8 @@ void bindWorld(py::module_& module)
            "finger(finger) -> Finger: the proxy's pose, the force on the hand, the contacts, after the last step.")
       .def_property_readonly("fingers", &World::fingerCount, "how many fingers were added")
       .def("step", &World::step, py::arg("n") = 1,
-           "step(n=1): n fixed steps of time_step (s). For n > 1 the GIL is released while it steps.")
+           "step(n=1): n fixed steps of time_step (s). For n > 1 the GIL is released while it steps, and Ctrl-C\n"
+           "(KeyboardInterrupt) stops it within a thousand steps, the world at its last whole step.")
       .def_property_readonly("time", &World::time, "world time (s)")
       .def_property_readonly("steps", &World::steps, "steps taken since the world was made or reset")
       .def("reset", &World::reset,
