@@ -55,6 +55,8 @@ T argument(const py::handle& value, const std::string& what, const char* kind)
   }
 }
 
+// InputError listing `known` (whose they are: `owner`) when a key of `kwargs` is not among them.
+void checkNames(const py::dict& kwargs, const std::set<std::string>& known, const std::string& owner);
 // Keyword arguments as a parameter source (a bool, int, float, str or list each); every name
 // must be in `known` (InputError listing them otherwise, with `owner` saying whose they are).
 MapParameterSource parameterSource(const py::dict& kwargs, const std::set<std::string>& known,

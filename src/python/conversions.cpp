@@ -29,14 +29,7 @@ std::string shapeText(const Array& array)
 
 Array numbers(const py::handle& value, const std::string& what, py::ssize_t count)
 {
-  Array array;
-  try
-  {
-    array = Array::ensure(value);
-  }
-  catch (const py::error_already_set&)
-  {
-  }
+  const Array array = Array::ensure(value);  // null (and a Python error set) when not numbers
   if (!array)
   {
     PyErr_Clear();
@@ -180,9 +173,8 @@ ParameterValue parameterValue(const py::handle& value, const std::string& name)
 }
 }  // namespace
 
-MapParameterSource parameterSource(const py::dict& kwargs, const std::set<std::string>& known, const std::string& owner)
+void checkNames(const py::dict& kwargs, const std::set<std::string>& known, const std::string& owner)
 {
-  MapParameterSource source;
   for (const auto& item : kwargs)
   {
     const std::string name = py::str(item.first);
@@ -195,6 +187,16 @@ MapParameterSource parameterSource(const py::dict& kwargs, const std::set<std::s
       }
       throw InputError("unknown parameter '" + name + "' (" + owner + ": " + names + ")");
     }
+  }
+}
+
+MapParameterSource parameterSource(const py::dict& kwargs, const std::set<std::string>& known, const std::string& owner)
+{
+  checkNames(kwargs, known, owner);
+  MapParameterSource source;
+  for (const auto& item : kwargs)
+  {
+    const std::string name = py::str(item.first);
     source.set(name, parameterValue(item.second, name));
   }
   return source;

@@ -38,14 +38,11 @@ ExperimentOptions experimentOptions(const std::string& scenario, const std::stri
   }
   std::set<std::string> known = rowNames(experimentOptionTable());
   known.insert(extraOptions().begin(), extraOptions().end());
+  checkNames(kwargs, known, "run_experiment's options");
   py::dict table_options;
   for (const auto& item : kwargs)
   {
     const std::string name = py::str(item.first);
-    if (known.count(name) == 0)
-    {
-      parameterSource(kwargs, known, "run_experiment's options");  // names them all
-    }
     if (name == "seed")
     {
       const long long seed = argument<long long>(item.second, "option 'seed'", "an integer");

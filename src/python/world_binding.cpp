@@ -81,20 +81,6 @@ struct JointView
   double velocity = 0.0;
 };
 
-const char* jointKindName(JointKind kind)
-{
-  switch (kind)
-  {
-    case JointKind::kRevolute:
-      return "revolute";
-    case JointKind::kContinuous:
-      return "continuous";
-    case JointKind::kPrismatic:
-      return "prismatic";
-  }
-  return "?";
-}
-
 // What the keyword arguments of World may name: the world's table, the coupling's (the default
 // profile of every finger) and time_step.
 std::set<std::string> worldParameterNames()
@@ -124,14 +110,19 @@ WorldParams worldParams(const std::string& model, const py::kwargs& kwargs)
   return params;
 }
 
+// The parameters checked first (cheap), then the scene loaded.
+std::unique_ptr<GodFingerWorld> makeWorld(const std::string& scene, const std::string& model, const py::kwargs& kwargs)
+{
+  const WorldParams params = worldParams(model, kwargs);
+  return std::make_unique<GodFingerWorld>(loadScene(scene), params);
+}
+
 class World
 {
  public:
   World(const std::string& scene, const std::string& model, const py::kwargs& kwargs)
-      : path_(scene), params_(worldParams(model, kwargs))
+      : path_(scene), world_(makeWorld(scene, model, kwargs))
   {
-    const SceneDescription description = loadScene(scene);
-    world_ = std::make_unique<GodFingerWorld>(description, params_);
   }
 
   int addFinger(const py::object& position, const py::object& orientation, const py::object& coupling,
@@ -188,14 +179,11 @@ class World
     }
   }
 
-  // Made in place on the heap: Python takes it as it is (no move into a holder).
   std::unique_ptr<FingerView> finger(int finger) const
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     checkFinger(finger);
-    auto view = std::make_unique<FingerView>();
-    fillFingerView(world_->interfaceState(finger), view.get());
-    return view;
+    return fingerView(world_->interfaceState(finger));
   }
 
   void step(long count)
@@ -377,7 +365,7 @@ class World
     py::list fingers;
     for (int f = 0; f < world_->interfaceCount(); ++f)
     {
-      fingers.append(fingerView(world_->interfaceState(f)));
+      fingers.append(py::cast(fingerView(world_->interfaceState(f))));
     }
     out["fingers"] = fingers;
     py::dict joints;
@@ -480,16 +468,11 @@ class World
     return JointView{description.name, jointKindName(description.kind), state.position, state.velocity};
   }
 
-  FingerView fingerView(const InterfaceState& state) const
+  // Made in place on the heap: Python takes it as it is (no move into a holder).
+  std::unique_ptr<FingerView> fingerView(const InterfaceState& state) const
   {
-    FingerView view;
-    fillFingerView(state, &view);
-    return view;
-  }
-
-  void fillFingerView(const InterfaceState& state, FingerView* out) const
-  {
-    FingerView& view = *out;
+    auto made = std::make_unique<FingerView>();
+    FingerView& view = *made;
     view.position = state.proxy_position;
     view.velocity = state.proxy_velocity;
     view.target = state.interface_position;
@@ -507,10 +490,10 @@ class World
       view.bodies.push_back(area.body >= 0 && area.body < world_->bodyCount() ? world_->scene().bodies[area.body].name
                                                                               : std::string());
     }
+    return made;
   }
 
   std::string path_;
-  WorldParams params_;
   std::unique_ptr<GodFingerWorld> world_;
   mutable std::mutex mutex_;
 };

@@ -98,4 +98,17 @@ void checkJoints(const SceneDescription& scene)
     }
   }
 }
+const char* jointKindName(JointKind kind)
+{
+  switch (kind)
+  {
+    case JointKind::kRevolute:
+      return "revolute";
+    case JointKind::kContinuous:
+      return "continuous";
+    case JointKind::kPrismatic:
+      return "prismatic";
+  }
+  return "?";
+}
 }  // namespace god_finger

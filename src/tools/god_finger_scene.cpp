@@ -245,11 +245,10 @@ int main(int argc, char** argv)
     for (const god_finger::JointDescription& joint : scene.joints)
     {
       const bool prismatic = joint.kind == god_finger::JointKind::kPrismatic;
-      std::printf(
-          "  joint %-10s %s, %s -> %s, axis (%.3f, %.3f, %.3f)", joint.name.c_str(),
-          prismatic ? "prismatic" : (joint.kind == god_finger::JointKind::kRevolute ? "revolute" : "continuous"),
-          joint.parent < 0 ? "world" : scene.bodies[joint.parent].name.c_str(), scene.bodies[joint.child].name.c_str(),
-          joint.axis.x(), joint.axis.y(), joint.axis.z());
+      std::printf("  joint %-10s %s, %s -> %s, axis (%.3f, %.3f, %.3f)", joint.name.c_str(),
+                  god_finger::jointKindName(joint.kind),
+                  joint.parent < 0 ? "world" : scene.bodies[joint.parent].name.c_str(),
+                  scene.bodies[joint.child].name.c_str(), joint.axis.x(), joint.axis.y(), joint.axis.z());
       if (joint.kind != god_finger::JointKind::kContinuous)
       {
         std::printf(", limits [%.3f, %.3f] %s", joint.lower, joint.upper, prismatic ? "m" : "rad");

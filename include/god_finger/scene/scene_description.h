@@ -84,6 +84,8 @@ enum class JointKind
   kContinuous,  // about `axis`, unlimited
   kPrismatic,   // along `axis`, limited to [lower, upper] m
 };
+// "revolute", "continuous", "prismatic": URDF's names.
+const char* jointKindName(JointKind kind);
 
 struct JointDescription
 {
