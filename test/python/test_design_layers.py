@@ -8,7 +8,8 @@ targets and is not compared. The two must agree:
   - every edge a table gives is a link CMake makes (directly);
   - every link CMake makes is reached in the table, directly or through the rows below
     (contact links support itself; its row says geometry, whose row says support);
-  - every layer CMake builds has a row, and every row's layer is built.
+  - every layer CMake builds has a row, and every row's layer is built;
+  - each row depends only on rows above it.
 Needs nothing built: it reads CMakeLists.txt and the pages.
 """
 import os
@@ -146,6 +147,10 @@ def compare(page, heading, cmake=None, page_text=None):
             if word in row_of and row_of[word] != index and not any(word in graph.get(name, ()) for name in names):
                 problems.append(f"{page}: {' / '.join(names)} -> {word}, but CMake links no {word} target into "
                                 f"{' / '.join(names)} (target_link_libraries of {', '.join(t for n in names for t in targets.get(n, []))})")
+    for index, below in sorted((i, b) for i, deps in table.items() for b in deps):
+        if below > index:
+            problems.append(f"{page}: {' / '.join(rows[index][0])} depends on {' / '.join(rows[below][0])}, a row below it "
+                            "(each layer depends only on the rows above it)")
     for layer in sorted(graph):
         if layer not in row_of:
             continue
@@ -204,3 +209,11 @@ def test_an_edge_missing_from_either_side_is_named(page, heading):
     assert edited != page_text
     problems = compare(page, heading, page_text=edited)
     assert any(problem.startswith("CMake: scene -> soft") for problem in problems), problems
+
+    # A row moved above a layer it depends on.
+    lines = page_text.split("\n")
+    scene = next(i for i, line in enumerate(lines) if line.startswith("| `scene` |"))
+    soft = next(i for i, line in enumerate(lines) if line.startswith("| `soft` |"))
+    lines[scene], lines[soft] = lines[soft], lines[scene]
+    problems = compare(page, heading, page_text="\n".join(lines))
+    assert any("scene depends on soft, a row below it" in problem for problem in problems), problems
