@@ -133,10 +133,16 @@ def compare(page, heading, cmake=None, page_text=None):
     # The table's edges, between rows (a row naming ros and nodes holds the link between them).
     table = {index: {row_of[word] for word in words if word in row_of} - {index} for index, (_, words) in enumerate(rows)}
 
+    # Reached through the table's edges that CMake makes (an edge CMake lacks is named below, and
+    # reaches nothing).
+    linked = {index: {below for below in table[index]
+                      if any(name in graph and set(rows[below][0]) & graph[name] for name in rows[index][0])}
+              for index in table}
+
     def reached(start):
         seen, todo = set(), [start]
         while todo:
-            for below in table[todo.pop()]:
+            for below in linked[todo.pop()]:
                 if below not in seen:
                     seen.add(below)
                     todo.append(below)
