@@ -362,12 +362,13 @@ def door_problems(pages):
         paragraphs = [p for p in re.split(r"\n\s*\n|\n(?=\s*- )", text) if "door" in p or "door" in page]
         for sentence in (s for p in paragraphs for s in re.split(r"(?<=[.;])\s+", re.sub(r"\s+", " ", p))):
             for match in re.finditer(r"\bopen\w*(?: the door| it)?\s+(about |to |past |by )?(\d+(?:\.\d+)?) degrees", sentence):
-                if re.search(r"\b(handle|arc|script|limit)", sentence):
-                    continue  # a push by hand, or the script's path: below
+                if "handle" in sentence:
+                    continue  # a push by hand, with the interactive handle: as far as the user drags
                 found += 1
                 said = float(match.group(2))
                 if (match.group(1) == "past " and said >= low) or (match.group(1) != "past " and not low <= said <= high):
-                    problems.append(f"{page}: \"{match.group(0)}\": the experiment opens it {low + 1:.0f}-{high - 1:.0f} degrees "
+                    opened = sorted({f"{value:.1f}" for value in figures["opened"]})
+                    problems.append(f"{page}: \"{match.group(0)}\": the experiment opens it {' to '.join(opened)} degrees "
                                     "(opened_rad, docs/experiments.md)")
             for match in re.finditer(r"\b(?:arc (?:to|stops at)|script's) (\d+) degrees", sentence):
                 found += 1
@@ -391,10 +392,12 @@ def test_the_door_angles_the_docs_state_are_the_experiments():
 
 def test_a_wrong_door_angle_fails():
     pages = {"docs/demo.md": "The fake finger pushes the door open 60 degrees.",
+             "docs/x.md": "door: every model opens the door about 75 degrees, past the script's 65 degrees.",
              "launch/door.launch": "A finger pushes a cabinet door open, along an arc to 60 degrees.",
              "docs/experiments.md": "a door on a vertical hinge (0 to 90 degrees, damping 0.05 N m s/rad)."}
     problems, _ = door_problems(pages)
     assert any("open 60 degrees" in problem for problem in problems), problems
+    assert any("opens the door about 75 degrees" in problem for problem in problems), problems
     assert any("arc to 60 degrees" in problem for problem in problems), problems
     assert any("0 to 90 degrees" in problem for problem in problems), problems
 
