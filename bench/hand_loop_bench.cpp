@@ -3,8 +3,8 @@
 // as bench/wakeup_latency.cpp). The fingers are a pose source fed at 100 Hz by another thread
 // (a tracker), each 5 mm into the table of table_sphere.urdf, far from the ball, so every
 // finger's proxy is in contact each tick.
-// usage: hand_loop_bench [FINGERS] [SECONDS]   prints one JSON line (periods in us; the target:
-// period_us_p99 - floor_us_p99 <= 50 us with 10 fingers)
+// usage: hand_loop_bench [FINGERS] [SECONDS]   prints one JSON line (periods in us; the target,
+// bench/targets.yaml's hand.ten_fingers: p99_over_floor_us = period_us_p99 - floor_us_p99)
 #include "platform_floor.h"
 
 #include "god_finger/devices/hand_device.h"

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""The Python module's overhead against the same calls in C++ (issue 52's targets): 10,000 steps
-of the slide scene by one step(10000) within 2 % of C++'s loop, and a Python loop that sets the
-target, steps once and reads the finger at most 1 us per step above C++'s. Both sides run the
-same workloads (bench/python_overhead.cpp is the C++ side), interleaved round by round: C++,
-Python, C++, Python, so that the machine's noise falls on both alike.
+"""The Python module's overhead against the same calls in C++ (issue 52's targets, in
+bench/targets.yaml: python.step_block and python.loop): 10,000 steps of the slide scene by one
+step(10000) against C++'s loop, and a Python loop that sets the target, steps once and reads the
+finger, per step above C++'s. Both sides run the same workloads (bench/python_overhead.cpp is
+the C++ side), interleaved round by round: C++, Python, C++, Python, so that the machine's noise
+falls on both alike.
 
     bench/python_overhead.py PROGRAM OUT.jsonl [ROUNDS]
 

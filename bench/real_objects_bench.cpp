@@ -10,8 +10,8 @@
 // Benchmarks:
 //   BM_Load/OBJECT/cached:0|1  one whole world construction (table + object) through
 //       GodFingerWorld: first load with an empty hull cache (simplify, decompose, write the hulls),
-//       cached with the hulls read from the disk cache. Targets (scripts/bench_report): a 5k-triangle
-//       object first <= 1 s, cached <= 0.1 s.
+//       cached with the hulls read from the disk cache. Targets: bench/targets.yaml's
+//       real_objects.mug_first_load and real_objects.mug_cached_load (the 5k-triangle mug).
 //   BM_Step/OBJECT/fingers:1|2/god_object:0|1  one world step (god_finger, or god_object: what
 //       the pad adds) (manual time) while each finger, having
 //       come down onto the object (the mug's and the bowl's inner floor, the brick's top between
