@@ -14,8 +14,8 @@
 // The MuJoCo scene: bench/mujoco_scene.h (mujocoXml).
 #include "god_finger/contact/contact_params.h"
 #include "god_finger/haptics/virtual_coupling.h"
-#include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/scenarios/experiment.h"
 #include "god_finger/scenarios/scenario_metrics.h"
 #include "mujoco_scene.h"
 #include "scale_scene.h"
@@ -236,7 +236,7 @@ void BM_ScaleStep(benchmark::State& state)
       }
       world->step();
       times.us.push_back(scale::microseconds(begin, scale::Clock::now()));
-      iterations += world->solverIterationsUsed();
+      iterations += world->counters().solver_iterations;
     }
     state.PauseTiming();
     world.reset();

@@ -3,8 +3,8 @@
 // ball) and of objects (1, 10, 100 balls on a table, one finger). One benchmark iteration is
 // one whole scripted run (the hand's motion included, the world's construction not); the
 // counter `steps` gives steps per run, so time per step = time / steps (scripts/bench_report).
-#include "god_finger/scenarios/experiment.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/scenarios/experiment.h"
 
 #include <benchmark/benchmark.h>
 
@@ -44,8 +44,8 @@ long runScript(GodFingerWorld* world, const std::vector<WaypointPath>& fingers, 
       world->setInterfaceTarget(static_cast<int>(f), fingers[f].at((i + 1) * dt));
     }
     world->step();
-    *iterations += world->solverIterationsUsed();
-    *rows += world->solverContactRows();
+    *iterations += world->counters().solver_iterations;
+    *rows += world->counters().solver_contact_rows;
   }
   return steps;
 }

@@ -43,6 +43,34 @@ void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, 
   proxy->soft_load.setZero();
   proxy->soft_load_body = -1;
 }
+void remapBodies(const std::vector<int>& old_of_new, Proxy* proxy)
+{
+  std::vector<Eigen::Vector3d> tangents(old_of_new.size(), Eigen::Vector3d::Zero());
+  std::vector<std::array<WarmStart, ContactParams::kMaxSubGodObjects>> warm_starts(old_of_new.size());
+  std::vector<PadState> pads(old_of_new.size());
+  int soft_load_body = -1;
+  for (std::size_t i = 0; i < old_of_new.size(); ++i)
+  {
+    const int old = old_of_new[i];
+    if (old < 0)
+    {
+      continue;
+    }
+    tangents[i] = proxy->reference_tangents[old];
+    warm_starts[i] = proxy->warm_starts[old];
+    pads[i] = proxy->pads[old];
+    soft_load_body = old == proxy->soft_load_body ? static_cast<int>(i) : soft_load_body;
+  }
+  proxy->reference_tangents = std::move(tangents);
+  proxy->warm_starts = std::move(warm_starts);
+  proxy->pads = std::move(pads);
+  if (soft_load_body < 0)
+  {
+    proxy->soft_load.setZero();
+  }
+  proxy->soft_load_body = soft_load_body;
+}
+
 namespace
 {
 // Whether a contact test found any point (Bullet's contact threshold included).

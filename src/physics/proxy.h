@@ -77,6 +77,10 @@ inline btTransform padFrame(const Proxy& proxy, const btCollisionObject& proxy_o
 void buildProxyBody(const CouplingParams& coupling, const FingerPadParams& pad, int index, int body_count,
                     Proxy* proxy);
 
+// The proxy's per-body state (radial basis, warm starts, pads, soft load) carried to a scene whose
+// body i was body old_of_new[i] (-1: a new body, fresh state); a removed body's state goes.
+void remapBodies(const std::vector<int>& old_of_new, Proxy* proxy);
+
 // Whether carryFreeProxy may move it by `by`: no contact at its last step, not letting go, `by`
 // finite and not zero.
 bool carriable(const Proxy& proxy, const Eigen::Vector3d& by);

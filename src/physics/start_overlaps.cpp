@@ -8,10 +8,10 @@
 namespace god_finger::internal
 {
 
-std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vector<SceneBody>& bodies,
-                                       const SceneDescription& scene)
+std::vector<StartOverlap> startOverlaps(btCollisionWorld* world, const std::vector<SceneBody>& bodies,
+                                        const SceneDescription& scene)
 {
-  std::vector<std::string> warnings;
+  std::vector<StartOverlap> overlaps;
   for (std::size_t i = 0; i < bodies.size(); ++i)
   {
     btVector3 min_i;
@@ -43,14 +43,19 @@ std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vecto
       const double depth = deepestPenetrationAsCollided(world, bodies[i].rigid.get(), bodies[j].rigid.get());
       if (depth > kStartOverlapDepth)
       {
-        char line[96];
-        std::snprintf(line, sizeof(line), "%.1f mm", 1e3 * depth);
-        warnings.push_back("bodies '" + scene.bodies[i].name + "' and '" + scene.bodies[j].name + "' start " + line +
-                           " inside each other (more than " + std::to_string(int(1e3 * kStartOverlapDepth)) +
-                           " mm): the first step pushes them apart; move one of them");
+        overlaps.push_back({static_cast<int>(i), static_cast<int>(j), depth});
       }
     }
   }
-  return warnings;
+  return overlaps;
+}
+
+std::string describe(const StartOverlap& overlap, const SceneDescription& scene)
+{
+  char depth[32];
+  std::snprintf(depth, sizeof(depth), "%.1f mm", 1e3 * overlap.depth);
+  return "bodies '" + scene.bodies[overlap.body].name + "' and '" + scene.bodies[overlap.other].name + "' start " +
+         depth + " inside each other (more than " + std::to_string(int(1e3 * kStartOverlapDepth)) +
+         " mm): the first step pushes them apart; move one of them";
 }
 }  // namespace god_finger::internal

@@ -23,10 +23,19 @@ namespace god_finger::internal
 // 0.5 mm placements stay far below it).
 constexpr double kStartOverlapDepth = 0.002;  // m
 
-// One line per pair of bodies (at least one of them free, not the two bodies of a joint, which
-// do not collide) that start more than
-// kStartOverlapDepth inside each other, naming both and the depth. `bodies` are in `world`,
+// Two bodies that start inside each other.
+struct StartOverlap
+{
+  int body = -1;       // scene index
+  int other = -1;      // scene index, > body
+  double depth = 0.0;  // m, > kStartOverlapDepth
+};
+
+// Every pair of bodies (at least one of them free, not the two bodies of a joint, which do not
+// collide) that start more than kStartOverlapDepth inside each other. `bodies` are in `world`,
 // indexed as `scene`'s.
-std::vector<std::string> startOverlaps(btCollisionWorld* world, const std::vector<SceneBody>& bodies,
-                                       const SceneDescription& scene);
+std::vector<StartOverlap> startOverlaps(btCollisionWorld* world, const std::vector<SceneBody>& bodies,
+                                        const SceneDescription& scene);
+// The line the user reads: both names, the depth, what happens and what to do.
+std::string describe(const StartOverlap& overlap, const SceneDescription& scene);
 }  // namespace god_finger::internal

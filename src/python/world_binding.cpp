@@ -392,7 +392,7 @@ class World
   long rejectedTargets() const
   {
     const std::lock_guard<std::mutex> lock(mutex_);
-    return world_->rejectedTargets();
+    return world_->counters().rejected_targets;
   }
   const std::string& path() const
   {

@@ -1,6 +1,7 @@
 #include "diagnostics.h"
 
 #include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
 #include "parameters.h"
 
 namespace god_finger
@@ -11,6 +12,23 @@ void addValue(diagnostic_msgs::DiagnosticStatus* status, const std::string& key,
   pair.key = key;
   pair.value = value;
   status->values.push_back(pair);
+}
+
+diagnostic_msgs::DiagnosticStatus stepProfileStatus(const std::string& name,
+                                                    const std::array<Percentiles, kStepStageCount>& stages)
+{
+  diagnostic_msgs::DiagnosticStatus status;
+  status.name = name;
+  status.hardware_id = "god_finger";
+  status.level = diagnostic_msgs::DiagnosticStatus::OK;
+  status.message = "world step by stage (us)";
+  for (int s = 0; s < kStepStageCount; ++s)
+  {
+    const std::string stage = stepStageName(static_cast<StepStage>(s));
+    addValue(&status, stage + "_us_p50", jsonNumber(stages[s].p50));
+    addValue(&status, stage + "_us_p99", jsonNumber(stages[s].p99));
+  }
+  return status;
 }
 
 std::FILE* openTimingCsv(const ros::NodeHandle& pnh, const std::string& header)

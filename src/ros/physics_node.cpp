@@ -99,8 +99,10 @@ struct PhysicsNode::Impl
   std::unique_ptr<WorldServices> services;  // reset_scene, set_contact_model, dynamic_reconfigure
   std::vector<double> step_us;              // since the last diagnostics (under `mutex`)
   std::vector<double> step_us_read;         // publishDiagnostics' swap partner: both keep their capacity
-  WorldSnapshot snapshot;                   // read by publishScene
-  LeftWorldReport left_world;               // guarded by mutex
+  std::vector<StepProfile> profiles;        // each step's stages, as step_us
+  std::vector<StepProfile> profiles_read;
+  WorldSnapshot snapshot;      // read by publishScene
+  LeftWorldReport left_world;  // guarded by mutex
 
   void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
   {
@@ -245,6 +247,7 @@ struct PhysicsNode::Impl
     const auto start = std::chrono::steady_clock::now();
     world->step();
     step_us.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+    profiles.push_back(world->stepProfile());
     for (Interface& interface : interfaces)
     {
       interface.stepped = interface.index >= 0;
@@ -328,10 +331,14 @@ struct PhysicsNode::Impl
     long rejected = 0;
     PadSolver solver = PadSolver::kConstraint;
     std::string left;
+    long dropped_contacts = 0;
     {
       std::lock_guard<std::mutex> lock(mutex);
       step_us_read.clear();
       step_us_read.swap(step_us);
+      profiles_read.clear();
+      profiles_read.swap(profiles);
+      dropped_contacts = world->counters().dropped_contacts_total;
       wanted = 1.0 / world->params().time_step;
       model = world->contactModel();
       rejected = rejected_poses;
@@ -356,7 +363,15 @@ struct PhysicsNode::Impl
     add("contact_model", contactModelName(model));
     add("pad_solver", padSolverName(solver));
     add("left_world", left);  // bodies put back at their start (world_margin)
+    // Contacts beyond InterfaceState::kMaxContacts bodies per finger, since the start.
+    add("dropped_contacts", std::to_string(dropped_contacts));
     array.status.push_back(status);
+    StepProfileStatistics stages;
+    for (const StepProfile& profile : profiles_read)
+    {
+      stages.add(profile);
+    }
+    array.status.push_back(stepProfileStatus(node_name + ": step profile", stages.summarize()));
     for (const Interface& interface : interfaces)
     {
       // The channel's physics port, per interface (channel_port.h).

@@ -227,6 +227,7 @@ struct ServoNode::Impl
     add("left_world", left_world.diagnosticValue());  // bodies put back at their start (world_margin)
     add("untracked_readings", std::to_string(counters.untracked_readings.load()));  // fingers let go
     array.status.push_back(status);
+    array.status.push_back(stepProfileStatus(node_name + ": step profile", summary.stage_us));
     // A finger its pose source lost (no pose newer than its timeout): let go, named; the others go on.
     for (Interface& interface : interfaces)
     {

@@ -1,7 +1,7 @@
 #include "god_finger/runtime/loop_statistics.h"
 
-#include "god_finger/support/text_numbers.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/support/text_numbers.h"
 
 #include <algorithm>
 
@@ -33,6 +33,7 @@ void LoopStatistics::add(const ServoSample& sample)
   {
     period_us_.push_back(sample.period_us);
     step_us_.push_back(sample.step_us);
+    stages_.add(sample.step_profile);
   }
   latency_us_.push_back(sample.latency_us);
 }
@@ -46,6 +47,7 @@ LoopSummary LoopStatistics::summarize() const
   summary.period_us = percentilesOf(period_us_);
   summary.latency_us = percentilesOf(latency_us_);
   summary.step_us = percentilesOf(step_us_);
+  summary.stage_us = stages_.summarize();
   return summary;
 }
 
@@ -54,6 +56,33 @@ void LoopStatistics::clear()
   period_us_.clear();
   latency_us_.clear();
   step_us_.clear();
+  stages_.clear();
   window_start_ = steadySeconds();
+}
+
+void StepProfileStatistics::add(const StepProfile& profile)
+{
+  for (int s = 0; s < kStepStageCount; ++s)
+  {
+    stage_us_[s].push_back(1e-3 * static_cast<double>(profile.stage_ns[s]));
+  }
+}
+
+std::array<Percentiles, kStepStageCount> StepProfileStatistics::summarize() const
+{
+  std::array<Percentiles, kStepStageCount> stages;
+  for (int s = 0; s < kStepStageCount; ++s)
+  {
+    stages[s] = percentilesOf(stage_us_[s]);
+  }
+  return stages;
+}
+
+void StepProfileStatistics::clear()
+{
+  for (std::vector<double>& values : stage_us_)
+  {
+    values.clear();
+  }
 }
 }  // namespace god_finger

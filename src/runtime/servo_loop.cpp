@@ -472,6 +472,7 @@ void ServoLoop::stepFrame(const TargetFrame& frame, StepResult* out)
   out->tick = frame.tick;
   out->done_at = step_end;
   out->step_us = 1e6 * (step_end - step_start);
+  out->step_profile = world_->stepProfile();
   for (std::size_t i = 0; i < interfaces_.size(); ++i)
   {
     const InterfaceState& state = world_->interfaceState(static_cast<int>(i));
@@ -618,6 +619,7 @@ void ServoLoop::decideInterface(std::size_t i, long tick, double time, double pe
   sample->period_us = period_us;
   sample->latency_us = 1e6 * ((params_.simulated_time ? commanded_at : render.ready_at) - read_at_[i]);
   sample->step_us = latest_.step_us;
+  sample->step_profile = latest_.step_profile;
   sample->stale = render.stale;
   sample->physics_lag = lag;
   sample->tracked = render.tracked;
@@ -641,6 +643,7 @@ void ServoLoop::tick(double time)
         latest_.tick = results_box_->front().tick;
         latest_.done_at = results_box_->front().done_at;
         latest_.step_us = results_box_->front().step_us;
+        latest_.step_profile = results_box_->front().step_profile;
         latest_.proxies = results_box_->front().proxies;  // same length: no allocation
       }
       decide(tick_ - 1, pending_time_, pending_period_us_);

@@ -814,7 +814,7 @@ ExperimentResult measureScenario(const ExperimentOptions& options, const GodFing
     step(i);
     const auto stop = std::chrono::steady_clock::now();
     step_us.push_back(std::chrono::duration<double, std::micro>(stop - start).count());
-    result.max_penetration_m = std::max(result.max_penetration_m, world.deepestPenetration());
+    result.max_penetration_m = std::max(result.max_penetration_m, world.counters().deepest_penetration);
     const BodyState state = world.bodyState(object);
     if (!finite(state))
     {

@@ -2,10 +2,10 @@
 // flat and inclined planes, no tunnelling at 1 m/s, every sub-god-object inside Bullet's
 // solver, model switching, determinism, and bad input.
 #include "god_finger/physics/god_finger_world.h"
-#include "god_finger/support/input_error.h"
 #include "god_finger/mesh_io/mesh_loader.h"
 #include "god_finger/scenarios/pad_fidelity.h"
 #include "god_finger/scene/urdf_scene.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -180,7 +180,7 @@ TEST(GodFingerWorld, EverySubGodObjectReachesTheSolver)
       run(&world, 0.3);
       // One true contact and n_sgo sub-god-objects, although a Bullet manifold holds 4 points.
       const int points = solver == PadSolver::kPoints ? 1 + n_sgo : 1;
-      EXPECT_EQ(world.solverProxyContactPoints(), points);
+      EXPECT_EQ(world.counters().solver_proxy_points, points);
       const InterfaceState& state = world.interfaceState(finger);
       ASSERT_EQ(state.contact_count, 1);
       EXPECT_EQ(state.contacts[0].sub_god_object_count, n_sgo);
@@ -198,10 +198,10 @@ TEST(GodFingerWorld, EverySubGodObjectReachesTheSolver)
       // Switching the model while running: the single point again.
       world.setContactModel(ContactModel::kGodObject);
       world.step();
-      EXPECT_EQ(world.solverProxyContactPoints(), 1);
+      EXPECT_EQ(world.counters().solver_proxy_points, 1);
       world.setContactModel(ContactModel::kGodFinger);
       world.step();
-      EXPECT_EQ(world.solverProxyContactPoints(), points);
+      EXPECT_EQ(world.counters().solver_proxy_points, points);
     }
   }
 }
@@ -221,7 +221,7 @@ TEST(GodFingerWorld, RestingContactsStopIteratingEarly)
     world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, -0.005));
     run(&world, 0.5);
     ASSERT_EQ(world.interfaceState(finger).contact_count, 1);
-    EXPECT_LT(world.solverIterationsUsed(), params.solver_iterations);
+    EXPECT_LT(world.counters().solver_iterations, params.solver_iterations);
   }
 }
 
@@ -241,7 +241,7 @@ TEST(GodFingerWorld, ThePadConstraintIsSixRowsPerFinger)
     world.setInterfaceTarget(finger, Eigen::Vector3d(0.0, 0.0, 0.015));
     run(&world, 0.3);
     EXPECT_EQ(world.interfaceState(finger).contact_count, 1);
-    return world.solverContactRows();
+    return world.counters().solver_contact_rows;
   };
   const int point = rows(ContactModel::kGodObject, PadSolver::kPoints);
   EXPECT_EQ(rows(ContactModel::kGodFinger, PadSolver::kPoints) - point, 3 * 8);
@@ -394,7 +394,7 @@ TEST(GodFingerWorld, BadInputIsRejectedAndLosesNothing)
   world.setInterfaceTarget(finger, Eigen::Vector3d(0, 0, 0.04));
   world.setInterfaceTarget(finger, Eigen::Vector3d(INFINITY, 0, 0));
   world.setInterfaceTarget(finger, Eigen::Vector3d(0, NAN, 0));
-  EXPECT_EQ(world.rejectedTargets(), 2);
+  EXPECT_EQ(world.counters().rejected_targets, 2);
   run(&world, 0.5);
   // The last good target stands.
   EXPECT_NEAR(world.interfaceState(finger).proxy_position.z(), 0.04, 1e-4);

@@ -2,8 +2,8 @@
 // energy or motion, no penetration beyond a stated tolerance, and that it ends (each runs a
 // fixed number of steps). The bounds are physical, stated where they are checked.
 #include "device_profile_file.h"
-#include "god_finger/support/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -46,7 +46,7 @@ BodyDescription boxAt(const Eigen::Vector3d& origin, double size, double mass)
 struct RunRecord
 {
   long nan_steps = 0;
-  double deepest = 0.0;         // m, world.deepestPenetration()
+  double deepest = 0.0;         // m, world.counters().deepest_penetration
   double max_speed = 0.0;       // m/s, of body 1's centre of mass
   double max_kinetic = 0.0;     // J, of body 1
   double max_user_force = 0.0;  // N, over all interfaces
@@ -78,7 +78,7 @@ RunRecord runChecked(GodFingerWorld* world, long steps, const std::function<void
       ++record.nan_steps;
       continue;
     }
-    record.deepest = std::max(record.deepest, world->deepestPenetration());
+    record.deepest = std::max(record.deepest, world->counters().deepest_penetration);
     record.max_speed = std::max(record.max_speed, state.linear_velocity.norm());
     const Eigen::Vector3d w = state.pose.linear().transpose() * state.angular_velocity;
     const double kinetic =

@@ -473,7 +473,7 @@ TEST(OrientedFinger, BadOrientationsAreIgnoredAndCounted)
   world.setInterfaceTarget(finger, Eigen::Vector3d(0, 0, 0.04), Eigen::Quaterniond(0, 0, 0, 0));
   world.setInterfaceTarget(finger, Eigen::Vector3d(0, 0, 0.04), Eigen::Quaterniond(3, 0, 0, 0));
   world.setInterfaceTarget(finger, Eigen::Vector3d(NAN, 0, 0.04), Eigen::Quaterniond::Identity());
-  EXPECT_EQ(world.rejectedTargets(), 4);
+  EXPECT_EQ(world.counters().rejected_targets, 4);
   world.step();
   EXPECT_FALSE(world.interfaceState(finger).oriented);
   EXPECT_EQ(world.interfaceState(finger).interface_position, Eigen::Vector3d(0, 0, 0.05));

@@ -1,8 +1,8 @@
 // Sleeping (WorldParams::sleep): what rests out of the fingers' reach is not simulated, and wakes
 // without a jump when a proxy or a woken body comes near. Each test states its scene; the table
 // top is z = 0, boxes are 4 cm cubes of 50 g.
-#include "god_finger/support/input_error.h"
 #include "god_finger/physics/god_finger_world.h"
+#include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -74,12 +74,12 @@ TEST(Sleeping, BodiesPlacedAtRestSleepFromTheStartAndAFallingOneFallsThenSleeps)
     EXPECT_TRUE(world.bodyState(world.scene().find(name)).asleep);
   }
   EXPECT_FALSE(world.bodyState(falling).asleep);
-  EXPECT_EQ(world.awakeBodyCount(), 1);
+  EXPECT_EQ(world.counters().awake_bodies, 1);
   // It lands after sqrt(2 h / g) = 0.1 s, settles, and sleeps within the sleep time after that.
   run(&world, 0.1 + 0.2 + WorldParams().sleep.time);
   EXPECT_TRUE(world.bodyState(falling).asleep);
   EXPECT_NEAR(world.bodyState(falling).pose.translation().z(), kBox / 2.0, 1e-3);
-  EXPECT_EQ(world.awakeBodyCount(), 0);
+  EXPECT_EQ(world.counters().awake_bodies, 0);
 }
 
 TEST(Sleeping, SleepTimeZeroKeepsEveryBodyAwake)
@@ -88,7 +88,7 @@ TEST(Sleeping, SleepTimeZeroKeepsEveryBodyAwake)
   params.sleep.time = 0.0;
   GodFingerWorld world(stackScene(), params);
   run(&world, 1.0);
-  EXPECT_EQ(world.awakeBodyCount(), 5);
+  EXPECT_EQ(world.counters().awake_bodies, 5);
 }
 
 TEST(Sleeping, AProxyApproachingASleepingStackWakesItWithoutAJump)
@@ -182,13 +182,13 @@ TEST(Sleeping, AWrenchOrAParameterChangeWakesABody)
   ContactParams contact = world.params().contact;
   contact.max_radius = 0.005;
   world.setContactParams(contact);
-  EXPECT_EQ(world.awakeBodyCount(), 5);
+  EXPECT_EQ(world.counters().awake_bodies, 5);
   // Woken, they find their contacts anew (Bullet's manifolds went with them): a settling of
   // under 0.2 rad/s that decays within a few steps, then they sleep again.
   run(&world, world.params().sleep.time + 0.05);
-  EXPECT_EQ(world.awakeBodyCount(), 0) << "at rest, they sleep again";
+  EXPECT_EQ(world.counters().awake_bodies, 0) << "at rest, they sleep again";
   world.setContactModel(ContactModel::kGodObject);
-  EXPECT_EQ(world.awakeBodyCount(), 5);
+  EXPECT_EQ(world.counters().awake_bodies, 5);
 }
 
 TEST(Sleeping, AResetStartsAsleepAgainAndRepeatsTheFirstRun)
@@ -216,7 +216,7 @@ TEST(Sleeping, AThousandRestingBoxesSleepAndAFingerWakesOnlyTheOneItPresses)
   GodFingerWorld world(scene, WorldParams());
   const int finger = world.addInterface(Eigen::Vector3d(0.0, 0.0, kBox + 0.05));
   run(&world, 0.01);
-  EXPECT_EQ(world.awakeBodyCount(), 0);
+  EXPECT_EQ(world.counters().awake_bodies, 0);
   // The finger comes down on box0 and presses it 4 mm: box0 wakes, its neighbours 4 cm away do not.
   const double dt = world.params().time_step;
   for (long i = 0; i < std::lround(0.5 / dt); ++i)
@@ -226,7 +226,7 @@ TEST(Sleeping, AThousandRestingBoxesSleepAndAFingerWakesOnlyTheOneItPresses)
     world.step();
   }
   EXPECT_EQ(world.interfaceState(finger).contact_count, 1);
-  EXPECT_EQ(world.awakeBodyCount(), 1);
+  EXPECT_EQ(world.counters().awake_bodies, 1);
   EXPECT_FALSE(world.bodyState(world.scene().find("box0")).asleep);
   EXPECT_TRUE(world.bodyState(world.scene().find("box1")).asleep);
 }

@@ -3,7 +3,8 @@
 // Waits for ~duration seconds' worth of the 1 kHz loop (duration x 1000 device states and as
 // many feedback messages) and for three windows of the measured device-to-force time (the
 // servo's latency_us_*, or the driver's round_trip_us_*) on /diagnostics, prints the rates and
-// times. Only a loose sanity floor on the rates: the messages must come within
+// times, and checks that the physics publishes its step profile (p50 and p99 of every stage of
+// the world step) in every window. Only a loose sanity floor on the rates: the messages must come within
 // duration x 1000 / min_rate seconds, which a loaded machine does not miss; the rate and latency
 // targets are measured in scripts/bench.
 // Parameters: ~interface ("finger"), ~duration (5 s), ~min_rate (250 Hz: a quarter of the
@@ -14,6 +15,8 @@
 #include <ros/ros.h>
 
 #include <god_finger/DeviceState.h>
+
+#include "god_finger/physics/step_profile.h"
 
 #include <algorithm>
 #include <atomic>
@@ -28,11 +31,48 @@ std::atomic<long> g_feedback{0};
 std::mutex g_mutex;
 std::vector<double> g_p50;
 std::vector<double> g_p99;
+// The world step's profile (step_profile.h) on /diagnostics: statuses named "...: step profile"
+// seen, those with both percentiles of every stage, and the largest solve p50 (us).
+long g_profiles = 0;
+long g_complete_profiles = 0;
+double g_solve_p50 = 0.0;
+
+void onStepProfile(const diagnostic_msgs::DiagnosticStatus& status)
+{
+  const std::string suffix = ": step profile";
+  if (status.name.size() < suffix.size() ||
+      status.name.compare(status.name.size() - suffix.size(), suffix.size(), suffix) != 0)
+  {
+    return;
+  }
+  int keys = 0;
+  double solve_p50 = 0.0;
+  for (int s = 0; s < god_finger::kStepStageCount; ++s)
+  {
+    const std::string stage = god_finger::stepStageName(static_cast<god_finger::StepStage>(s));
+    for (const auto& pair : status.values)
+    {
+      if ((pair.key == stage + "_us_p50" || pair.key == stage + "_us_p99") && pair.value != "null")
+      {
+        ++keys;
+        if (pair.key == "solve_us_p50")
+        {
+          solve_p50 = std::stod(pair.value);
+        }
+      }
+    }
+  }
+  std::lock_guard<std::mutex> lock(g_mutex);
+  ++g_profiles;
+  g_complete_profiles += keys == 2 * god_finger::kStepStageCount ? 1 : 0;
+  g_solve_p50 = std::max(g_solve_p50, solve_p50);
+}
 
 void onDiagnostics(const diagnostic_msgs::DiagnosticArray::ConstPtr& array)
 {
   for (const auto& status : array->status)
   {
+    onStepProfile(status);
     double p50 = -1.0;
     double p99 = -1.0;
     for (const auto& pair : status.values)
@@ -132,6 +172,11 @@ TEST(HapticLoop, RunsAtOneKilohertz)
                                  std::to_string(feedback_rate) + " Hz, device to force p50 " + std::to_string(p50) +
                                  " us, p99 " + std::to_string(p99) + " us");
   EXPECT_GT(p50, 0.0) << "no device-to-force time on /diagnostics";
+  // The world step's stages, p50 and p99 each, in every window the physics published.
+  std::lock_guard<std::mutex> lock(g_mutex);
+  EXPECT_GT(g_profiles, 0) << "no step profile on /diagnostics";
+  EXPECT_EQ(g_complete_profiles, g_profiles) << "a step profile without both percentiles of every stage";
+  EXPECT_GT(g_solve_p50, 0.0) << "the solve stage never took any time";
 }
 }  // namespace
 

@@ -304,7 +304,7 @@ TEST(HandLoop, PoseOrientationsOrientTheirFingersUnsetOnesStay3Dof)
   EXPECT_LT(world.interfaceState(1).proxy_orientation.angularDistance(rolled), 1e-6);  // at rest there
   EXPECT_FALSE(world.interfaceState(2).oriented);
   EXPECT_EQ(hand.loop->counters().rejected_orientations.load(), 200);  // the NaN one, every tick
-  EXPECT_EQ(world.rejectedTargets(), 0);
+  EXPECT_EQ(world.counters().rejected_targets, 0);
 }
 
 // The mug's pose (the highest body's) after `ticks` of the fake hand's script.

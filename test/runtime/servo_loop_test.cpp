@@ -227,7 +227,7 @@ TEST(ServoLoop, ThePadSolverChangesBetweenTwoSteps)
   auto loop = makeLoop(pressingHand());
   runTicks(*loop, 600);  // pressing the ball
   EXPECT_EQ(loop->world().params().pad_solver, PadSolver::kConstraint);
-  const int rows_constraint = loop->world().solverContactRows();
+  const int rows_constraint = loop->world().counters().solver_contact_rows;
   ServoCommand command;
   command.kind = ServoCommand::Kind::kSetPadSolver;
   command.pad_solver = PadSolver::kPoints;
@@ -238,7 +238,7 @@ TEST(ServoLoop, ThePadSolverChangesBetweenTwoSteps)
   EXPECT_EQ(static_cast<PadSolver>(loop->counters().pad_solver.load()), PadSolver::kPoints);
   runTicks(*loop, 100, 601);
   // The paper's points: a row set per sub-god-object, more than the pad's rows.
-  EXPECT_GT(loop->world().solverContactRows(), rows_constraint);
+  EXPECT_GT(loop->world().counters().solver_contact_rows, rows_constraint);
   EXPECT_LT(loop->world().interfaceState(0).user_force.norm(), 20.0);
   EXPECT_TRUE(loop->world().interfaceState(0).proxy_position.allFinite());
 
@@ -310,7 +310,8 @@ TEST(ServoLoop, NonFiniteReadingsAreRejectedAndTheLastTargetStays)
   auto loop = makeLoop(std::move(device));
   runTicks(*loop, 100);
   EXPECT_EQ(loop->counters().rejected_readings.load(), 50);
-  EXPECT_EQ(loop->world().rejectedTargets(), 0);  // counted once, by the loop: the world gets the last good target
+  // Counted once, by the loop: the world gets the last good target.
+  EXPECT_EQ(loop->world().counters().rejected_targets, 0);
   EXPECT_TRUE(loop->world().interfaceState(0).interface_position.isApprox(Eigen::Vector3d(0, 0, 0.1)));
   EXPECT_TRUE(loop->world().interfaceState(0).user_force.allFinite());
 }
@@ -376,7 +377,7 @@ TEST(ServoLoop, NonFiniteReadingsAreNeverPassedOnAndTheirButtonsPressNothing)
   }
   EXPECT_EQ(passed_on, 0);
   EXPECT_EQ(loop->counters().rejected_readings.load(), 40);
-  EXPECT_EQ(loop->world().rejectedTargets(), 0);
+  EXPECT_EQ(loop->world().counters().rejected_targets, 0);
   EXPECT_EQ(loop->world().contactModel(), ContactModel::kGodObject);  // button 0 of a bad reading: no cycle
   EXPECT_EQ(loop->world().steps(), 100);                              // button 1 of a bad reading: no reset
 }

@@ -4,8 +4,8 @@
 // bit, and no unusable orientation ever reaches the physics.
 #include "allocation_counter.h"
 #include "god_finger/devices/fake_device.h"
-#include "god_finger/scenarios/experiment.h"
 #include "god_finger/runtime/servo_loop.h"
+#include "god_finger/scenarios/experiment.h"
 
 #include <gtest/gtest.h>
 
@@ -460,7 +460,7 @@ TEST(OrientedServo, UnusableOrientationsAreIgnoredCountedAndNeverReachThePhysics
   run(*loop, 0, ticksOf(0.05));
   EXPECT_FALSE(loop->world().interfaceState(0).oriented);  // no good orientation yet: 3-DOF
   EXPECT_EQ(loop->counters().rejected_orientations.load(), ticksOf(0.05));
-  const long rejected_targets = loop->world().rejectedTargets();
+  const long rejected_targets = loop->world().counters().rejected_targets;
   for (long k = ticksOf(0.05); k < ticksOf(0.6); ++k)
   {
     run(*loop, k, 1,
@@ -479,8 +479,8 @@ TEST(OrientedServo, UnusableOrientationsAreIgnoredCountedAndNeverReachThePhysics
     }
   }
   EXPECT_EQ(loop->counters().rejected_orientations.load(), ticksOf(0.05) + ticksOf(0.3));
-  EXPECT_EQ(loop->world().rejectedTargets(), rejected_targets);  // the loop passed on none
-  EXPECT_EQ(loop->counters().rejected_readings.load(), 0);       // the positions were taken
+  EXPECT_EQ(loop->world().counters().rejected_targets, rejected_targets);  // the loop passed on none
+  EXPECT_EQ(loop->counters().rejected_readings.load(), 0);                 // the positions were taken
   EXPECT_LT(loop->world().interfaceState(0).proxy_orientation.angularDistance(turned), 1e-3);
 }
 }  // namespace

@@ -1,7 +1,7 @@
 // A Bullet world of rigid objects touched by god-object proxies with god-finger contact areas.
 //
 // One step (fixed time step, deterministic: the same calls give the same trajectory bit for
-// bit):
+// bit) runs the stages step_profile.h lists, each timed (stepProfile()); in short:
 //  1. each proxy gets the coupling force k (p_I - p_GO) + b (v_I - v_GO), saturated
 //     (haptics/virtual_coupling.h, with its interface's profile);
 //  2. Bullet's collision detection finds the proxies' contacts;
@@ -31,6 +31,7 @@
 // original triangle mesh even where collision uses a convex decomposition.
 #pragma once
 
+#include "god_finger/physics/step_profile.h"
 #include "god_finger/physics/world_params.h"
 #include "god_finger/physics/world_state.h"
 #include "god_finger/scene/scene_description.h"
@@ -184,21 +185,13 @@ class GodFingerWorld
     bool fingers_touch_walk_mesh = false;
   };
   BodyCollision bodyCollision(int body) const;
-  // Dynamic bodies awake now (simulated in the next step); static bodies never count.
-  int awakeBodyCount() const;
-  // Contact points between a proxy and an object the solver received in the last step (test
-  // hook for the Bullet manifold limits).
-  int solverProxyContactPoints() const;
-  // Contact rows (normal, friction, torsional) the solver solved in the last step, all pairs.
-  int solverContactRows() const;
-  // Sequential-impulse iterations the last step ran (WorldParams::solver_tolerance may stop
-  // them before solver_iterations).
-  int solverIterationsUsed() const;
-  // Deepest penetration (m, >= 0) among all contacts found in the last step, before the solver.
-  double deepestPenetration() const;
+  // What the last step counted (awake bodies, solver rows and iterations, proxy points, deepest
+  // penetration, dropped contacts) and the totals since the world was made (rejected targets).
+  WorldCounters counters() const;
+  // What the last step spent, stage by stage (step_profile.h). Real-time safe.
+  const StepProfile& stepProfile() const;
   double time() const;
   long steps() const;
-  long rejectedTargets() const;
 
  private:
   struct Impl;

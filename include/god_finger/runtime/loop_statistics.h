@@ -1,10 +1,13 @@
 // Statistics of the servo loop's samples over a window (the publisher side: not real-time,
 // it keeps every sample of the window): rate, and percentiles of the period, the
-// device-to-force latency and the world step. Units: Hz and microseconds.
+// device-to-force latency and the world step, whole and stage by stage (step_profile.h).
+// Units: Hz and microseconds.
 #pragma once
 
+#include "god_finger/physics/step_profile.h"
 #include "god_finger/runtime/servo_loop.h"
 
+#include <array>
 #include <vector>
 
 namespace god_finger
@@ -23,6 +26,20 @@ struct LoopSummary
   Percentiles period_us;
   Percentiles latency_us;
   Percentiles step_us;
+  std::array<Percentiles, kStepStageCount> stage_us;  // by StepStage
+};
+
+// Percentiles of each stage of the world's steps over a window (the publisher side: it keeps every
+// step's profile of the window; adding allocates as the window grows).
+class StepProfileStatistics
+{
+ public:
+  void add(const StepProfile& profile);
+  std::array<Percentiles, kStepStageCount> summarize() const;
+  void clear();
+
+ private:
+  std::array<std::vector<double>, kStepStageCount> stage_us_;
 };
 
 class LoopStatistics
@@ -38,6 +55,7 @@ class LoopStatistics
   std::vector<double> period_us_;
   std::vector<double> latency_us_;
   std::vector<double> step_us_;
+  StepProfileStatistics stages_;
   double window_start_ = -1.0;  // steady seconds
 };
 }  // namespace god_finger

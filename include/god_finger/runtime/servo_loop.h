@@ -196,7 +196,8 @@ struct ServoSample
   // side's rendering (at the next tick's start), applied at the next tick's update; a frame
   // device's: the rendering at the read, applied in the same frame.
   double latency_us = 0.0;
-  double step_us = 0.0;  // the world step whose result gave the force (wall clock)
+  double step_us = 0.0;      // the world step whose result gave the force (wall clock)
+  StepProfile step_profile;  // that step's stages (god_finger/physics/step_profile.h)
   // The force was rendered on the haptic side against the anchor (physics late, or recovering
   // from it), not the step's coupling reaction; user_force is then that rendering's.
   bool stale = false;
@@ -341,6 +342,7 @@ class ServoLoop
     long tick = -1;  // the tick whose targets the step took; -1: none yet (proxies at their start)
     double done_at = 0.0;
     double step_us = 0.0;
+    StepProfile step_profile;
     std::vector<ProxyResult> proxies;
   };
   // The haptic side's state per interface (world frame).
