@@ -3,8 +3,10 @@
 // ball) and of objects (1, 10, 100 balls on a table, one finger). One benchmark iteration is
 // one whole scripted run (the hand's motion included, the world's construction not); the
 // counter `steps` gives steps per run, so time per step = time / steps (scripts/bench_report).
+// Also what the step's profile costs (BM_StepProfileClock).
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scenarios/experiment.h"
+#include "stages/stage_clock.h"
 
 #include <benchmark/benchmark.h>
 
@@ -31,9 +33,10 @@ const Layout kModels[] = {{ContactModel::kGodObject, PadSolver::kConstraint, "go
 const Scenario kScenarios[] = {Scenario::kSlide, Scenario::kLiftOne, Scenario::kLiftTwo, Scenario::kPinchCylinder};
 
 // Runs `fingers` through `world` for `duration` (s); returns the steps taken and adds the
-// solver's iterations and rows of every step to `iterations` and `rows`.
+// solver's iterations and rows of every step to `iterations` and `rows`, and the stages of every
+// timed step (one in profile_every) to `stages` (ns; stages->step counts them).
 long runScript(GodFingerWorld* world, const std::vector<WaypointPath>& fingers, double duration, double* iterations,
-               double* rows)
+               double* rows, StepProfile* stages)
 {
   const double dt = world->params().time_step;
   const long steps = std::lround(duration / dt);
@@ -44,8 +47,18 @@ long runScript(GodFingerWorld* world, const std::vector<WaypointPath>& fingers, 
       world->setInterfaceTarget(static_cast<int>(f), fingers[f].at((i + 1) * dt));
     }
     world->step();
-    *iterations += world->counters().solver_iterations;
-    *rows += world->counters().solver_contact_rows;
+    const WorldCounters counters = world->counters();
+    *iterations += counters.solver_iterations;
+    *rows += counters.solver_contact_rows;
+    const StepProfile& profile = world->stepProfile();
+    if (profile.step == world->steps())
+    {
+      ++stages->step;
+      for (int s = 0; s < kStepStageCount; ++s)
+      {
+        stages->stage_ns[s] += profile.stage_ns[s];
+      }
+    }
   }
   return steps;
 }
@@ -56,6 +69,7 @@ void runWorlds(benchmark::State& state, const SceneDescription& scene, const Wor
   long steps = 0;
   double iterations = 0.0;
   double rows = 0.0;
+  StepProfile stages;
   for (auto _ : state)
   {
     state.PauseTiming();
@@ -66,8 +80,10 @@ void runWorlds(benchmark::State& state, const SceneDescription& scene, const Wor
     }
     iterations = 0.0;
     rows = 0.0;
+    stages = StepProfile();
+    stages.step = 0;
     state.ResumeTiming();
-    steps = runScript(world.get(), fingers, duration, &iterations, &rows);
+    steps = runScript(world.get(), fingers, duration, &iterations, &rows, &stages);
     state.PauseTiming();
     world.reset();
     state.ResumeTiming();
@@ -76,6 +92,12 @@ void runWorlds(benchmark::State& state, const SceneDescription& scene, const Wor
   // Per step, of the last run: solver iterations used and contact rows.
   state.counters["iterations"] = iterations / std::max(1L, steps);
   state.counters["rows"] = rows / std::max(1L, steps);
+  // Per timed step of the last run, each stage's time (us): where the step goes (step_profile.h).
+  for (int s = 0; s < kStepStageCount; ++s)
+  {
+    state.counters[std::string(stepStageName(static_cast<StepStage>(s))) + "_us"] =
+        1e-3 * static_cast<double>(stages.stage_ns[s]) / std::max(1L, stages.step);
+  }
 }
 
 // The paper's scenarios as the experiments run them (pinch cut to 6 s: approach, lift, hold).
@@ -170,8 +192,27 @@ void BM_ObjectsStep(benchmark::State& state)
             1.5);
   state.SetLabel(kModels[state.range(1)].label);
 }
+
+// What timing one step costs (step_profile.h): the clock started, one mark per stage, finished,
+// as GodFingerWorld::step does on a timed step (one in WorldParams::profile_every).
+void BM_StepProfileClock(benchmark::State& state)
+{
+  StepProfile profile;
+  internal::StageClock clock(&profile);
+  for (auto _ : state)
+  {
+    clock.start(true);
+    for (int s = 0; s < kStepStageCount; ++s)
+    {
+      clock.mark(static_cast<StepStage>(s));
+    }
+    clock.finish(0);
+    benchmark::DoNotOptimize(profile);
+  }
+}
 }  // namespace
 
+BENCHMARK(BM_StepProfileClock)->Unit(benchmark::kNanosecond)->Repetitions(3);
 BENCHMARK(BM_ScenarioStep)
     ->ArgsProduct({{0, 1, 2, 3}, {0, 1, 2, 3}})
     ->ArgNames({"scenario", "model"})

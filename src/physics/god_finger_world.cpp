@@ -57,7 +57,8 @@ GodFingerWorld::~GodFingerWorld() = default;  // WorldCore tears Bullet's world 
 void GodFingerWorld::step()
 {
   WorldCore& core = *impl_;
-  core.clock.start();
+  const int every = core.params.profile_every;
+  core.clock.start(every > 0 && core.steps % every == 0);
   applyCouplings(&core);
   core.clock.mark(StepStage::kCoupling);
   wakeNearFingersAndMovers(&core);
@@ -85,7 +86,7 @@ void GodFingerWorld::step()
   }
   core.overlap.update(core.params, &core.proxies);
   core.clock.mark(StepStage::kOverlap);
-  core.clock.finish();
+  core.clock.finish(core.steps);
 }
 
 void GodFingerWorld::reset()

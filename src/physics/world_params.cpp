@@ -117,6 +117,9 @@ const ParameterTable<WorldParams>& worldParameterTable()
         realRow<P>("let_go_time", "s", closed(0.0, 10.0),
                    "a finger pressing an object that is deleted lets go over this time (its force ramps to zero)",
                    [](P& p) -> double& { return p.let_go_time; }),
+        integerRow<P>("profile_every", closed(0, 1000000),
+                      "one step in this many is timed stage by stage (/diagnostics' step profile; 0: none, 1: all)",
+                      [](P& p) -> int& { return p.profile_every; }),
     };
     rows.insert(rows.end(), more.begin(), more.end());
     return rows;

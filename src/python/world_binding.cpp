@@ -394,6 +394,40 @@ class World
     const std::lock_guard<std::mutex> lock(mutex_);
     return world_->counters().rejected_targets;
   }
+  py::dict counters() const
+  {
+    WorldCounters counters;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      counters = world_->counters();
+    }
+    py::dict out;
+    out["awake_bodies"] = counters.awake_bodies;
+    out["solver_contact_rows"] = counters.solver_contact_rows;
+    out["solver_iterations"] = counters.solver_iterations;
+    out["solver_proxy_points"] = counters.solver_proxy_points;
+    out["deepest_penetration"] = counters.deepest_penetration;
+    out["rejected_targets"] = counters.rejected_targets;
+    out["dropped_contacts"] = counters.dropped_contacts;
+    out["dropped_contacts_total"] = counters.dropped_contacts_total;
+    return out;
+  }
+  py::dict stepProfile() const
+  {
+    StepProfile profile;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      profile = world_->stepProfile();
+    }
+    py::dict out;
+    out["step"] = profile.step;
+    out["total_ns"] = profile.total_ns;
+    for (int s = 0; s < kStepStageCount; ++s)
+    {
+      out[py::str(std::string(stepStageName(static_cast<StepStage>(s))) + "_ns")] = profile.stage_ns[s];
+    }
+    return out;
+  }
   const std::string& path() const
   {
     return path_;
@@ -694,6 +728,14 @@ void bindWorld(py::module_& module)
       .def_property_readonly("warnings", &World::warnings,
                              "what the loader and the world found about the scene (one line each)")
       .def_property_readonly("rejected_targets", &World::rejectedTargets, "targets the C++ world ignored")
+      .def_property_readonly("counters", &World::counters,
+                             "dict: what the last step counted (awake_bodies, solver_contact_rows, solver_iterations,\n"
+                             "solver_proxy_points, deepest_penetration m, dropped_contacts) and totals (rejected_targets,\n"
+                             "dropped_contacts_total)")
+      .def_property_readonly("step_profile", &World::stepProfile,
+                             "dict: the last timed step (one in profile_every) stage by stage: step, total_ns and\n"
+                             "<stage>_ns for coupling, wake, collide, contact_areas, solve, record, soft_bodies, "
+                             "sleep,\nescapees, overlap")
       .def("__repr__",
            [](const World& w)
            {

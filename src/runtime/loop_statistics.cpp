@@ -62,6 +62,11 @@ void LoopStatistics::clear()
 
 void StepProfileStatistics::add(const StepProfile& profile)
 {
+  if (profile.step < 0 || profile.step == last_step_)
+  {
+    return;
+  }
+  last_step_ = profile.step;
   for (int s = 0; s < kStepStageCount; ++s)
   {
     stage_us_[s].push_back(1e-3 * static_cast<double>(profile.stage_ns[s]));

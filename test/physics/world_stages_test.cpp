@@ -312,7 +312,9 @@ TEST_F(TableBox, ASceneEditKeepsEveryProxyWhole)
 
 TEST(WorldStages, EveryStepIsProfiledStageByStage)
 {
-  GodFingerWorld world(loadUrdfScene(kScenes + "/table_box.urdf"), WorldParams());
+  WorldParams params;
+  params.profile_every = 1;
+  GodFingerWorld world(loadUrdfScene(kScenes + "/table_box.urdf"), params);
   world.addInterface(Eigen::Vector3d(0.0, 0.0, 0.06 + world.params().coupling.proxy_radius));
   world.setInterfaceTarget(0, Eigen::Vector3d(0.0, 0.0, 0.05));
   std::set<std::string> names;
@@ -328,12 +330,35 @@ TEST(WorldStages, EveryStepIsProfiledStageByStage)
       names.insert(stepStageName(static_cast<StepStage>(s)));
     }
     EXPECT_EQ(sum, profile.total_ns);
+    EXPECT_EQ(profile.step, world.steps());
     EXPECT_GT(profile[StepStage::kContactAreas], 0);  // the finger presses the cube
     EXPECT_GT(profile[StepStage::kSolve], 0);
   }
   EXPECT_EQ(names.size(), static_cast<std::size_t>(kStepStageCount));
   EXPECT_EQ(names.count("unknown"), 0u);
   EXPECT_EQ(world.interfaceState(0).contact_count, 1);
+}
+TEST(WorldStages, OneStepInProfileEveryIsTimed)
+{
+  WorldParams params;
+  params.profile_every = 4;
+  GodFingerWorld world(loadUrdfScene(kScenes + "/table_box.urdf"), params);
+  EXPECT_EQ(world.stepProfile().step, -1);
+  std::vector<long> timed;
+  for (int k = 0; k < 10; ++k)
+  {
+    world.step();
+    if (timed.empty() || timed.back() != world.stepProfile().step)
+    {
+      timed.push_back(world.stepProfile().step);
+    }
+  }
+  EXPECT_EQ(timed, (std::vector<long>{1, 5, 9}));  // the steps that began at 0, 4 and 8
+  params.profile_every = 0;
+  GodFingerWorld untimed(loadUrdfScene(kScenes + "/table_box.urdf"), params);
+  untimed.step();
+  EXPECT_EQ(untimed.stepProfile().step, -1);
+  EXPECT_EQ(untimed.stepProfile().total_ns, 0);
 }
 }  // namespace
 }  // namespace god_finger::internal

@@ -72,6 +72,32 @@ def test_a_finger_touches_with_an_area(scene):
     assert state.force[2] > 2.0
 
 
+def test_the_step_profile_and_counters(scene):
+    # Every step timed (profile_every=1): the stages sum to the step, the touching finger's contact
+    # area takes time; the counters say what the solver did.
+    world = god_finger.World(scene("table_ball.urdf"), profile_every=1)
+    assert world.step_profile["step"] == -1  # nothing timed yet
+    finger = world.add_finger([0.0, 0.0, 0.09])
+    world.set_target(finger, [0.0, 0.0, 0.075])
+    world.step(300)
+    profile = world.step_profile
+    stages = ["coupling", "wake", "collide", "contact_areas", "solve", "record", "soft_bodies", "sleep", "escapees",
+              "overlap"]
+    assert profile["step"] == 300
+    assert sum(profile[stage + "_ns"] for stage in stages) == profile["total_ns"]
+    assert profile["contact_areas_ns"] > 0 and profile["solve_ns"] > 0
+    counters = world.counters
+    assert counters["solver_contact_rows"] > 0 and counters["solver_iterations"] > 0
+    assert counters["solver_proxy_points"] >= 1
+    assert 0.0 <= counters["deepest_penetration"] < 0.005
+    assert counters["dropped_contacts_total"] == 0 and counters["rejected_targets"] == 0
+    # One step in 16 by default.
+    world = god_finger.World(scene("table_ball.urdf"))
+    assert world.params["profile_every"] == 16
+    world.step(20)
+    assert world.step_profile["step"] == 17
+
+
 def test_model_changes_the_run(scene):
     def push(model_at_start, model_later):
         world = god_finger.World(scene("table_ball.urdf"), model=model_at_start)

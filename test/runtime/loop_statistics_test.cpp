@@ -11,9 +11,10 @@ namespace god_finger
 {
 namespace
 {
-StepProfile profileWith(StepStage stage, std::int64_t ns)
+StepProfile profileWith(StepStage stage, std::int64_t ns, long step)
 {
   StepProfile profile;
+  profile.step = step;
   profile.stage_ns[static_cast<int>(stage)] = ns;
   profile.total_ns = ns;
   return profile;
@@ -26,7 +27,7 @@ TEST(StepProfileStatistics, PercentilesOfEachStageInMicroseconds)
   // last, which takes 500 us.
   for (int k = 1; k <= 100; ++k)
   {
-    StepProfile profile = profileWith(StepStage::kSolve, 1000 * k);
+    StepProfile profile = profileWith(StepStage::kSolve, 1000 * k, 16 * k);
     profile.stage_ns[static_cast<int>(StepStage::kContactAreas)] = k == 100 ? 500000 : 7000;
     statistics.add(profile);
   }
@@ -50,12 +51,32 @@ TEST(StepProfileStatistics, TheLoopsSummaryCarriesInterfaceZerosStepProfiles)
   {
     ServoSample sample;
     sample.interface = interface;
-    sample.step_profile = profileWith(StepStage::kCollide, interface == 0 ? 3000 : 9000);
+    sample.step_profile = profileWith(StepStage::kCollide, interface == 0 ? 3000 : 9000, 1 + interface);
     statistics.add(sample);
   }
   const LoopSummary summary = statistics.summarize();
   EXPECT_EQ(summary.ticks, 1);
   EXPECT_EQ(summary.stage_us[static_cast<int>(StepStage::kCollide)].max, 3.0);  // one step per tick
+}
+
+TEST(StepProfileStatistics, EachTimedStepCountsOnce)
+{
+  // The world keeps a timed step's profile until the next timed one (profile_every): the samples
+  // of the steps between carry it again.
+  StepProfileStatistics statistics;
+  statistics.add(StepProfile());  // no step timed yet
+  for (int k = 0; k < 16; ++k)
+  {
+    statistics.add(profileWith(StepStage::kSolve, 4000, 1));
+  }
+  statistics.add(profileWith(StepStage::kSolve, 100000, 17));
+  statistics.add(profileWith(StepStage::kSolve, 10000, 33));
+  const Percentiles solve = statistics.summarize()[static_cast<int>(StepStage::kSolve)];
+  EXPECT_EQ(solve.max, 100.0);
+  EXPECT_EQ(solve.p50, 10.0);  // of 4, 10 and 100 us (with the copies, 4 would be the median)
+  statistics.clear();
+  statistics.add(profileWith(StepStage::kSolve, 10000, 33));  // still the same step
+  EXPECT_EQ(statistics.summarize()[static_cast<int>(StepStage::kSolve)].max, 0.0);
 }
 
 TEST(StepProfileStatistics, StageNamesAreDistinctAndKnown)

@@ -14,6 +14,8 @@
 //   escapees       bodies past the world's bounds go back to their start
 //   overlap        the push apart of fingers whose areas overlap, for the next step
 //
+// One step in WorldParams::profile_every is timed (a step's eleven clock reads cost about 0.26 us,
+// 5 % of a 4 us step; one in 16 costs 0.4 %); the others cost one branch per stage.
 // Units: nanoseconds of the steady clock (std::chrono::steady_clock, the TSC on x86 Linux). Plain
 // data; reading and copying it is real-time safe.
 #pragma once
@@ -43,6 +45,7 @@ const char* stepStageName(StepStage stage);
 
 struct StepProfile
 {
+  long step = -1;  // the world's step count after the step timed (GodFingerWorld::steps()); -1: none yet
   std::array<std::int64_t, kStepStageCount> stage_ns{};  // by StepStage
   std::int64_t total_ns = 0;                             // the whole step (the sum of the stages)
 

@@ -29,17 +29,20 @@ struct LoopSummary
   std::array<Percentiles, kStepStageCount> stage_us;  // by StepStage
 };
 
-// Percentiles of each stage of the world's steps over a window (the publisher side: it keeps every
-// step's profile of the window; adding allocates as the window grows).
+// Percentiles of each stage of the world's timed steps over a window (the publisher side: it keeps
+// every timed step's profile of the window; adding allocates as the window grows).
 class StepProfileStatistics
 {
  public:
+  // A profile of a step added before (the world times one step in profile_every and keeps its
+  // profile until the next), or of none yet (step -1), is not added again.
   void add(const StepProfile& profile);
   std::array<Percentiles, kStepStageCount> summarize() const;
   void clear();
 
  private:
   std::array<std::vector<double>, kStepStageCount> stage_us_;
+  long last_step_ = -1;  // the step of the last profile added (kept across windows)
 };
 
 class LoopStatistics
