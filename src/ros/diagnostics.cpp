@@ -3,6 +3,8 @@
 #include "god_finger/support/input_error.h"
 #include "parameters.h"
 
+#include <algorithm>
+
 namespace god_finger
 {
 void addValue(diagnostic_msgs::DiagnosticStatus* status, const std::string& key, const std::string& value)
@@ -11,6 +13,19 @@ void addValue(diagnostic_msgs::DiagnosticStatus* status, const std::string& key,
   pair.key = key;
   pair.value = value;
   status->values.push_back(pair);
+}
+
+void raiseLevel(diagnostic_msgs::DiagnosticStatus* status, DiagnosticLevel level, const std::string& reason)
+{
+  static_assert(static_cast<int>(DiagnosticLevel::kWarn) == diagnostic_msgs::DiagnosticStatus::WARN &&
+                    static_cast<int>(DiagnosticLevel::kError) == diagnostic_msgs::DiagnosticStatus::ERROR,
+                "DiagnosticLevel holds diagnostic_msgs' values");
+  status->level = std::max<std::uint8_t>(status->level, static_cast<std::uint8_t>(level));
+  if (level == DiagnosticLevel::kOk || reason.empty())
+  {
+    return;
+  }
+  status->message = status->message.empty() || status->message == "running" ? reason : status->message + "; " + reason;
 }
 
 std::FILE* openTimingCsv(const ros::NodeHandle& pnh, const std::string& header)

@@ -76,8 +76,9 @@ struct PhysicsNode::Impl
     // target it may use (pulled back out of a contact the device has not paid for), counting the
     // force the last step holds for it (heldForce), and sends its count after each step.
     std::unique_ptr<ChannelPort> channel;
-    MultirateStep held;          // the last step's, for heldForce (none yet: no planes, no force)
-    bool port_answered = false;  // the port has answered once
+    double contact_credit = 0.0;  // J: the profile's passivity_contact_credit (the channel's status level)
+    MultirateStep held;           // the last step's, for heldForce (none yet: no planes, no force)
+    bool port_answered = false;   // the port has answered once
   };
 
   ros::NodeHandle nh;
@@ -96,6 +97,8 @@ struct PhysicsNode::Impl
   std::atomic<bool> running{true};
   long rejected_poses = 0;
   long overruns = 0;
+  long reported_overruns = 0;               // at the last diagnostics (loop thread)
+  DiagnosticThresholds thresholds;          // the statuses' levels (runtime/diagnostic_levels.h)
   std::unique_ptr<WorldServices> services;  // reset_scene, set_contact_model, dynamic_reconfigure
   std::vector<double> step_us;              // since the last diagnostics (under `mutex`)
   std::vector<double> step_us_read;         // publishDiagnostics' swap partner: both keep their capacity
@@ -114,6 +117,7 @@ struct PhysicsNode::Impl
                 .profile;
         std::lock_guard<std::mutex> lock(mutex);
         interfaces[i].coupling = profile.coupling;
+        interfaces[i].contact_credit = profile.passivity.passivity_contact_credit;
         if (!interfaces[i].port_answered)  // the port has not answered yet
         {
           interfaces[i].channel->reconfigure(profile.passivity, world->params().time_step);
@@ -344,9 +348,13 @@ struct PhysicsNode::Impl
     status.name = node_name + ": physics loop";
     status.hardware_id = "god_finger";
     const double rate = steps / seconds;
-    status.level =
-        rate < 0.95 * wanted ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
-    status.message = status.level == diagnostic_msgs::DiagnosticStatus::OK ? "running" : "below its rate";
+    status.level = diagnostic_msgs::DiagnosticStatus::OK;
+    status.message = "running";
+    raiseLevel(&status, rate < 0.95 * wanted ? DiagnosticLevel::kWarn : DiagnosticLevel::kOk, "below its rate");
+    // Overruns since the last report, of the steps taken since (the loop's own counts).
+    const long late = overruns - reported_overruns;
+    reported_overruns = overruns;
+    raiseLevel(&status, overrunLevel(late, steps, thresholds), overrunText(late, steps, thresholds));
     auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", jsonNumber(rate));
     add("overruns", std::to_string(overruns));
@@ -366,6 +374,13 @@ struct PhysicsNode::Impl
       channel.level = diagnostic_msgs::DiagnosticStatus::OK;
       channel.message = "physics port";
       interface.channel->addValues(&channel);
+      double credit = 0.0;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        credit = interface.contact_credit;
+      }
+      const double margin = interface.channel->port().margin();
+      raiseLevel(&channel, marginLevel(margin, credit, thresholds), marginText(margin, credit, thresholds));
       array.status.push_back(channel);
     }
     diagnostics_publisher.publish(array);
@@ -434,6 +449,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   impl.pnh = pnh;
   const WorldParams params = readWorldParams(pnh);
   impl.publish_period = 1.0 / readNodeParams(pnh).publish_rate;
+  impl.thresholds = readDiagnosticThresholds(RosParameterSource(pnh));
   std::string scene_path;
   impl.world = loadSceneWorld(pnh, params, &scene_path);
   const std::vector<std::string> names = readStringList(pnh, "interfaces", {"finger"});
@@ -445,6 +461,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     const DeviceProfile profile =
         readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, names[i])), names[i]).profile;
     interface.coupling = profile.coupling;
+    interface.contact_credit = profile.passivity.passivity_contact_credit;
     const std::string unstable =
         couplingStabilityError(interface.coupling, params.coupling.proxy_mass, params.time_step);
     if (!unstable.empty())

@@ -29,6 +29,10 @@
 // The channel's device port (src/ros/channel_port.h): the hand's work through the force applied
 // counted on every state and sent on device_energy (god_finger/PortEnergy); the physics port's
 // packets taken from physics_energy; both on /diagnostics (channel_*), a malformed packet counted.
+// The status is WARN or ERROR (runtime/diagnostic_levels.h, thresholds as private parameters)
+// while no device state came or the newest is older than device_state_timeout, with the local
+// coupling while no proxy state came or the newest is older than proxy_timeout, and for a
+// channel margin beyond the profile's passivity_contact_credit.
 #pragma once
 
 #include <ros/node_handle.h>
