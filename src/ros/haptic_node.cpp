@@ -54,7 +54,8 @@ struct HapticNode::Impl
   ros::Subscriber state_subscriber;
   ros::Subscriber feedback_subscriber;
   ros::Subscriber proxy_subscriber;
-  ros::Publisher pose_publisher;
+  ros::Publisher pose_publisher;            // NAME/pose: for tools (identity for a 3-DOF finger)
+  ros::Publisher interface_pose_publisher;  // NAME/interface_pose: the physics' input, with has_orientation
   ros::Publisher force_publisher;
   ros::Publisher torque_publisher;  // device/torque: a profile with torque_axes only
   ros::Publisher diagnostics_publisher;
@@ -147,8 +148,9 @@ struct HapticNode::Impl
       world_orientation = interface_input.worldOrientation();
     }
     const Eigen::Vector3d& world = input.target;
-    const geometry_msgs::PoseStampedPtr pose =
-        poseMessage(state->header.stamp, world, oriented ? &world_orientation : nullptr);
+    const Eigen::Quaterniond* orientation = oriented ? &world_orientation : nullptr;
+    interface_pose_publisher.publish(interfacePoseMessage(state->header.stamp, world, orientation));
+    const geometry_msgs::PoseStampedPtr pose = poseMessage(state->header.stamp, world, orientation);
     pose_publisher.publish(pose);
     broadcaster.sendTransform(interfaceTransform(*pose, frame));
     if (!state->header.frame_id.empty() && state->header.frame_id != device_frame)
@@ -379,6 +381,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   impl.model_client = physics_nh.serviceClient<god_finger::SetContactModel>("set_contact_model");
   impl.reset_client = physics_nh.serviceClient<std_srvs::Trigger>("reset_scene");
   impl.pose_publisher = nh.advertise<geometry_msgs::PoseStamped>("pose", kPublisherQueue);
+  impl.interface_pose_publisher = nh.advertise<god_finger::InterfacePose>("interface_pose", kPublisherQueue);
   impl.force_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/force", kPublisherQueue);
   if (impl.profile.torque_axes != 0)
   {

@@ -52,7 +52,12 @@ struct PhysicsNode::Impl
     // Read again at the interface's first pose: on several machines the device's launch may
     // load its profile after the physics started (callback thread only).
     bool profile_current = false;
-    ros::Subscriber pose_subscriber;
+    ros::Subscriber pose_subscriber;  // NAME/interface_pose (god_finger/InterfacePose)
+    // NAME/pose (PoseStamped) from a recording made before NAME/interface_pose (a bag played
+    // into this node): its all-zero quaternion is a 3-DOF finger's. Shut down at the first
+    // interface pose: the nodes now send NAME/pose for tools only (the identity for 3-DOF).
+    ros::Subscriber recorded_pose_subscriber;
+    bool interface_pose_seen = false;  // under mutex
     ros::Publisher feedback_publisher;
     ros::Publisher proxy_publisher;
     ros::Publisher proxy_state_publisher;  // NAME/proxy_state: the haptic node's local coupling
@@ -105,9 +110,45 @@ struct PhysicsNode::Impl
   WorldSnapshot snapshot;                   // read by publishScene
   LeftWorldReport left_world;               // guarded by mutex
 
-  void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
+  // NAME/interface_pose: the haptic node's, with every device state.
+  void onInterfacePose(int i, const god_finger::InterfacePose::ConstPtr& message)
   {
-    const Eigen::Vector3d p(message->pose.position.x, message->pose.position.y, message->pose.position.z);
+    bool first = false;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      first = !interfaces[i].interface_pose_seen;
+      interfaces[i].interface_pose_seen = true;
+    }
+    if (first)
+    {
+      interfaces[i].recorded_pose_subscriber.shutdown();
+    }
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+    const bool oriented = poseOrientation(*message, &orientation);
+    onPose(i, message->header, message->pose.position, oriented, orientation);
+  }
+
+  // NAME/pose before any interface pose came: a recording's 3-DOF finger (the all-zero
+  // quaternion) is taken; any other is a tool's copy of an interface pose, not taken.
+  void onRecordedPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (interfaces[i].interface_pose_seen)
+      {
+        return;
+      }
+    }
+    if (recordedThreeDofPose(message->pose))
+    {
+      onPose(i, message->header, message->pose.position, false, Eigen::Quaterniond::Identity());
+    }
+  }
+
+  void onPose(int i, const std_msgs::Header& header, const geometry_msgs::Point& position, bool oriented,
+              const Eigen::Quaterniond& orientation)
+  {
+    const Eigen::Vector3d p(position.x, position.y, position.z);
     if (!interfaces[i].profile_current)
     {
       try
@@ -131,16 +172,17 @@ struct PhysicsNode::Impl
       }
     }
     std::lock_guard<std::mutex> lock(mutex);
-    if (!p.allFinite() || (!message->header.frame_id.empty() && message->header.frame_id != "world"))
+    if (!p.allFinite() || (!header.frame_id.empty() && header.frame_id != "world"))
     {
       ++rejected_poses;
       ROS_WARN_THROTTLE(1.0, "physics: rejected a pose of '%s' (frame '%s', finite %d)", interfaces[i].name.c_str(),
-                        message->header.frame_id.c_str(), int(p.allFinite()));
+                        header.frame_id.c_str(), int(p.allFinite()));
       return;
     }
     interfaces[i].target = p;
-    interfaces[i].oriented = poseOrientation(message->pose, &interfaces[i].orientation);
-    interfaces[i].target_stamp = message->header.stamp;
+    interfaces[i].oriented = oriented;
+    interfaces[i].orientation = orientation;
+    interfaces[i].target_stamp = header.stamp;
     interfaces[i].have_target = true;
     interfaces[i].fresh = true;
     pose_arrived.notify_one();
@@ -470,9 +512,13 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     }
     interface.channel.reset(new ChannelPort(nh, names[i] + "/physics_energy", names[i] + "/device_energy",
                                             profile.passivity, params.time_step));
-    interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
+    interface.pose_subscriber = nh.subscribe<god_finger::InterfacePose>(
+        names[i] + "/interface_pose", kSubscriberQueue,
+        [this, i](const god_finger::InterfacePose::ConstPtr& m) { impl_->onInterfacePose(i, m); }, ros::VoidConstPtr(),
+        ros::TransportHints().tcpNoDelay());
+    interface.recorded_pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
         names[i] + "/pose", kSubscriberQueue,
-        [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),
+        [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onRecordedPose(i, m); }, ros::VoidConstPtr(),
         ros::TransportHints().tcpNoDelay());
     interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", kPublisherQueue);
     interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", kPublisherQueue);

@@ -1,9 +1,11 @@
 // The physics node: a GodFingerWorld stepped at a fixed rate in its own thread, for N
 // interfaces named by ~interfaces (each a namespace under the node's one).
 //
-// Per interface NAME: subscribes NAME/pose (geometry_msgs/PoseStamped, frame world; a non-zero
-// orientation, the finger frame in the world, makes the interface an oriented finger, the
-// all-zero quaternion keeps it 3-DOF: ros/world_messages.h poseMessage); publishes
+// Per interface NAME: subscribes NAME/interface_pose (god_finger/InterfacePose, frame world; with
+// has_orientation, its orientation, the finger frame in the world, makes the interface an
+// oriented finger, without it the finger is 3-DOF: ros/world_messages.h), and, until the first
+// interface pose, NAME/pose from a recording made before interface_pose (a bag played into it:
+// a pose with the all-zero quaternion is a 3-DOF finger's, recordedThreeDofPose); publishes
 // NAME/feedback (geometry_msgs/WrenchStamped: the force on the hand and an oriented finger's
 // torque, world, every step) and NAME/proxy (geometry_msgs/PointStamped: the god-object, every
 // step), NAME/proxy_state (god_finger/ProxyState: the haptic node's local coupling) and
