@@ -101,7 +101,13 @@ struct PhysicsNode::Impl
   std::thread thread;
   std::atomic<bool> running{true};
   long rejected_poses = 0;
+  // Loop thread: steps whose poses were all in before the deadline and that ended after it (the
+  // physics late), and steps taken at the deadline without a new pose from every interface that
+  // has sent one (its poses late, or its device stalled: the step starts at the deadline, so it
+  // ends after it; before any pose came, none is counted).
   long overruns = 0;
+  long late_pose_steps = 0;
+  long reported_late_pose_steps = 0;        // at the last diagnostics
   long reported_overruns = 0;               // at the last diagnostics (loop thread)
   DiagnosticThresholds thresholds;          // the statuses' levels (runtime/diagnostic_levels.h)
   std::unique_ptr<WorldServices> services;  // reset_scene, set_contact_model, dynamic_reconfigure
@@ -186,6 +192,19 @@ struct PhysicsNode::Impl
     interfaces[i].have_target = true;
     interfaces[i].fresh = true;
     pose_arrived.notify_one();
+  }
+
+  // True when an interface has sent a pose (a device drives the world).
+  bool anyTarget() const
+  {
+    for (const Interface& interface : interfaces)
+    {
+      if (interface.have_target)
+      {
+        return true;
+      }
+    }
+    return false;
   }
 
   // True when every interface that has sent a pose has sent a new one since the last step.
@@ -393,13 +412,21 @@ struct PhysicsNode::Impl
     status.level = diagnostic_msgs::DiagnosticStatus::OK;
     status.message = "running";
     raiseLevel(&status, rate < 0.95 * wanted ? DiagnosticLevel::kWarn : DiagnosticLevel::kOk, "below its rate");
-    // Overruns since the last report, of the steps taken since (the loop's own counts).
+    // Overruns since the last report, of the steps taken since (the loop's own counts); a step
+    // that waited for a pose until its deadline is the pose's lateness, not the physics'.
     const long late = overruns - reported_overruns;
     reported_overruns = overruns;
     raiseLevel(&status, overrunLevel(late, steps, thresholds), overrunText(late, steps, thresholds));
+    // Steps that waited for a late pose: the link's or the device side's lateness (WARN at most:
+    // runtime/diagnostic_levels.h), named as such.
+    const long waited = late_pose_steps - reported_late_pose_steps;
+    reported_late_pose_steps = late_pose_steps;
+    raiseLevel(&status, latePoseLevel(waited, steps, thresholds),
+               shareText(waited, steps, thresholds, "waited until their deadline for a late pose"));
     auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", jsonNumber(rate));
     add("overruns", std::to_string(overruns));
+    add("late_pose_steps", std::to_string(late_pose_steps));
     add("rejected_poses", std::to_string(rejected));
     add("step_us_median", jsonNumber(percentile(step_us_read, 0.5)));
     add("step_us_p99", jsonNumber(percentile(step_us_read, 0.99)));
@@ -432,7 +459,8 @@ struct PhysicsNode::Impl
   // new pose is in (so the feedback answers the freshest pose without waiting for a timer
   // tick), never earlier than half a period before its slot and never later than half a period
   // after it. A step (and its publishing) that ends after that latest moment, the schedule's
-  // deadline (runtime/fixed_rate_schedule.h), is an overrun.
+  // deadline (runtime/fixed_rate_schedule.h), is an overrun of the physics when every pose was in
+  // before it; one that waited for a pose until the deadline is a late pose step.
   void loop()
   {
     flushDenormalsInThisThread();             // support/denormals.h
@@ -455,12 +483,15 @@ struct PhysicsNode::Impl
     {
       const double deadline = schedule.deadline();
       sleepUntil(deadline - period_s);
+      bool poses_in = false;  // every interface's new pose came before the deadline
+      bool driven = false;    // some interface has sent a pose
       {
         std::unique_lock<std::mutex> lock(mutex);
-        pose_arrived.wait_until(
+        poses_in = pose_arrived.wait_until(
             lock,
             Clock::time_point(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline))),
             [this] { return allPosesFresh() || !running; });
+        driven = anyTarget();
         step();
       }
       publishStep();
@@ -477,8 +508,10 @@ struct PhysicsNode::Impl
         diagnostics_start = now;
         diagnostics_steps = 0;
       }
+      const long before = schedule.overruns();
       schedule.tickEnded(steadySeconds());  // the next step's window opens at the deadline or now
-      overruns = schedule.overruns();
+      late_pose_steps += driven && !poses_in ? 1 : 0;
+      overruns += (poses_in || !driven) && schedule.overruns() > before ? 1 : 0;
     }
   }
 };

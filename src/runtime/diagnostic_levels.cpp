@@ -33,7 +33,8 @@ const ParameterTable<DiagnosticThresholds>& diagnosticThresholdTable()
   static const ParameterTable<P> table = {
       realRow<P>("overrun_warn_share", "dimensionless", closed(0.0, 1.0),
                  "a loop's /diagnostics status is WARN when more than this share of its ticks since the last "
-                 "report overran (servo loop, physics loop, device loop)",
+                 "report overran (servo loop, physics loop, device loop; and the physics loop's when more than "
+                 "this share of its steps waited for a late pose)",
                  [](P& p) -> double& { return p.overrun_warn_share; }),
       realRow<P>("overrun_error_share", "dimensionless", closed(0.0, 1.0),
                  "a loop's /diagnostics status is ERROR when more than this share of its ticks since the last "
@@ -98,6 +99,11 @@ DiagnosticLevel overrunLevel(long overruns, long ticks, const DiagnosticThreshol
   return DiagnosticLevel::kOk;
 }
 
+DiagnosticLevel latePoseLevel(long late, long ticks, const DiagnosticThresholds& thresholds)
+{
+  return overrunLevel(late, ticks, thresholds) == DiagnosticLevel::kOk ? DiagnosticLevel::kOk : DiagnosticLevel::kWarn;
+}
+
 DiagnosticLevel marginLevel(double margin, double credit, const DiagnosticThresholds& thresholds)
 {
   if (!std::isfinite(margin))
@@ -121,16 +127,21 @@ DiagnosticLevel streamLevel(bool received, double age, double timeout)
   return std::isfinite(age) && age <= timeout ? DiagnosticLevel::kOk : DiagnosticLevel::kError;
 }
 
-std::string overrunText(long overruns, long ticks, const DiagnosticThresholds& thresholds)
+std::string shareText(long count, long ticks, const DiagnosticThresholds& thresholds, const std::string& what)
 {
-  if (overrunLevel(overruns, ticks, thresholds) == DiagnosticLevel::kOk)
+  if (overrunLevel(count, ticks, thresholds) == DiagnosticLevel::kOk)
   {
     return std::string();
   }
-  return roundedNumber(100.0 * static_cast<double>(overruns) / static_cast<double>(ticks)) + " % of ticks overran (" +
-         std::to_string(overruns) + " of " + std::to_string(ticks) + "; WARN above " +
+  return roundedNumber(100.0 * static_cast<double>(count) / static_cast<double>(ticks)) + " % of ticks " + what + " (" +
+         std::to_string(count) + " of " + std::to_string(ticks) + "; WARN above " +
          roundedNumber(100.0 * thresholds.overrun_warn_share) + " %, ERROR above " +
          roundedNumber(100.0 * thresholds.overrun_error_share) + " %)";
+}
+
+std::string overrunText(long overruns, long ticks, const DiagnosticThresholds& thresholds)
+{
+  return shareText(overruns, ticks, thresholds, "overran");
 }
 
 std::string marginText(double margin, double credit, const DiagnosticThresholds& thresholds)

@@ -42,16 +42,16 @@ TEST(DiagnosticLevels, OverrunsAtAndAroundEachShare)
   const DiagnosticThresholds defaults;  // WARN above 5 %, ERROR above 25 %
   ASSERT_EQ(defaults.overrun_warn_share, 0.05);
   ASSERT_EQ(defaults.overrun_error_share, 0.25);
-  // One report of the 1 kHz loop: 1000 ticks. The servo loop of the default demo on an idle
-  // two-core machine: 0 to 9 a report (measured); the physics node across processes: 11 to 42.
+  // One report of the 1 kHz loop: 1000 ticks. Measured on a two-core machine: the servo loop of
+  // the default demo 0 to 9 a report; across processes the physics node's own 0 to 10 (0 to 35
+  // with both cores kept busy), its steps that waited for a late pose 0 to 14 (0 to 80).
   EXPECT_EQ(overrunLevel(0, 1000, defaults), kOk);
   EXPECT_EQ(overrunLevel(9, 1000, defaults), kOk);
-  EXPECT_EQ(overrunLevel(42, 1000, defaults), kOk);
+  EXPECT_EQ(overrunLevel(35, 1000, defaults), kOk);
   EXPECT_EQ(overrunLevel(49, 1000, defaults), kOk);
   EXPECT_EQ(overrunLevel(50, 1000, defaults), kOk);  // exactly 5 %: not above it
   EXPECT_EQ(overrunLevel(51, 1000, defaults), kWarn);
-  // The physics node across processes while the machine's other core builds: 105 to 231.
-  EXPECT_EQ(overrunLevel(231, 1000, defaults), kWarn);
+  EXPECT_EQ(overrunLevel(80, 1000, defaults), kWarn);
   EXPECT_EQ(overrunLevel(249, 1000, defaults), kWarn);
   EXPECT_EQ(overrunLevel(250, 1000, defaults), kWarn);  // exactly 25 %
   EXPECT_EQ(overrunLevel(251, 1000, defaults), kError);
@@ -79,12 +79,27 @@ TEST(DiagnosticLevels, OverrunsAtAndAroundEachShare)
   EXPECT_EQ(overrunLevel(1000, 1000, lenient), kOk);
 }
 
+TEST(DiagnosticLevels, LatePosesWarnAboveTheShareAndNeverErr)
+{
+  const DiagnosticThresholds defaults;
+  EXPECT_EQ(latePoseLevel(0, 1000, defaults), kOk);
+  EXPECT_EQ(latePoseLevel(14, 1000, defaults), kOk);  // across processes, idle (measured)
+  EXPECT_EQ(latePoseLevel(50, 1000, defaults), kOk);  // exactly 5 %
+  EXPECT_EQ(latePoseLevel(51, 1000, defaults), kWarn);
+  EXPECT_EQ(latePoseLevel(647, 1000, defaults), kWarn);   // through a 30 ms link with 5 ms jitter
+  EXPECT_EQ(latePoseLevel(1000, 1000, defaults), kWarn);  // the device stalled: its own status errs
+  EXPECT_EQ(latePoseLevel(0, 0, defaults), kOk);
+}
+
 TEST(DiagnosticLevels, OverrunTextSaysTheShareAndTheThresholds)
 {
   const DiagnosticThresholds defaults;
   EXPECT_EQ(overrunText(50, 1000, defaults), "");
   EXPECT_EQ(overrunText(333, 1000, defaults),
             "33.3 % of ticks overran (333 of 1000; WARN above 5 %, ERROR above 25 %)");
+  EXPECT_EQ(shareText(60, 1000, defaults, "waited until their deadline for a late pose"),
+            "6 % of ticks waited until their deadline for a late pose (60 of 1000; WARN above 5 %, ERROR above 25 %)");
+  EXPECT_EQ(shareText(50, 1000, defaults, "waited until their deadline for a late pose"), "");
 }
 
 TEST(DiagnosticLevels, MarginAtAndAroundTheCreditAndTheErrorBound)

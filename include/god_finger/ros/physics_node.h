@@ -13,9 +13,11 @@
 // the device port's from NAME/device_energy, both on a `channel NAME` status of /diagnostics).
 // Publishes contact_areas (god_finger/ContactAreaArray), markers
 // (visualization_msgs/MarkerArray) and the TF of every body (world -> link name) at
-// ~publish_rate; /diagnostics at 1 Hz (step rate, overruns, rejected poses; WARN or ERROR for a
-// share of overrun steps, and each channel's for a margin beyond its contact credit:
-// runtime/diagnostic_levels.h, the thresholds as private parameters). Services:
+// ~publish_rate; /diagnostics at 1 Hz (step rate, overruns: steps that ended past their deadline
+// though every pose was in, late_pose_steps: steps taken at the deadline for want of a pose,
+// rejected poses; WARN or ERROR for a share of overrun steps, and each channel's for a margin
+// beyond its contact credit: runtime/diagnostic_levels.h, the thresholds as private
+// parameters). Services:
 // reset_scene (std_srvs/Trigger), set_contact_model (god_finger/SetContactModel). A proxy
 // appears at an interface's first valid pose.
 //

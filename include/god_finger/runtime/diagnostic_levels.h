@@ -4,7 +4,10 @@
 //  - A fixed-rate loop (the servo loop, the physics node's, the device driver's): the share of
 //    its ticks since the last report that overran (ended past their deadline,
 //    runtime/fixed_rate_schedule.h). Above overrun_warn_share it is WARN, above
-//    overrun_error_share ERROR.
+//    overrun_error_share ERROR. The physics node judges apart its steps that waited until their
+//    deadline for a late pose: WARN above overrun_warn_share, never ERROR (the lateness is the
+//    link's or the device side's, whose own statuses say how bad: the haptic node's device
+//    stale; the physics answers the last pose, and the local coupling renders the hand's spring).
 //  - A channel port's energy margin (J; haptics/two_port_passivity.h, ros/channel_port.h): at or
 //    above minus the contact's credit (the device profile's passivity_contact_credit) it is OK,
 //    below it WARN, more than margin_error below it ERROR. A non-finite margin is ERROR.
@@ -52,13 +55,18 @@ DiagnosticThresholds readDiagnosticThresholds(const ParameterSource& source);
 // `overruns` of `ticks` ticks (both since the last report, >= 0) overran. No ticks: OK (a loop
 // that made none is reported by its rate).
 DiagnosticLevel overrunLevel(long overruns, long ticks, const DiagnosticThresholds& thresholds);
+// `late` of `ticks` steps (since the last report) waited until their deadline for a late pose:
+// WARN above overrun_warn_share, else OK.
+DiagnosticLevel latePoseLevel(long late, long ticks, const DiagnosticThresholds& thresholds);
 // A port's energy margin (J) against its contact credit (J, >= 0).
 DiagnosticLevel marginLevel(double margin, double credit, const DiagnosticThresholds& thresholds);
 // A stream: `received` whether any message came; `age` (s) of the newest; `timeout` (s).
 DiagnosticLevel streamLevel(bool received, double age, double timeout);
 
-// The status message's clause for a loop's overruns: "" when OK, else e.g. "33 % of ticks
-// overran (WARN above 1 %, ERROR above 10 %)".
+// The status message's clause for `count` of `ticks` late as overrunLevel judges them: "" when
+// OK, else e.g. "33.3 % of ticks WHAT (333 of 1000; WARN above 5 %, ERROR above 25 %)".
+std::string shareText(long count, long ticks, const DiagnosticThresholds& thresholds, const std::string& what);
+// shareText's for overruns: "33.3 % of ticks overran (...)".
 std::string overrunText(long overruns, long ticks, const DiagnosticThresholds& thresholds);
 // For a margin: "" when OK, else e.g. "energy margin -0.022 J, below the credit -0.0001 J".
 std::string marginText(double margin, double credit, const DiagnosticThresholds& thresholds);
