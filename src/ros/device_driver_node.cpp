@@ -66,6 +66,9 @@ struct DeviceDriverNode::Impl
 {
   // The node's own name (a nodelet's, not its manager's): the diagnostics' statuses start with it.
   std::string node_name;
+  // The backend's name in the device registry (devices/device_registry.h): the status is named
+  // for it ("interactive device"), not for the class that simulates it.
+  std::string backend_name;
   std::unique_ptr<HapticDevice> device;
   std::unique_ptr<ForceGuard> guard;
   // Under `mutex`: the passivity observer and controller after the guard (its force and the
@@ -95,8 +98,11 @@ struct DeviceDriverNode::Impl
   sem_t samples_ready;                                 // posted by the loop per sample (lock-free)
   std::atomic<long> ticks{0};
   std::atomic<long> overruns{0};
-  std::atomic<long> dropped{0};             // samples the publisher thread had no room for
-  bool lost_device = false;                 // the device loop's: its last reading untracked (a stale driver)
+  std::atomic<long> dropped{0};  // samples the publisher thread had no room for
+  long reported_ticks = 0;       // publisher thread: ticks and overruns at the last diagnostics
+  long reported_overruns = 0;
+  DiagnosticThresholds thresholds;  // the status's level (runtime/diagnostic_levels.h)
+  bool lost_device = false;  // written by the device loop under `mutex`: its last reading untracked (a stale driver)
   bool stopped_by_loss = false;             // under `mutex`: the loss stopped the force (not the user)
   std::atomic<long> lost_device_events{0};  // losses and regains, each counted
   std::mutex trips_mutex;                   // guards round_trips_us (callback and publisher threads)
@@ -181,11 +187,10 @@ struct DeviceDriverNode::Impl
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus status;
-    status.name = node_name + ": " + device->name() + " device";
-    status.hardware_id = device->name();
-    status.level =
-        rate < 0.95 / period ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
+    status.name = node_name + ": " + backend_name + " device";
+    status.hardware_id = backend_name;
     bool timed_out = false;
+    bool lost = false;
     long rejected = 0;
     long saturated = 0;
     bool stopped = false;
@@ -198,6 +203,7 @@ struct DeviceDriverNode::Impl
     {
       std::lock_guard<std::mutex> lock(mutex);
       timed_out = guard->timedOut(now());
+      lost = lost_device;
       rejected = guard->rejected();
       saturated = guard->saturated();
       stopped = guard->stopped();
@@ -211,7 +217,20 @@ struct DeviceDriverNode::Impl
       std::lock_guard<std::mutex> lock(trips_mutex);
       trips.swap(round_trips_us);
     }
+    status.level = diagnostic_msgs::DiagnosticStatus::OK;
     status.message = timed_out ? "no force commands: output ramped to zero" : "running";
+    raiseLevel(&status, rate < 0.95 / period ? DiagnosticLevel::kWarn : DiagnosticLevel::kOk, "below its rate");
+    const long now_ticks = ticks.load();
+    const long now_overruns = overruns.load();
+    const long late = now_overruns - reported_overruns;
+    const long ticked = now_ticks - reported_ticks;
+    reported_ticks = now_ticks;
+    reported_overruns = now_overruns;
+    raiseLevel(&status, overrunLevel(late, ticked, thresholds), overrunText(late, ticked, thresholds));
+    // A device that lost its source (a ROS driver older than its stale_timeout) reads untracked:
+    // its force is stopped until it is back (the loop above).
+    raiseLevel(&status, lost ? DiagnosticLevel::kError : DiagnosticLevel::kOk,
+               "device lost (its driver is stale): force stopped until it is back");
     auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", std::to_string(rate));
     add("overruns", std::to_string(overruns.load()));
@@ -405,8 +424,10 @@ DeviceDriverNode::DeviceDriverNode(ros::NodeHandle nh, ros::NodeHandle pnh) : im
   impl.guard = std::make_unique<ForceGuard>(config.profile.coupling.max_force, config.profile.guard);
   impl.passivity = std::make_unique<PassivityController>(config.profile.passivity, impl.period);
   impl.profile = config.profile;
+  impl.thresholds = readDiagnosticThresholds(private_params);
   const std::string backend_name = readString(device_params, "backend", "fake");
   const DeviceBackend& backend = findDeviceBackend(backend_name, device_params.fullName("backend"));
+  impl.backend_name = backend.name;
   impl.frame = readString(pnh, "frame", "device");
   DeviceContext context(device_params, config.profile.coupling.max_force);
   context.script_start = sharedScriptStart(pnh, impl.now());

@@ -4,6 +4,8 @@
 #include "god_finger/support/text_numbers.h"
 #include "parameters.h"
 
+#include <algorithm>
+
 namespace god_finger
 {
 void addValue(diagnostic_msgs::DiagnosticStatus* status, const std::string& key, const std::string& value)
@@ -29,6 +31,19 @@ diagnostic_msgs::DiagnosticStatus stepProfileStatus(const std::string& name,
     addValue(&status, stage + "_us_p99", jsonNumber(stages[s].p99));
   }
   return status;
+}
+
+void raiseLevel(diagnostic_msgs::DiagnosticStatus* status, DiagnosticLevel level, const std::string& reason)
+{
+  static_assert(static_cast<int>(DiagnosticLevel::kWarn) == diagnostic_msgs::DiagnosticStatus::WARN &&
+                    static_cast<int>(DiagnosticLevel::kError) == diagnostic_msgs::DiagnosticStatus::ERROR,
+                "DiagnosticLevel holds diagnostic_msgs' values");
+  status->level = std::max<std::uint8_t>(status->level, static_cast<std::uint8_t>(level));
+  if (level == DiagnosticLevel::kOk || reason.empty())
+  {
+    return;
+  }
+  status->message = status->message.empty() || status->message == "running" ? reason : status->message + "; " + reason;
 }
 
 std::FILE* openTimingCsv(const ros::NodeHandle& pnh, const std::string& header)

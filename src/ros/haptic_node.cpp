@@ -14,6 +14,7 @@
 #include "god_finger/runtime/multirate_render.h"
 #include "god_finger/runtime/servo_loop.h"
 #include "god_finger/support/input_error.h"
+#include "god_finger/support/text_numbers.h"
 #include "interface_parameters.h"
 #include "parameters.h"
 #include "queues.h"
@@ -30,6 +31,7 @@
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
+#include <cmath>
 #include <mutex>
 
 namespace god_finger
@@ -52,7 +54,8 @@ struct HapticNode::Impl
   ros::Subscriber state_subscriber;
   ros::Subscriber feedback_subscriber;
   ros::Subscriber proxy_subscriber;
-  ros::Publisher pose_publisher;
+  ros::Publisher pose_publisher;            // NAME/pose: for tools (identity for a 3-DOF finger)
+  ros::Publisher interface_pose_publisher;  // NAME/interface_pose: the physics' input, with has_orientation
   ros::Publisher force_publisher;
   ros::Publisher torque_publisher;  // device/torque: a profile with torque_axes only
   ros::Publisher diagnostics_publisher;
@@ -88,6 +91,9 @@ struct HapticNode::Impl
   long rejected_feedback = 0;
   long states = 0;
   long timer_ticks = 0;
+  ros::SteadyTime state_received;  // under mutex: when the last device state came (accepted or not)
+  bool have_state = false;
+  DiagnosticThresholds thresholds;  // the status's level (runtime/diagnostic_levels.h)
   // The channel's device port (channel_port.h): the hand's work through the rendered force,
   // sent on device_energy; the physics port's packets from physics_energy.
   std::unique_ptr<ChannelPort> channel;
@@ -110,6 +116,11 @@ struct HapticNode::Impl
 
   void onState(const god_finger::DeviceState::ConstPtr& state)
   {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      state_received = ros::SteadyTime::now();
+      have_state = true;
+    }
     InterfaceReading reading;
     reading.position = fromVector(state->position);
     reading.velocity = fromVector(state->velocity);
@@ -137,8 +148,9 @@ struct HapticNode::Impl
       world_orientation = interface_input.worldOrientation();
     }
     const Eigen::Vector3d& world = input.target;
-    const geometry_msgs::PoseStampedPtr pose =
-        poseMessage(state->header.stamp, world, oriented ? &world_orientation : nullptr);
+    const Eigen::Quaterniond* orientation = oriented ? &world_orientation : nullptr;
+    interface_pose_publisher.publish(interfacePoseMessage(state->header.stamp, world, orientation));
+    const geometry_msgs::PoseStampedPtr pose = poseMessage(state->header.stamp, world, orientation);
     pose_publisher.publish(pose);
     broadcaster.sendTransform(interfaceTransform(*pose, frame));
     if (!state->header.frame_id.empty() && state->header.frame_id != device_frame)
@@ -263,6 +275,28 @@ struct HapticNode::Impl
     status.level = diagnostic_msgs::DiagnosticStatus::OK;
     status.message = local_coupling ? "local coupling" : "forwarding feedback";
     std::lock_guard<std::mutex> lock(mutex);
+    const ros::SteadyTime now = ros::SteadyTime::now();
+    // The device's states (a driver gone or stalled) and, with the local coupling, the physics'
+    // proxy states (older than proxy_timeout nothing is rendered).
+    const double state_age = have_state ? (now - state_received).toSec() : INFINITY;
+    const DiagnosticLevel device = streamLevel(have_state, state_age, thresholds.device_state_timeout);
+    raiseLevel(&status, device,
+               !have_state ? "waiting for the device's states"
+                           : "device stale: no device state for " + roundedNumber(state_age) +
+                                 " s (device_state_timeout " + roundedNumber(thresholds.device_state_timeout) + " s)");
+    if (local_coupling)
+    {
+      const double proxy_age = have_proxy ? (now - proxy_received).toSec() : INFINITY;
+      const DiagnosticLevel physics = streamLevel(have_proxy, proxy_age, proxy_timeout);
+      raiseLevel(&status, physics,
+                 !have_proxy ? "waiting for the physics' proxy states"
+                             : "physics stale: no proxy state for " + roundedNumber(proxy_age) + " s (proxy_timeout " +
+                                   roundedNumber(proxy_timeout) + " s): rendering no force");
+    }
+    const double margin = channel->port().margin();
+    const double credit = profile.passivity.passivity_contact_credit;
+    raiseLevel(&status, marginLevel(margin, credit, thresholds), marginText(margin, credit, thresholds));
+    addValue(&status, "device_state_age_s", jsonNumber(have_state ? state_age : -1.0));
     addValue(&status, "device_states", std::to_string(states));
     addValue(&status, "rejected_states", std::to_string(rejected_states));
     addValue(&status, "rejected_orientations", std::to_string(rejected_orientations));
@@ -329,6 +363,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   // position, so that no topic latency sits between the hand and its spring.
   impl.local_coupling = readBool(pnh, "local_coupling", true);
   impl.proxy_timeout = readNodeParams(pnh).proxy_timeout;
+  impl.thresholds = readDiagnosticThresholds(private_params);
   const std::string model_name = readString(pnh, "model", contactModelName(impl.model));
   if (!parseContactModel(model_name, &impl.model))
   {
@@ -346,6 +381,7 @@ HapticNode::HapticNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl
   impl.model_client = physics_nh.serviceClient<god_finger::SetContactModel>("set_contact_model");
   impl.reset_client = physics_nh.serviceClient<std_srvs::Trigger>("reset_scene");
   impl.pose_publisher = nh.advertise<geometry_msgs::PoseStamped>("pose", kPublisherQueue);
+  impl.interface_pose_publisher = nh.advertise<god_finger::InterfacePose>("interface_pose", kPublisherQueue);
   impl.force_publisher = nh.advertise<geometry_msgs::Vector3Stamped>("device/force", kPublisherQueue);
   if (impl.profile.torque_axes != 0)
   {

@@ -52,7 +52,12 @@ struct PhysicsNode::Impl
     // Read again at the interface's first pose: on several machines the device's launch may
     // load its profile after the physics started (callback thread only).
     bool profile_current = false;
-    ros::Subscriber pose_subscriber;
+    ros::Subscriber pose_subscriber;  // NAME/interface_pose (god_finger/InterfacePose)
+    // NAME/pose (PoseStamped) from a recording made before NAME/interface_pose (a bag played
+    // into this node): its all-zero quaternion is a 3-DOF finger's. Shut down at the first
+    // interface pose: the nodes now send NAME/pose for tools only (the identity for 3-DOF).
+    ros::Subscriber recorded_pose_subscriber;
+    bool interface_pose_seen = false;  // under mutex
     ros::Publisher feedback_publisher;
     ros::Publisher proxy_publisher;
     ros::Publisher proxy_state_publisher;  // NAME/proxy_state: the haptic node's local coupling
@@ -76,8 +81,9 @@ struct PhysicsNode::Impl
     // target it may use (pulled back out of a contact the device has not paid for), counting the
     // force the last step holds for it (heldForce), and sends its count after each step.
     std::unique_ptr<ChannelPort> channel;
-    MultirateStep held;          // the last step's, for heldForce (none yet: no planes, no force)
-    bool port_answered = false;  // the port has answered once
+    double contact_credit = 0.0;  // J: the profile's passivity_contact_credit (the channel's status level)
+    MultirateStep held;           // the last step's, for heldForce (none yet: no planes, no force)
+    bool port_answered = false;   // the port has answered once
   };
 
   ros::NodeHandle nh;
@@ -95,18 +101,63 @@ struct PhysicsNode::Impl
   std::thread thread;
   std::atomic<bool> running{true};
   long rejected_poses = 0;
+  // Loop thread: steps whose poses were all in before the deadline and that ended after it (the
+  // physics late), and steps taken at the deadline without a new pose from every interface that
+  // has sent one (its poses late, or its device stalled: the step starts at the deadline, so it
+  // ends after it; before any pose came, none is counted).
   long overruns = 0;
+  long late_pose_steps = 0;
+  long reported_late_pose_steps = 0;        // at the last diagnostics
+  long reported_overruns = 0;               // at the last diagnostics (loop thread)
+  DiagnosticThresholds thresholds;          // the statuses' levels (runtime/diagnostic_levels.h)
   std::unique_ptr<WorldServices> services;  // reset_scene, set_contact_model, dynamic_reconfigure
   std::vector<double> step_us;              // since the last diagnostics (under `mutex`)
   std::vector<double> step_us_read;         // publishDiagnostics' swap partner: both keep their capacity
+  long reported_dropped_contacts = 0;       // WorldCounters::dropped_contacts_total at the last diagnostics
   std::vector<StepProfile> profiles;        // each step's stages, as step_us
   std::vector<StepProfile> profiles_read;
   WorldSnapshot snapshot;      // read by publishScene
   LeftWorldReport left_world;  // guarded by mutex
 
-  void onPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
+  // NAME/interface_pose: the haptic node's, with every device state.
+  void onInterfacePose(int i, const god_finger::InterfacePose::ConstPtr& message)
   {
-    const Eigen::Vector3d p(message->pose.position.x, message->pose.position.y, message->pose.position.z);
+    bool first = false;
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      first = !interfaces[i].interface_pose_seen;
+      interfaces[i].interface_pose_seen = true;
+    }
+    if (first)
+    {
+      interfaces[i].recorded_pose_subscriber.shutdown();
+    }
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+    const bool oriented = poseOrientation(*message, &orientation);
+    onPose(i, message->header, message->pose.position, oriented, orientation);
+  }
+
+  // NAME/pose before any interface pose came: a recording's 3-DOF finger (the all-zero
+  // quaternion) is taken; any other is a tool's copy of an interface pose, not taken.
+  void onRecordedPose(int i, const geometry_msgs::PoseStamped::ConstPtr& message)
+  {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (interfaces[i].interface_pose_seen)
+      {
+        return;
+      }
+    }
+    if (recordedThreeDofPose(message->pose))
+    {
+      onPose(i, message->header, message->pose.position, false, Eigen::Quaterniond::Identity());
+    }
+  }
+
+  void onPose(int i, const std_msgs::Header& header, const geometry_msgs::Point& position, bool oriented,
+              const Eigen::Quaterniond& orientation)
+  {
+    const Eigen::Vector3d p(position.x, position.y, position.z);
     if (!interfaces[i].profile_current)
     {
       try
@@ -116,6 +167,7 @@ struct PhysicsNode::Impl
                 .profile;
         std::lock_guard<std::mutex> lock(mutex);
         interfaces[i].coupling = profile.coupling;
+        interfaces[i].contact_credit = profile.passivity.passivity_contact_credit;
         if (!interfaces[i].port_answered)  // the port has not answered yet
         {
           interfaces[i].channel->reconfigure(profile.passivity, world->params().time_step);
@@ -129,19 +181,33 @@ struct PhysicsNode::Impl
       }
     }
     std::lock_guard<std::mutex> lock(mutex);
-    if (!p.allFinite() || (!message->header.frame_id.empty() && message->header.frame_id != "world"))
+    if (!p.allFinite() || (!header.frame_id.empty() && header.frame_id != "world"))
     {
       ++rejected_poses;
       ROS_WARN_THROTTLE(1.0, "physics: rejected a pose of '%s' (frame '%s', finite %d)", interfaces[i].name.c_str(),
-                        message->header.frame_id.c_str(), int(p.allFinite()));
+                        header.frame_id.c_str(), int(p.allFinite()));
       return;
     }
     interfaces[i].target = p;
-    interfaces[i].oriented = poseOrientation(message->pose, &interfaces[i].orientation);
-    interfaces[i].target_stamp = message->header.stamp;
+    interfaces[i].oriented = oriented;
+    interfaces[i].orientation = orientation;
+    interfaces[i].target_stamp = header.stamp;
     interfaces[i].have_target = true;
     interfaces[i].fresh = true;
     pose_arrived.notify_one();
+  }
+
+  // True when an interface has sent a pose (a device drives the world).
+  bool anyTarget() const
+  {
+    for (const Interface& interface : interfaces)
+    {
+      if (interface.have_target)
+      {
+        return true;
+      }
+    }
+    return false;
   }
 
   // True when every interface that has sent a pose has sent a new one since the last step.
@@ -354,20 +420,37 @@ struct PhysicsNode::Impl
     status.name = node_name + ": physics loop";
     status.hardware_id = "god_finger";
     const double rate = steps / seconds;
-    status.level =
-        rate < 0.95 * wanted ? diagnostic_msgs::DiagnosticStatus::WARN : diagnostic_msgs::DiagnosticStatus::OK;
-    status.message = status.level == diagnostic_msgs::DiagnosticStatus::OK ? "running" : "below its rate";
+    status.level = diagnostic_msgs::DiagnosticStatus::OK;
+    status.message = "running";
+    raiseLevel(&status, rate < 0.95 * wanted ? DiagnosticLevel::kWarn : DiagnosticLevel::kOk, "below its rate");
+    // Overruns since the last report, of the steps taken since (the loop's own counts); a step
+    // that waited for a pose until its deadline is the pose's lateness, not the physics'.
+    const long late = overruns - reported_overruns;
+    reported_overruns = overruns;
+    raiseLevel(&status, overrunLevel(late, steps, thresholds), overrunText(late, steps, thresholds));
+    // Steps that waited for a late pose: the link's or the device side's lateness (WARN at most:
+    // runtime/diagnostic_levels.h), named as such.
+    const long waited = late_pose_steps - reported_late_pose_steps;
+    reported_late_pose_steps = late_pose_steps;
+    raiseLevel(&status, latePoseLevel(waited, steps, thresholds),
+               shareText(waited, steps, thresholds, "waited until their deadline for a late pose"));
     auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", jsonNumber(rate));
     add("overruns", std::to_string(overruns));
+    add("late_pose_steps", std::to_string(late_pose_steps));
     add("rejected_poses", std::to_string(rejected));
     add("step_us_median", jsonNumber(percentile(step_us_read, 0.5)));
     add("step_us_p99", jsonNumber(percentile(step_us_read, 0.99)));
     add("contact_model", contactModelName(model));
     add("pad_solver", padSolverName(solver));
     add("left_world", left);  // bodies put back at their start (world_margin)
-    // Contacts beyond InterfaceState::kMaxContacts bodies per finger, since the start.
+    // Contacts beyond InterfaceState::kMaxContacts bodies per finger, since the start: WARN in a
+    // window that dropped any.
     add("dropped_contacts", std::to_string(dropped_contacts));
+    raiseLevel(&status, dropped_contacts > reported_dropped_contacts ? DiagnosticLevel::kWarn : DiagnosticLevel::kOk,
+               "a finger touched more than " + std::to_string(InterfaceState::kMaxContacts) +
+                   " bodies at once: the others' contacts dropped");
+    reported_dropped_contacts = dropped_contacts;
     array.status.push_back(status);
     StepProfileStatistics stages;
     for (const StepProfile& profile : profiles_read)
@@ -384,6 +467,13 @@ struct PhysicsNode::Impl
       channel.level = diagnostic_msgs::DiagnosticStatus::OK;
       channel.message = "physics port";
       interface.channel->addValues(&channel);
+      double credit = 0.0;
+      {
+        std::lock_guard<std::mutex> lock(mutex);
+        credit = interface.contact_credit;
+      }
+      const double margin = interface.channel->port().margin();
+      raiseLevel(&channel, marginLevel(margin, credit, thresholds), marginText(margin, credit, thresholds));
       array.status.push_back(channel);
     }
     diagnostics_publisher.publish(array);
@@ -393,7 +483,8 @@ struct PhysicsNode::Impl
   // new pose is in (so the feedback answers the freshest pose without waiting for a timer
   // tick), never earlier than half a period before its slot and never later than half a period
   // after it. A step (and its publishing) that ends after that latest moment, the schedule's
-  // deadline (runtime/fixed_rate_schedule.h), is an overrun.
+  // deadline (runtime/fixed_rate_schedule.h), is an overrun of the physics when every pose was in
+  // before it; one that waited for a pose until the deadline is a late pose step.
   void loop()
   {
     flushDenormalsInThisThread();             // support/denormals.h
@@ -416,12 +507,15 @@ struct PhysicsNode::Impl
     {
       const double deadline = schedule.deadline();
       sleepUntil(deadline - period_s);
+      bool poses_in = false;  // every interface's new pose came before the deadline
+      bool driven = false;    // some interface has sent a pose
       {
         std::unique_lock<std::mutex> lock(mutex);
-        pose_arrived.wait_until(
+        poses_in = pose_arrived.wait_until(
             lock,
             Clock::time_point(std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(deadline))),
             [this] { return allPosesFresh() || !running; });
+        driven = anyTarget();
         step();
       }
       publishStep();
@@ -438,8 +532,10 @@ struct PhysicsNode::Impl
         diagnostics_start = now;
         diagnostics_steps = 0;
       }
+      const long before = schedule.overruns();
       schedule.tickEnded(steadySeconds());  // the next step's window opens at the deadline or now
-      overruns = schedule.overruns();
+      late_pose_steps += driven && !poses_in ? 1 : 0;
+      overruns += (poses_in || !driven) && schedule.overruns() > before ? 1 : 0;
     }
   }
 };
@@ -452,6 +548,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
   impl.pnh = pnh;
   const WorldParams params = readWorldParams(pnh);
   impl.publish_period = 1.0 / readNodeParams(pnh).publish_rate;
+  impl.thresholds = readDiagnosticThresholds(RosParameterSource(pnh));
   std::string scene_path;
   impl.world = loadSceneWorld(pnh, params, &scene_path);
   const std::vector<std::string> names = readStringList(pnh, "interfaces", {"finger"});
@@ -463,6 +560,7 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     const DeviceProfile profile =
         readInterfaceConfig(RosParameterSource(ros::NodeHandle(nh, names[i])), names[i]).profile;
     interface.coupling = profile.coupling;
+    interface.contact_credit = profile.passivity.passivity_contact_credit;
     const std::string unstable =
         couplingStabilityError(interface.coupling, params.coupling.proxy_mass, params.time_step);
     if (!unstable.empty())
@@ -471,9 +569,13 @@ PhysicsNode::PhysicsNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Im
     }
     interface.channel.reset(new ChannelPort(nh, names[i] + "/physics_energy", names[i] + "/device_energy",
                                             profile.passivity, params.time_step));
-    interface.pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
+    interface.pose_subscriber = nh.subscribe<god_finger::InterfacePose>(
+        names[i] + "/interface_pose", kSubscriberQueue,
+        [this, i](const god_finger::InterfacePose::ConstPtr& m) { impl_->onInterfacePose(i, m); }, ros::VoidConstPtr(),
+        ros::TransportHints().tcpNoDelay());
+    interface.recorded_pose_subscriber = nh.subscribe<geometry_msgs::PoseStamped>(
         names[i] + "/pose", kSubscriberQueue,
-        [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onPose(i, m); }, ros::VoidConstPtr(),
+        [this, i](const geometry_msgs::PoseStamped::ConstPtr& m) { impl_->onRecordedPose(i, m); }, ros::VoidConstPtr(),
         ros::TransportHints().tcpNoDelay());
     interface.feedback_publisher = nh.advertise<geometry_msgs::WrenchStamped>(names[i] + "/feedback", kPublisherQueue);
     interface.proxy_publisher = nh.advertise<geometry_msgs::PointStamped>(names[i] + "/proxy", kPublisherQueue);

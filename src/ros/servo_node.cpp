@@ -83,6 +83,8 @@ struct ServoNode::Impl
   LeftWorldReport left_world;  // the publisher thread's
   long last_ticks = 0;
   double last_ticks_at = -1.0;
+  long last_overruns = 0;
+  DiagnosticThresholds thresholds;  // the statuses' levels (runtime/diagnostic_levels.h)
   long last_dropped = 0;
 
   double steady_to_ros = 0.0;   // s: ROS wall time minus steadySeconds()
@@ -176,23 +178,32 @@ struct ServoNode::Impl
     LoopSummary summary = statistics.summarize();
     // The loop's own rate (its tick counter), not the publisher's, which may drop samples.
     const long ticks = counters.ticks.load();
+    const long overruns = counters.overruns.load();
     const double now = steadySeconds();
     if (last_ticks_at > 0.0 && now > last_ticks_at)
     {
       summary.rate_hz = (ticks - last_ticks) / (now - last_ticks_at);
     }
+    const long ticked = ticks - last_ticks;
+    const long late = overruns - last_overruns;
     last_ticks = ticks;
     last_ticks_at = now;
+    last_overruns = overruns;
     diagnostic_msgs::DiagnosticArray array;
     array.header.stamp = ros::Time::now();
     diagnostic_msgs::DiagnosticStatus status;
     status.name = node_name + ": servo loop";
     status.hardware_id = "god_finger";
     const bool slow = !sim_time && summary.rate_hz < 0.95 * loop->params().rate;
-    status.level = counters.failed ? diagnostic_msgs::DiagnosticStatus::ERROR
-                   : slow          ? diagnostic_msgs::DiagnosticStatus::WARN
-                                   : diagnostic_msgs::DiagnosticStatus::OK;
-    status.message = counters.failed ? "stopped: a device failed" : slow ? "below its rate" : "running";
+    status.level = diagnostic_msgs::DiagnosticStatus::OK;
+    status.message = "running";
+    raiseLevel(&status, counters.failed ? DiagnosticLevel::kError : DiagnosticLevel::kOk, "stopped: a device failed");
+    raiseLevel(&status, slow ? DiagnosticLevel::kWarn : DiagnosticLevel::kOk, "below its rate");
+    // On simulated time a late tick is the wall clock's, not the hand's: not judged (as the rate).
+    if (!sim_time)
+    {
+      raiseLevel(&status, overrunLevel(late, ticked, thresholds), overrunText(late, ticked, thresholds));
+    }
     auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("clock", sim_time ? "simulated" : "real time");
     add("realtime_priority", counters.realtime ? "SCHED_FIFO" : "none");
@@ -336,6 +347,7 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
   Impl& impl = *impl_;
   impl.nh = nh;
   impl.node_name = pnh.getNamespace();  // "/servo", "/physics", "/finger/haptic"
+  impl.thresholds = readDiagnosticThresholds(RosParameterSource(pnh));
   ServoSetup setup = makeServoSetup(nh, pnh, [](const std::string& message) { ROS_WARN("%s", message.c_str()); });
   impl.loop = std::move(setup.loop);
   impl.names = setup.names;

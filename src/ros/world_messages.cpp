@@ -72,14 +72,19 @@ geometry_msgs::PoseStampedPtr poseMessage(const ros::Time& stamp, const Eigen::V
   pose->header.stamp = stamp;
   pose->header.frame_id = "world";
   pose->pose.position = toPoint(position);
-  if (orientation)
-  {
-    pose->pose.orientation = toQuaternion(*orientation);
-  }
-  else
-  {
-    pose->pose.orientation.w = 0.0;  // none (a 3-DOF finger)
-  }
+  pose->pose.orientation = toQuaternion(orientation ? *orientation : Eigen::Quaterniond::Identity());
+  return pose;
+}
+
+god_finger::InterfacePosePtr interfacePoseMessage(const ros::Time& stamp, const Eigen::Vector3d& position,
+                                                  const Eigen::Quaterniond* orientation)
+{
+  god_finger::InterfacePosePtr pose(new god_finger::InterfacePose);
+  pose->header.stamp = stamp;
+  pose->header.frame_id = "world";
+  pose->pose.position = toPoint(position);
+  pose->pose.orientation = toQuaternion(orientation ? *orientation : Eigen::Quaterniond::Identity());
+  pose->has_orientation = orientation != nullptr;
   return pose;
 }
 
@@ -91,27 +96,25 @@ geometry_msgs::TransformStamped interfaceTransform(const geometry_msgs::PoseStam
   transform.transform.translation.x = pose.pose.position.x;
   transform.transform.translation.y = pose.pose.position.y;
   transform.transform.translation.z = pose.pose.position.z;
-  Eigen::Quaterniond orientation;
-  if (poseOrientation(pose.pose, &orientation))
-  {
-    transform.transform.rotation = pose.pose.orientation;
-  }
-  else
-  {
-    transform.transform.rotation.w = 1.0;
-  }
+  transform.transform.rotation = pose.pose.orientation;
   return transform;
 }
 
-bool poseOrientation(const geometry_msgs::Pose& pose, Eigen::Quaterniond* orientation)
+bool poseOrientation(const god_finger::InterfacePose& pose, Eigen::Quaterniond* orientation)
 {
-  const geometry_msgs::Quaternion& q = pose.orientation;
-  if (q.w == 0.0 && q.x == 0.0 && q.y == 0.0 && q.z == 0.0)
+  if (!pose.has_orientation)
   {
     return false;
   }
+  const geometry_msgs::Quaternion& q = pose.pose.orientation;
   *orientation = Eigen::Quaterniond(q.w, q.x, q.y, q.z);
   return true;
+}
+
+bool recordedThreeDofPose(const geometry_msgs::Pose& pose)
+{
+  const geometry_msgs::Quaternion& q = pose.orientation;
+  return q.w == 0.0 && q.x == 0.0 && q.y == 0.0 && q.z == 0.0;
 }
 
 geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position)

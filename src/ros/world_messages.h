@@ -4,6 +4,7 @@
 #pragma once
 
 #include "god_finger/ContactAreaArray.h"
+#include "god_finger/InterfacePose.h"
 #include "god_finger/ProxyState.h"
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/runtime/multirate_render.h"
@@ -32,18 +33,26 @@ visualization_msgs::MarkerArrayPtr markerMessage(const SceneDescription& scene, 
 // 3-DOF finger) on the hand, world frame.
 geometry_msgs::WrenchStampedPtr feedbackMessage(const ros::Time& stamp, const Eigen::Vector3d& user_force,
                                                 const Eigen::Vector3d& user_torque);
-// An interface's pose (NAME/pose, `world`; the physics node's input in the topic topologies):
-// the device mapped into the world (m), and an oriented finger's orientation (the finger frame
-// in the world, unit). A 3-DOF finger's (`orientation` null) is the all-zero quaternion: "no
-// orientation", never a rotation. The TF of NAME_interface (interfaceTransform) takes the
-// identity there.
+// An interface's pose for generic tools (NAME/pose, `world`: rviz, tf2, bags): the device
+// mapped into the world (m), and an oriented finger's orientation (the finger frame in the
+// world, unit); a 3-DOF finger's (`orientation` null) is the identity. That a finger is 3-DOF is
+// said by interfacePoseMessage()'s has_orientation (and DeviceState's), never by this pose.
 geometry_msgs::PoseStampedPtr poseMessage(const ros::Time& stamp, const Eigen::Vector3d& position,
                                           const Eigen::Quaterniond* orientation);
+// The same pose as the physics takes it in the topic topologies (NAME/interface_pose,
+// god_finger/InterfacePose): has_orientation false for a 3-DOF finger (`orientation` null).
+god_finger::InterfacePosePtr interfacePoseMessage(const ros::Time& stamp, const Eigen::Vector3d& position,
+                                                  const Eigen::Quaterniond* orientation);
+// world -> `frame` at the pose (the identity rotation for a 3-DOF finger, as the pose's).
 geometry_msgs::TransformStamped interfaceTransform(const geometry_msgs::PoseStamped& pose, const std::string& frame);
-// A pose's orientation as poseMessage() wrote it: false for the all-zero quaternion (a 3-DOF
-// finger); else `orientation` is the message's as it is (GodFingerWorld::setInterfaceTarget
-// normalises it, or ignores and counts it when unusable).
-bool poseOrientation(const geometry_msgs::Pose& pose, Eigen::Quaterniond* orientation);
+// An interface pose's orientation: false for a 3-DOF finger (has_orientation false); else
+// `orientation` is the message's as it is (GodFingerWorld::setInterfaceTarget normalises it, or
+// ignores and counts it when unusable).
+bool poseOrientation(const god_finger::InterfacePose& pose, Eigen::Quaterniond* orientation);
+// Whether a NAME/pose is a 3-DOF finger's as the nodes sent it before NAME/interface_pose (the
+// all-zero quaternion, "no orientation"): what a recording made then holds, which the physics
+// node still takes (a bag played into it); a pose with any other orientation is not one.
+bool recordedThreeDofPose(const geometry_msgs::Pose& pose);
 geometry_msgs::PointStampedPtr proxyMessage(const ros::Time& stamp, const Eigen::Vector3d& proxy_position);
 // One step's god-object for the haptic node's local coupling (NAME/proxy_state,
 // god_finger/ProxyState, `world`): the proxy, the target the step took, its force, its contacts'

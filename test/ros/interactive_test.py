@@ -4,7 +4,11 @@ as rviz sends them): the device handle follows the marker in free space, and dra
 onto the ball the finger touches it: a contact area appears and the hand feels the force.
 Dragged only, the finger stays 3-DOF (DeviceState.has_orientation false); its ring about x
 turned 20 degrees, the finger is oriented: its pose rolls 20 degrees from pulp down and its
-area moves on the ball by fingertip_radius x 20 degrees (8 mm x 0.349 rad = 2.8 mm)."""
+area moves on the ball by fingertip_radius x 20 degrees (8 mm x 0.349 rad = 2.8 mm). Its pose
+(/finger/pose) is a unit quaternion throughout: the identity while 3-DOF. With every node in its
+own process (~topology processes) the physics' input, /finger/interface_pose, says 3-DOF
+(has_orientation false) until the ring is turned, and the device driver's /diagnostics status
+is named for the backend in use, "interactive device"."""
 import math
 import sys
 import time
@@ -13,7 +17,8 @@ import unittest
 import rospy
 import rostest
 from geometry_msgs.msg import Point, PoseStamped, WrenchStamped
-from god_finger.msg import ContactAreaArray, DeviceState
+from diagnostic_msgs.msg import DiagnosticArray
+from god_finger.msg import ContactAreaArray, DeviceState, InterfacePose
 from ros_test_support import drag_marker, turn_marker
 from visualization_msgs.msg import InteractiveMarkerFeedback
 
@@ -27,11 +32,24 @@ class Interactive(unittest.TestCase):
         self.has_orientation = False  # some device state carried an orientation
         self.area_point = None  # the ball's area centre (m, world)
         self.turned = 0.0  # rad: the finger's pose from pulp down
+        self.pose_norm = 0.0  # the pose's quaternion's length
+        self.pose_identity = False
         rospy.Subscriber("/finger/pose", PoseStamped, self.on_pose, queue_size=10)
         rospy.Subscriber("/finger/device/state", DeviceState, self.on_state, queue_size=10)
         rospy.Subscriber("/finger/feedback", WrenchStamped, self.on_feedback, queue_size=10)
         rospy.Subscriber("/contact_areas", ContactAreaArray, self.on_areas, queue_size=10)
         self.drag = rospy.Publisher("/finger/device_marker/feedback", InteractiveMarkerFeedback, queue_size=10)
+        self.topology = rospy.get_param("~topology", "servo")
+        self.interface_oriented = None  # the newest /finger/interface_pose's has_orientation
+        self.status_names = set()
+        rospy.Subscriber("/finger/interface_pose", InterfacePose, self.on_interface_pose, queue_size=10)
+        rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=20)
+
+    def on_interface_pose(self, message):
+        self.interface_oriented = message.has_orientation
+
+    def on_diagnostics(self, message):
+        self.status_names.update(status.name for status in message.status)
 
     def on_state(self, message):
         self.state = message.position
@@ -39,8 +57,12 @@ class Interactive(unittest.TestCase):
 
     def on_pose(self, message):
         q = message.pose.orientation
-        # From pulp down (180 degrees about x: w=0, x=1): 2 acos(|<q, q0>|); none (all zero): 0.
-        self.turned = 0.0 if (q.w, q.x, q.y, q.z) == (0, 0, 0, 0) else 2.0 * math.acos(min(1.0, abs(q.x)))
+        # A unit quaternion, for tools: the identity for a 3-DOF finger (device states without
+        # orientation say which), else the finger's.
+        self.pose_norm = math.sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z)
+        self.pose_identity = (q.w, q.x, q.y, q.z) == (1, 0, 0, 0)
+        # From pulp down (180 degrees about x: w=0, x=1): 2 acos(|<q, q0>|).
+        self.turned = 2.0 * math.acos(min(1.0, abs(q.x)))
 
     def on_feedback(self, message):
         f = message.wrench.force
@@ -89,8 +111,15 @@ class Interactive(unittest.TestCase):
         self.assertEqual(self.areas, 1)
         # The finger rests on the ball (god-object at 8.3 cm) while the hand is lower.
         self.assertLess(self.state.z, 0.083)
-        # Dragged only: a 3-DOF finger, as before the marker had rings.
+        # Dragged only: a 3-DOF finger, as before the marker had rings; its pose carries the
+        # identity, a rotation generic tools (tf2, rviz) take, not the all-zero quaternion.
         self.assertFalse(self.has_orientation)
+        self.assertTrue(self.pose_identity, "a 3-DOF finger's /finger/pose is not the identity")
+        if self.topology == "processes":
+            self.assertIs(self.interface_oriented, False, "/finger/interface_pose does not say 3-DOF")
+            self.wait_for(lambda: "/finger/device_driver: interactive device" in self.status_names, 5.0,
+                          lambda: "the driver's status named for the backend (%s)" % sorted(self.status_names))
+            self.assertFalse([name for name in self.status_names if name.endswith(": fake device")])
         self.wait_for(lambda: self.area_point is not None, 10.0, "the ball's contact area")
         before = self.area_point
         turn_marker(self.drag, Point(0.0, 0.0, 0.075), math.radians(20.0), 1.0)
@@ -98,6 +127,9 @@ class Interactive(unittest.TestCase):
                       lambda: "the finger oriented and rolled 20 degrees (%s, %.4f rad)"
                       % (self.has_orientation, self.turned))
         expected = 0.008 * math.radians(20.0)
+        self.assertAlmostEqual(self.pose_norm, 1.0, places=6)
+        if self.topology == "processes":
+            self.wait_for(lambda: self.interface_oriented is True, 5.0, "/finger/interface_pose to say oriented")
 
         def travel():
             return math.sqrt(sum((a - b) ** 2 for a, b in zip(self.area_point, before)))

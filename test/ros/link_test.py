@@ -24,7 +24,7 @@ from god_finger.msg import DeviceState, PortEnergy
 from ros_test_support import RosTestSupport, drag_marker
 from visualization_msgs.msg import InteractiveMarkerFeedback
 
-LINKS = ("/finger/link/pose", "/finger/feedback", "/finger/proxy_state")
+LINKS = ("/finger/link/interface_pose", "/finger/feedback", "/finger/proxy_state")
 
 
 class Link(RosTestSupport, unittest.TestCase):

@@ -18,7 +18,8 @@ own code (docs/devices.md), not read from god_finger.
      of the two profiles' coupling stiffnesses: 1 for the Touch's, 2 for the Falcon's);
    - /diagnostics reports the driver's rate (within 10 % of the fake's) and its state's age;
    - the driver falls silent: /diagnostics names its topic (ERROR), the force it last got is zero;
-     it comes back: the force comes back;
+     with a device driver node (the topic topologies) its "DRIVER device" status is ERROR too
+     (device lost); it comes back: the force comes back, and that status is no longer ERROR;
    - Ctrl-C of the launch (SIGINT): the last force the driver got is zero.
 Every wait is on a condition with a deadline; the fake's timer paces the stylus."""
 import math
@@ -215,12 +216,15 @@ class RosDriverBridge(RosTestSupport, unittest.TestCase):
         rospy.Subscriber("/finger/device/state", DeviceState, self.states.append, queue_size=100)
         rospy.Subscriber("/finger/pose", PoseStamped, lambda m: setattr(self, "pose", m), queue_size=1)
         self.driver_status = None  # the bridge's newest status on /diagnostics
+        self.device_status = None  # the device driver node's (topic topologies), named for the backend
         rospy.Subscriber("/diagnostics", DiagnosticArray, self.on_diagnostics, queue_size=20)
 
     def on_diagnostics(self, array):
         for status in array.status:
             if (": %s driver " % self.driver) in status.name:
                 self.driver_status = status
+            if status.name == "/finger/device_driver: %s device" % self.driver:
+                self.device_status = status
 
     def driver_value(self, key):
         status = self.driver_status
@@ -361,8 +365,16 @@ class RosDriverBridge(RosTestSupport, unittest.TestCase):
                  "ros_falcon": "/falconPos"}[self.driver]
         self.assertIn("no state on " + topic, self.driver_status.message)
         self.wait_for(lambda: fake.last_force()[0] == (0.0, 0.0, 0.0), 5, "a zero force for a stale driver")
+        if self.topology != "servo":
+            self.wait_for(lambda: self.device_status is not None and self.device_status.level == DiagnosticStatus.ERROR,
+                          10, "the device driver's status ERROR while its driver is stale")
+            print("%s: /diagnostics %s: %s" % (self.driver, self.device_status.name, self.device_status.message))
+            self.assertIn("device lost", self.device_status.message)
         fake.silent = False
         self.wait_for(lambda: (fake.last_force()[0] or (0, 0, 0))[up] > 0.3, 10, "the force back with the driver")
+        if self.topology != "servo":
+            self.wait_for(lambda: "device lost" not in self.device_status.message, 10,
+                          "the device driver's status without its loss once the driver is back")
 
         # Ctrl-C: the last force the driver got is zero.
         self.stop(process)

@@ -15,6 +15,7 @@
 #include <xmlrpcpp/XmlRpcValue.h>
 
 #include <god_finger/DeviceState.h>
+#include <god_finger/InterfacePose.h>
 
 #include <algorithm>
 #include <array>
@@ -140,6 +141,16 @@ class Safety : public testing::Test
           }
         },
         ros::VoidConstPtr(), hints));
+    subscribers_.push_back(nh_.subscribe<god_finger::InterfacePose>(
+        "finger/interface_pose", 100,
+        [](const god_finger::InterfacePose::ConstPtr& m)
+        {
+          if (m->header.stamp != kInjectedPose)
+          {
+            g_non_finite_downstream += finite(m->pose.position) ? 0 : 1;
+          }
+        },
+        ros::VoidConstPtr(), hints));
     // 10 s of device states: a test thread stalled by a loaded machine must not lose the
     // states that show the hold and the ramp (a 100-message queue once dropped the hold).
     subscribers_.push_back(nh_.subscribe<god_finger::DeviceState>(
@@ -200,7 +211,8 @@ class Safety : public testing::Test
 
 TEST_F(Safety, NonFiniteInputIsRejectedCountedAndNeverPassedOn)
 {
-  ros::Publisher poses = nh_.advertise<geometry_msgs::PoseStamped>("finger/pose", 10);
+  // The physics' input across processes (the haptic node's NAME/pose is for tools).
+  ros::Publisher poses = nh_.advertise<god_finger::InterfacePose>("finger/interface_pose", 10);
   ros::Publisher forces = nh_.advertise<geometry_msgs::Vector3Stamped>("finger/device/force", 10);
   ros::Publisher states = nh_.advertise<god_finger::DeviceState>("finger/device/state", 10);
   // Every node that takes these topics (SetUp saw the loop running, so all have subscribed)
@@ -232,11 +244,12 @@ TEST_F(Safety, NonFiniteInputIsRejectedCountedAndNeverPassedOn)
   {
     if (kind == 0)
     {
-      geometry_msgs::PoseStamped pose;
+      god_finger::InterfacePose pose;
       pose.header.stamp = kInjectedPose;
       pose.header.frame_id = "world";
       pose.pose.position.x = NAN;
       pose.pose.orientation.w = 1.0;
+      pose.has_orientation = (i % 2) != 0;  // a 3-DOF finger's and an oriented one's
       poses.publish(pose);
     }
     else if (kind == 1)

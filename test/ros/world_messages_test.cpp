@@ -1,7 +1,10 @@
 // The god-object message the haptic node's local coupling renders against (NAME/proxy_state,
 // src/ros/world_messages.h): a step's state goes out and comes back as the renderer's step, and
 // a malformed message (a non-finite value, a plane that is not unit length, too many planes, a
-// negative stiffness) is refused whole, the caller keeping its last good step.
+// negative stiffness) is refused whole, the caller keeping its last good step. An interface's
+// pose: the identity orientation for a 3-DOF finger on NAME/pose (tools take it), its 3-DOF
+// nature in NAME/interface_pose's has_orientation, and a recording's all-zero quaternion still
+// read as a 3-DOF finger.
 #include "world_messages.h"
 
 #include <gtest/gtest.h>
@@ -88,6 +91,65 @@ TEST(WorldMessages, AMalformedProxyStateIsRefusedWhole)
     EXPECT_EQ(kept.proxy_position, before.proxy_position) << what;  // untouched
     EXPECT_EQ(kept.plane_count, before.plane_count) << what;
   }
+}
+
+TEST(WorldMessages, AThreeDofFingersPoseIsTheIdentityAndItsInterfacePoseSaysSo)
+{
+  const Eigen::Vector3d position(0.01, -0.02, 0.075);
+  const geometry_msgs::PoseStampedPtr pose = poseMessage(ros::Time(3.0), position, nullptr);
+  EXPECT_EQ(pose->header.frame_id, "world");
+  EXPECT_EQ(pose->pose.position.z, 0.075);
+  // The identity: a unit quaternion tf2 and rviz take (the all-zero one they reject).
+  EXPECT_EQ(pose->pose.orientation.w, 1.0);
+  EXPECT_EQ(pose->pose.orientation.x, 0.0);
+  EXPECT_EQ(pose->pose.orientation.y, 0.0);
+  EXPECT_EQ(pose->pose.orientation.z, 0.0);
+  const geometry_msgs::TransformStamped transform = interfaceTransform(*pose, "finger_interface");
+  EXPECT_EQ(transform.child_frame_id, "finger_interface");
+  EXPECT_EQ(transform.transform.rotation.w, 1.0);
+  EXPECT_EQ(transform.transform.translation.y, -0.02);
+
+  const god_finger::InterfacePosePtr physics = interfacePoseMessage(ros::Time(3.0), position, nullptr);
+  EXPECT_FALSE(physics->has_orientation);
+  EXPECT_EQ(physics->pose.orientation.w, 1.0);
+  EXPECT_EQ(physics->header.stamp, ros::Time(3.0));
+  Eigen::Quaterniond orientation(0.5, 0.5, 0.5, 0.5);
+  EXPECT_FALSE(poseOrientation(*physics, &orientation));
+  EXPECT_EQ(orientation.w(), 0.5);  // untouched
+  // NAME/pose is a tool's copy: its identity is no recording's 3-DOF pose (the physics takes
+  // the interface pose instead).
+  EXPECT_FALSE(recordedThreeDofPose(pose->pose));
+}
+
+TEST(WorldMessages, AnOrientedFingersPoseCarriesItsOrientation)
+{
+  // Pulp down, rolled 20 degrees about the finger's axis.
+  const Eigen::Quaterniond finger =
+      Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0) * Eigen::Quaterniond(Eigen::AngleAxisd(0.349, Eigen::Vector3d::UnitX()));
+  const geometry_msgs::PoseStampedPtr pose = poseMessage(ros::Time(1.0), Eigen::Vector3d::Zero(), &finger);
+  EXPECT_EQ(pose->pose.orientation.w, finger.w());
+  EXPECT_EQ(pose->pose.orientation.x, finger.x());
+  EXPECT_EQ(interfaceTransform(*pose, "f").transform.rotation.x, finger.x());
+  const god_finger::InterfacePosePtr physics = interfacePoseMessage(ros::Time(1.0), Eigen::Vector3d::Zero(), &finger);
+  EXPECT_TRUE(physics->has_orientation);
+  Eigen::Quaterniond read = Eigen::Quaterniond::Identity();
+  ASSERT_TRUE(poseOrientation(*physics, &read));
+  EXPECT_EQ(read.coeffs(), finger.coeffs());
+  // Oriented at exactly the identity (pulp up) is still oriented: the flag says it, not the value.
+  const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+  EXPECT_TRUE(interfacePoseMessage(ros::Time(1.0), Eigen::Vector3d::Zero(), &identity)->has_orientation);
+}
+
+TEST(WorldMessages, ARecordingsAllZeroQuaternionIsAThreeDofFinger)
+{
+  // NAME/pose as the nodes sent it before NAME/interface_pose: a 3-DOF finger's orientation
+  // all zero (what an older bag holds).
+  geometry_msgs::Pose recorded;
+  recorded.position.z = 0.1;
+  recorded.orientation.w = 0.0;
+  EXPECT_TRUE(recordedThreeDofPose(recorded));
+  recorded.orientation.x = 1.0;  // an oriented finger's, pulp down: not a 3-DOF one
+  EXPECT_FALSE(recordedThreeDofPose(recorded));
 }
 }  // namespace
 }  // namespace god_finger

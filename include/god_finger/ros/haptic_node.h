@@ -1,10 +1,12 @@
 // The haptic node: between one device driver and the physics, for one interface.
 //
-// Subscribes device/state (god_finger/DeviceState); publishes pose (geometry_msgs/PoseStamped,
-// frame world: the interface position mapped by WorkspaceMapping, and a state's orientation
-// mapped by it, or the all-zero quaternion for a device that reports none: ros/world_messages.h
-// poseMessage; an unusable orientation is counted, rejected_orientations, and the last usable
-// one kept) and its TF (world -> ~interface_frame). Turns feedback (geometry_msgs/WrenchStamped,
+// Subscribes device/state (god_finger/DeviceState); publishes interface_pose
+// (god_finger/InterfacePose, frame world: the interface position mapped by WorkspaceMapping, and
+// a state's orientation mapped by it with has_orientation, or has_orientation false for a device
+// that reports none; an unusable orientation is counted, rejected_orientations, and the last
+// usable one kept), the physics' input, and the same as pose (geometry_msgs/PoseStamped, the
+// identity orientation for a 3-DOF finger: ros/world_messages.h poseMessage) for generic tools,
+// and its TF (world -> ~interface_frame). Turns feedback (geometry_msgs/WrenchStamped,
 // world) into device/force (geometry_msgs/Vector3Stamped, device frame); with a profile that has
 // torque_axes, the feedback's torque (an oriented finger's) into device/torque
 // (geometry_msgs/Vector3Stamped, N m, device frame), whatever ~local_coupling.
@@ -29,6 +31,10 @@
 // The channel's device port (src/ros/channel_port.h): the hand's work through the force applied
 // counted on every state and sent on device_energy (god_finger/PortEnergy); the physics port's
 // packets taken from physics_energy; both on /diagnostics (channel_*), a malformed packet counted.
+// The status is WARN or ERROR (runtime/diagnostic_levels.h, thresholds as private parameters)
+// while no device state came or the newest is older than device_state_timeout, with the local
+// coupling while no proxy state came or the newest is older than proxy_timeout, and for a
+// channel margin beyond the profile's passivity_contact_credit.
 #pragma once
 
 #include <ros/node_handle.h>

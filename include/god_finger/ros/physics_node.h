@@ -1,9 +1,11 @@
 // The physics node: a GodFingerWorld stepped at a fixed rate in its own thread, for N
 // interfaces named by ~interfaces (each a namespace under the node's one).
 //
-// Per interface NAME: subscribes NAME/pose (geometry_msgs/PoseStamped, frame world; a non-zero
-// orientation, the finger frame in the world, makes the interface an oriented finger, the
-// all-zero quaternion keeps it 3-DOF: ros/world_messages.h poseMessage); publishes
+// Per interface NAME: subscribes NAME/interface_pose (god_finger/InterfacePose, frame world; with
+// has_orientation, its orientation, the finger frame in the world, makes the interface an
+// oriented finger, without it the finger is 3-DOF: ros/world_messages.h), and, until the first
+// interface pose, NAME/pose from a recording made before interface_pose (a bag played into it:
+// a pose with the all-zero quaternion is a 3-DOF finger's, recordedThreeDofPose); publishes
 // NAME/feedback (geometry_msgs/WrenchStamped: the force on the hand and an oriented finger's
 // torque, world, every step) and NAME/proxy (geometry_msgs/PointStamped: the god-object, every
 // step), NAME/proxy_state (god_finger/ProxyState: the haptic node's local coupling) and
@@ -11,7 +13,11 @@
 // the device port's from NAME/device_energy, both on a `channel NAME` status of /diagnostics).
 // Publishes contact_areas (god_finger/ContactAreaArray), markers
 // (visualization_msgs/MarkerArray) and the TF of every body (world -> link name) at
-// ~publish_rate; /diagnostics at 1 Hz (step rate, overruns, rejected poses). Services:
+// ~publish_rate; /diagnostics at 1 Hz (step rate, overruns: steps that ended past their deadline
+// though every pose was in, late_pose_steps: steps taken at the deadline for want of a pose,
+// rejected poses; WARN or ERROR for a share of overrun steps, and each channel's for a margin
+// beyond its contact credit: runtime/diagnostic_levels.h, the thresholds as private
+// parameters). Services:
 // reset_scene (std_srvs/Trigger), set_contact_model (god_finger/SetContactModel). A proxy
 // appears at an interface's first valid pose.
 //

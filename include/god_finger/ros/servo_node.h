@@ -3,13 +3,14 @@
 // publishes from a normal-priority thread, which reads the loop's lock-free queues, every
 // topic the three-node topology has: per interface NAME, NAME/device/state
 // (god_finger/DeviceState, every tick), NAME/device/force (Vector3Stamped, device frame: the
-// force commanded), NAME/pose (PoseStamped, world; the all-zero orientation for a 3-DOF finger:
-// ros/world_messages.h poseMessage), NAME/feedback (WrenchStamped, the force on the hand, world),
-// NAME/proxy (PointStamped), TF world -> NAME_interface; and contact_areas, markers and the TF
-// of every body at ~publish_rate, /diagnostics at 1 Hz (the loop's rate, period, latency and
-// step percentiles, overruns). Services reset_scene and set_contact_model,
-// dynamic_reconfigure of the method and the model, the interactive device's marker, and the
-// devices' buttons all reach the loop through its command queue, applied between two steps.
+// force commanded), NAME/pose (PoseStamped, world; the identity orientation for a 3-DOF finger,
+// which DeviceState's has_orientation says: ros/world_messages.h poseMessage), NAME/feedback (WrenchStamped, the force
+// on the hand, world), NAME/proxy (PointStamped), TF world -> NAME_interface; and contact_areas, markers and the TF of
+// every body at ~publish_rate, /diagnostics at 1 Hz (the loop's rate, period, latency and step percentiles, overruns;
+// WARN or ERROR for a share of overrun ticks on real time: runtime/diagnostic_levels.h, the thresholds as private
+// parameters). Services reset_scene and set_contact_model, dynamic_reconfigure of the method and the model, the
+// interactive device's marker, and the devices' buttons all reach the loop through its command queue, applied between
+// two steps.
 //
 // One node rather than three nodelets sharing a loop: the loop must own the devices and the
 // world together, so the three roles would be one object anyway; one node keeps that object
