@@ -432,8 +432,7 @@ struct PhysicsNode::Impl
     // runtime/diagnostic_levels.h), named as such.
     const long waited = late_pose_steps - reported_late_pose_steps;
     reported_late_pose_steps = late_pose_steps;
-    raiseLevel(&status, latePoseLevel(waited, steps, thresholds),
-               shareText(waited, steps, thresholds, "waited until their deadline for a late pose"));
+    raiseLevel(&status, latePoseLevel(waited, steps, thresholds), latePoseText(waited, steps, thresholds));
     auto add = [&status](const std::string& key, const std::string& value) { addValue(&status, key, value); };
     add("rate_hz", jsonNumber(rate));
     add("overruns", std::to_string(overruns));

@@ -127,21 +127,35 @@ DiagnosticLevel streamLevel(bool received, double age, double timeout)
   return std::isfinite(age) && age <= timeout ? DiagnosticLevel::kOk : DiagnosticLevel::kError;
 }
 
-std::string shareText(long count, long ticks, const DiagnosticThresholds& thresholds, const std::string& what)
+namespace
 {
-  if (overrunLevel(count, ticks, thresholds) == DiagnosticLevel::kOk)
-  {
-    return std::string();
-  }
+// "33.3 % of ticks WHAT (333 of 1000; BOUNDS)".
+std::string shareClause(long count, long ticks, const std::string& what, const std::string& bounds)
+{
   return roundedNumber(100.0 * static_cast<double>(count) / static_cast<double>(ticks)) + " % of ticks " + what + " (" +
-         std::to_string(count) + " of " + std::to_string(ticks) + "; WARN above " +
-         roundedNumber(100.0 * thresholds.overrun_warn_share) + " %, ERROR above " +
-         roundedNumber(100.0 * thresholds.overrun_error_share) + " %)";
+         std::to_string(count) + " of " + std::to_string(ticks) + "; " + bounds + ")";
 }
+}  // namespace
 
 std::string overrunText(long overruns, long ticks, const DiagnosticThresholds& thresholds)
 {
-  return shareText(overruns, ticks, thresholds, "overran");
+  if (overrunLevel(overruns, ticks, thresholds) == DiagnosticLevel::kOk)
+  {
+    return std::string();
+  }
+  return shareClause(overruns, ticks, "overran",
+                     "WARN above " + roundedNumber(100.0 * thresholds.overrun_warn_share) + " %, ERROR above " +
+                         roundedNumber(100.0 * thresholds.overrun_error_share) + " %");
+}
+
+std::string latePoseText(long late, long ticks, const DiagnosticThresholds& thresholds)
+{
+  if (latePoseLevel(late, ticks, thresholds) == DiagnosticLevel::kOk)
+  {
+    return std::string();
+  }
+  return shareClause(late, ticks, "waited until their deadline for a late pose",
+                     "WARN above " + roundedNumber(100.0 * thresholds.overrun_warn_share) + " %");
 }
 
 std::string marginText(double margin, double credit, const DiagnosticThresholds& thresholds)

@@ -18,7 +18,7 @@ import unittest
 
 import rospy
 import rostest
-from diagnostic_msgs.msg import DiagnosticArray
+from diagnostic_msgs.msg import DiagnosticArray, DiagnosticStatus
 from geometry_msgs.msg import Point, WrenchStamped
 from god_finger.msg import DeviceState, PortEnergy
 from ros_test_support import RosTestSupport, drag_marker
@@ -33,6 +33,7 @@ class Link(RosTestSupport, unittest.TestCase):
         self.statuses = {}  # status name -> {key: value}, the newest
         self.reports = {}  # status name -> how many came
         self.stamps = {}  # status name -> the newest one's stamp (s, ROS clock)
+        self.levels = {}  # status name -> the newest one's (level, message)
         self.state = None
         self.force = 0.0
         self.applied = 0.0  # N: the largest force the device applied since it was last cleared
@@ -45,6 +46,7 @@ class Link(RosTestSupport, unittest.TestCase):
             self.statuses[status.name] = {pair.key: pair.value for pair in status.values}
             self.reports[status.name] = self.reports.get(status.name, 0) + 1
             self.stamps[status.name] = array.header.stamp.to_sec()
+            self.levels[status.name] = (status.level, status.message)
 
     def on_state(self, message):
         self.state = message.position
@@ -184,6 +186,19 @@ class Link(RosTestSupport, unittest.TestCase):
         self.assertGreaterEqual(float(physics["channel_lowest_margin_J"]), -1e-4 - 1e-9)
         if rospy.get_param("/finger/haptic/local_coupling", True):
             self.assertGreater(int(physics["channel_controlled_steps"]), 0)
+        # Each port's status level follows its margin (runtime/diagnostic_levels.h): below minus the
+        # contact's credit (passivity_contact_credit, 1e-4 J) at least WARN, naming the margin; at
+        # or above it, no word of it.
+        for name in (device_name, physics_name):
+            _, values = self.newer(name)
+            level, message = self.levels[name]
+            margin = float(values["channel_margin_J"])
+            print("channel: %s margin %.6g J, level %d, %r" % (name, margin, level, message))
+            if margin < -1e-4:
+                self.assertGreaterEqual(level, DiagnosticStatus.WARN, message)
+                self.assertIn("energy margin", message)
+            else:
+                self.assertNotIn("energy margin", message)
         # Each side's figure of the other's E_in: what the other had counted by then, across the
         # link, never more.
         self.check_figure_received(physics_name, device_name)

@@ -97,9 +97,10 @@ TEST(DiagnosticLevels, OverrunTextSaysTheShareAndTheThresholds)
   EXPECT_EQ(overrunText(50, 1000, defaults), "");
   EXPECT_EQ(overrunText(333, 1000, defaults),
             "33.3 % of ticks overran (333 of 1000; WARN above 5 %, ERROR above 25 %)");
-  EXPECT_EQ(shareText(60, 1000, defaults, "waited until their deadline for a late pose"),
-            "6 % of ticks waited until their deadline for a late pose (60 of 1000; WARN above 5 %, ERROR above 25 %)");
-  EXPECT_EQ(shareText(50, 1000, defaults, "waited until their deadline for a late pose"), "");
+  // Late poses are WARN at most: their clause names no ERROR bound.
+  EXPECT_EQ(latePoseText(1000, 1000, defaults),
+            "100 % of ticks waited until their deadline for a late pose (1000 of 1000; WARN above 5 %)");
+  EXPECT_EQ(latePoseText(50, 1000, defaults), "");
 }
 
 TEST(DiagnosticLevels, MarginAtAndAroundTheCreditAndTheErrorBound)

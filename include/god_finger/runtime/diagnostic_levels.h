@@ -63,11 +63,12 @@ DiagnosticLevel marginLevel(double margin, double credit, const DiagnosticThresh
 // A stream: `received` whether any message came; `age` (s) of the newest; `timeout` (s).
 DiagnosticLevel streamLevel(bool received, double age, double timeout);
 
-// The status message's clause for `count` of `ticks` late as overrunLevel judges them: "" when
-// OK, else e.g. "33.3 % of ticks WHAT (333 of 1000; WARN above 5 %, ERROR above 25 %)".
-std::string shareText(long count, long ticks, const DiagnosticThresholds& thresholds, const std::string& what);
-// shareText's for overruns: "33.3 % of ticks overran (...)".
+// The status message's clause for a loop's overruns: "" when OK, else e.g. "33.3 % of ticks
+// overran (333 of 1000; WARN above 5 %, ERROR above 25 %)".
 std::string overrunText(long overruns, long ticks, const DiagnosticThresholds& thresholds);
+// For the physics' late poses: "" when OK, else e.g. "100 % of ticks waited until their deadline
+// for a late pose (1000 of 1000; WARN above 5 %)".
+std::string latePoseText(long late, long ticks, const DiagnosticThresholds& thresholds);
 // For a margin: "" when OK, else e.g. "energy margin -0.022 J, below the credit -0.0001 J".
 std::string marginText(double margin, double credit, const DiagnosticThresholds& thresholds);
 }  // namespace god_finger
