@@ -10,10 +10,11 @@
 // Nothing else touches the world while the loop runs: other threads read snapshots.
 // Meets the haptic side only through servo_mailboxes.h. Inputs: the world commands (SpscQueue,
 // the consumer). Outputs: results, snapshots (SpscQueue, the producer), its counters.
-// Real-time: a step allocates nothing and the haptic side never waits for it. What allocates,
-// here on this thread: a reset (command or button 1), a spawn or delete (Bullet's world rebuilt,
-// the scene copied, the edit answered), each counted in world_rebuilds; the snapshots after a
-// spawn or delete (their vectors take the new body count).
+// Real-time: once warmed (its buffers grown to the scene's contacts) a step allocates nothing,
+// and the haptic side never waits for it. What allocates, on this thread: a reset (a command or
+// button 1), a spawn or a delete (Bullet's world rebuilt, the scene copied, the edit answered),
+// each counted in world_rebuilds, and the snapshots after a spawn or a delete (their vectors take
+// the new body count).
 // Units: s, m, N, world frame.
 #pragma once
 

@@ -34,12 +34,13 @@
 //    trajectory bit for bit whatever the load; the loop waits for the publishers instead of
 //    dropping their samples. Its test seam, physics_delay (src/runtime/physics_delay_seam.h),
 //    makes chosen steps late by whole periods, deterministically.
-// Real-time safety: tick() neither allocates (after prepare()) nor logs nor takes a lock another
-// thread holds. The physics thread allocates only for a reset, a spawn or a delete (counted in
-// world_rebuilds), and the haptic thread never waits for it. Both lock their memory when
-// permitted (a warning through the log callback otherwise). Other threads: post() (any;
-// producers serialise among themselves, never with the loop), samples() and snapshots() (one
-// consumer each), counters(); world() only as its comment says.
+// Real-time safety: the haptic side (tick() on real time) neither allocates (after prepare())
+// nor logs nor takes a lock another thread holds. The physics side allocates only while its
+// buffers first grow and to apply a reset, a spawn or a delete (counted in world_rebuilds); the
+// haptic thread never waits for it (on simulated time tick() runs it too). On real time the
+// loop locks the process's memory when permitted (a warning through the log callback
+// otherwise). Other threads: post() (any; producers serialise among themselves, never with the loop), samples() and
+// snapshots() (one consumer each), counters(); world() only as its comment says.
 //
 // Units: s, m, N; device frame for device quantities, world for the rest.
 #pragma once
@@ -202,8 +203,8 @@ class ServoLoop
   // Allocates; call once, before tick() or start().
   void prepare();
   // One period at loop time `time` (s) on the calling thread: the haptic side, and on simulated
-  // time the physics too. Real-time safe. Throws DeviceError from a device. On real time, use
-  // start() (tick() alone would take no physics steps).
+  // time the physics too. Real-time safe as above. Throws DeviceError from a device. On real
+  // time, use start() (tick() alone would take no physics steps).
   void tick(double time);
   // Runs prepare() (if not yet done) and the loop in its own thread (and on real time the
   // physics in another) until stop().
