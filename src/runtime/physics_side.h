@@ -7,7 +7,8 @@
 //
 // Thread: on real time its own (SCHED_FIFO realtime_priority - 1; run()), woken by the
 // mailboxes' PhysicsWake; on simulated time the loop's, in lockstep (physics_delay_seam.h).
-// Nothing else touches the world while the loop runs: other threads read snapshots.
+// Nothing else touches the world while the loop runs (but for its coupling and time step, which
+// never change: ServoLoop::world()); other threads read snapshots.
 // Meets the haptic side only through servo_mailboxes.h. Inputs: the world commands (SpscQueue,
 // the consumer). Outputs: results, snapshots (SpscQueue, the producer), its counters.
 // Real-time: once warmed (its buffers grown to the scene's contacts) a step allocates nothing,
