@@ -229,6 +229,8 @@ struct ServoNode::Impl
     add("stale_ticks", std::to_string(counters.stale_ticks.load()));
     add("physics_steps", std::to_string(counters.physics_steps.load()));
     add("skipped_targets", std::to_string(counters.skipped_targets.load()));
+    // Resets, spawns and deletes: each rebuilds the world on the physics thread (allocates).
+    add("world_rebuilds", std::to_string(counters.world_rebuilds.load()));
     // The hold's passivity observer and controller (runtime/multirate_render.h).
     add("hold_damped_ticks", std::to_string(counters.hold_damped_ticks.load()));
     add("hold_dissipated_J", jsonNumber(counters.hold_dissipated.load()));

@@ -153,7 +153,7 @@ double handleEnergy(const Trace& run, long first, long last)
   return sum;
 }
 
-// The force-step bound of servo_loop.h at tick k (world frame, from the samples).
+// The force-step bound of multirate_render.h at tick k (world frame, from the samples).
 double stepBound(const Trace& run, long k)
 {
   const double delta = kMaxForce / (kStiffness * ServoLoopParams().recovery_periods);

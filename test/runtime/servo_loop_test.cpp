@@ -7,14 +7,17 @@
 #include "device_profile_file.h"
 #include "god_finger/devices/fake_device.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/scene/scene_file.h"
 #include "god_finger/scene/urdf_scene.h"
 #include "god_finger/support/input_error.h"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <future>
 #include <new>
 
 namespace god_finger
@@ -434,6 +437,58 @@ TEST(ServoLoop, BadParametersAndMismatchedTimeStepsAreRefused)
   ServoLoopParams ok;
   ServoLoop loop(std::make_unique<GodFingerWorld>(loadUrdfScene(kScene), WorldParams()), std::move(stiff), ok);
   EXPECT_THROW(loop.prepare(), InputError);
+}
+
+// Issue 53: a spawn or a delete is the physics side's. Applied between two steps, it changes the
+// world's scene, which other threads read from the snapshots (each with the scene of its step),
+// and it is counted with the resets in world_rebuilds: the commands that allocate on the physics
+// thread.
+TEST(ServoLoop, SpawnsDeletesAndResetsAreThePhysicsSidesAndCounted)
+{
+  auto device = std::make_unique<ScriptedDevice>();
+  device->buttons = [](double t) { return (t >= 0.0495 && t < 0.0505) ? 2u : 0u; };  // button 1 at tick 50
+  auto loop = makeLoop(std::move(device));
+  runTicks(*loop, 60);
+  drain(*loop);
+  EXPECT_EQ(loop->counters().world_rebuilds.load(), 1);  // the button's reset
+  const std::size_t bodies = loop->world().scene().bodies.size();
+  ObjectPlacement placement;
+  placement.name = "block";
+  placement.pose.translation() = Eigen::Vector3d(0.2, 0.0, 0.05);
+  ServoCommand spawn;
+  spawn.kind = ServoCommand::Kind::kAddObject;
+  spawn.edit = std::make_shared<ObjectEdit>();
+  spawn.edit->object = GodFingerWorld::prepareObject(
+      loadPlacedObject(std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/objects/block.urdf", placement),
+      loop->world().params());
+  std::future<ObjectEdit::Outcome> spawned = spawn.edit->done.get_future();
+  ASSERT_TRUE(loop->post(spawn));
+  EXPECT_EQ(loop->world().scene().bodies.size(), bodies);  // not before the next tick
+  runTicks(*loop, 20, 60);                                 // a snapshot at tick 64
+  ASSERT_EQ(spawned.wait_for(std::chrono::seconds(0)), std::future_status::ready);
+  EXPECT_TRUE(spawned.get().success);
+  EXPECT_EQ(loop->world().scene().bodies.size(), bodies + 1);
+  WorldSnapshot snapshot;
+  bool snapshots = false;
+  while (loop->snapshots().tryPop(&snapshot))
+  {
+    snapshots = true;
+    EXPECT_EQ(snapshot.scene->bodies.size(), bodies + 1);
+    EXPECT_EQ(snapshot.bodies.size(), bodies + 1);
+  }
+  EXPECT_TRUE(snapshots);
+  ServoCommand remove;
+  remove.kind = ServoCommand::Kind::kRemoveObject;
+  remove.edit = std::make_shared<ObjectEdit>();
+  remove.edit->name = "block";
+  std::future<ObjectEdit::Outcome> removed = remove.edit->done.get_future();
+  ASSERT_TRUE(loop->post(remove));
+  runTicks(*loop, 1, 80);
+  ASSERT_EQ(removed.wait_for(std::chrono::seconds(0)), std::future_status::ready);
+  EXPECT_TRUE(removed.get().success);
+  EXPECT_EQ(loop->world().scene().bodies.size(), bodies);
+  EXPECT_EQ(loop->counters().world_rebuilds.load(), 3);
+  drain(*loop);
 }
 
 TEST(ServoLoop, ATickAllocatesNothing)
