@@ -1,5 +1,7 @@
 #include "god_finger/contact/surface_walk.h"
 
+#include "god_finger/support/contract.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -364,6 +366,7 @@ inline std::optional<WalkStop> crossEdge(const TriangleMesh& mesh, const WalkLim
   {
     return WalkStop::kNonManifoldEdge;
   }
+  GOD_FINGER_EXPECTS(next < mesh.triangleCount(), "a mesh's neighbour indices name its own faces (TriangleMesh)");
   if (const std::optional<WalkStop> limit = surfaceLimit(mesh.normals()[next], limits))
   {
     return limit;
@@ -398,6 +401,8 @@ inline std::optional<WalkStop> crossEdge(const TriangleMesh& mesh, const WalkLim
   {
     walk->lambda[j] = j == a_next ? on_a : (j == b_next ? on_b : 0.0);
   }
+  GOD_FINGER_EXPECTS(carried.allFinite() && std::abs(walk->lambda[0] + walk->lambda[1] + walk->lambda[2] - 1.0) <= 1e-6,
+                     "the walk carries a finite direction and a point of the face onto the next face");
   walk->enter(next, carried, next_gradients);
   return std::nullopt;
 }

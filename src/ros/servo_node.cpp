@@ -375,18 +375,23 @@ ServoNode::ServoNode(ros::NodeHandle nh, ros::NodeHandle pnh) : impl_(new Impl)
     {
       ServoLoop* loop = impl.loop.get();
       const int index = static_cast<int>(i);
-      interface.hand_marker = makeHandMarker(interface_nh, interface.device_frame, setup.hand_starts[i],
-                                             impl.loop->interfaces()[i].profile.workspace_radius,
-                                             [loop, index](const HandMarkerPose& target)
-                                             {
-                                               ServoCommand command;
-                                               command.kind = ServoCommand::Kind::kHandTarget;
-                                               command.interface = index;
-                                               command.hand_target = target.position;
-                                               command.hand_oriented = target.rotated;
-                                               command.hand_orientation = target.orientation;
-                                               loop->post(command);
-                                             });
+      interface.hand_marker =
+          makeHandMarker(interface_nh, interface.device_frame, setup.hand_starts[i],
+                         impl.loop->interfaces()[i].profile.workspace_radius,
+                         [loop, index](const HandMarkerPose& target)
+                         {
+                           ServoCommand command;
+                           command.kind = ServoCommand::Kind::kHandTarget;
+                           command.interface = index;
+                           command.hand_target = target.position;
+                           command.hand_oriented = target.rotated;
+                           command.hand_orientation = target.orientation;
+                           std::string refused;
+                           if (!loop->post(command, &refused))  // the queue is full
+                           {
+                             ROS_WARN_THROTTLE(1.0, "hand marker: a target was dropped: %s", refused.c_str());
+                           }
+                         });
     }
   }
   impl.static_broadcaster = std::make_unique<tf2_ros::StaticTransformBroadcaster>();

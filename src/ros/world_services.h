@@ -63,7 +63,7 @@ class WorldServices
   bool onDelete(god_finger::DeleteObject::Request& request, god_finger::DeleteObject::Response& response);
   // Posts an object edit and waits for the world's outcome (at most kEditDeadline).
   ObjectEdit::Outcome edit(ServoCommand::Kind kind, const std::shared_ptr<ObjectEdit>& edit);
-  bool applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error);
+  [[nodiscard]] bool applyConfig(const god_finger::GodFingerConfig& config, bool model_changed, std::string* error);
 
   Post post_;
   std::string node_;

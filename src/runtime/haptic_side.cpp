@@ -2,6 +2,7 @@
 
 #include "god_finger/haptics/workspace_bound.h"
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/support/contract.h"
 
 #include <algorithm>
 
@@ -103,13 +104,19 @@ void HapticSide::applyHandCommands(double time)
         guard.resume(time);
       }
     }
-    else if (command.hand_oriented)
-    {
-      interfaces_[command.interface].device->setHandPose(command.hand_target, command.hand_orientation);
-    }
     else
     {
-      interfaces_[command.interface].device->setHandTarget(command.hand_target);
+      GOD_FINGER_EXPECTS(command.interface >= 0 && command.interface < static_cast<int>(interfaces_.size()),
+                         "ServoLoop::post checks a hand command's interface before queueing it");
+      HapticDevice& device = *interfaces_[command.interface].device;
+      if (command.hand_oriented)
+      {
+        device.setHandPose(command.hand_target, command.hand_orientation);
+      }
+      else
+      {
+        device.setHandTarget(command.hand_target);
+      }
     }
   }
   counters_->force_stopped = !guards_.empty() && guards_[0].stopped();
@@ -125,6 +132,7 @@ void HapticSide::respond(const DeviceReading& reading, Eigen::Vector3d* force, E
 
 void HapticSide::exchange(long tick, double time, double period_us, ServoMailboxes* mail)
 {
+  const support::RealTimeSection real_time;  // after prepare: no allocation (checked without NDEBUG)
   pending_tick_ = tick;
   pending_time_ = time;
   pending_period_us_ = period_us;
@@ -230,6 +238,7 @@ void HapticSide::takeReading(std::size_t i, const DeviceReading& reading)
 
 void HapticSide::decidePending(ServoMailboxes* mail)
 {
+  const support::RealTimeSection real_time;
   if (!pending_)
   {
     return;

@@ -1,6 +1,7 @@
 #include "physics_side.h"
 
 #include "god_finger/runtime/servo_clock.h"
+#include "god_finger/support/contract.h"
 #include "god_finger/support/denormals.h"
 #include "god_finger/support/input_error.h"
 
@@ -62,7 +63,8 @@ void PhysicsSide::prepare()
   {
     *snapshots_->reserve() = sized;
     snapshots_->commit();
-    snapshots_->tryPop(&drained);
+    const bool popped = snapshots_->tryPop(&drained);
+    GOD_FINGER_EXPECTS(popped, "the element just committed comes out");
   }
   counters_->model = static_cast<int>(world_->contactModel());
 }

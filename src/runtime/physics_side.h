@@ -50,7 +50,7 @@ class PhysicsSide
   void step(const TargetFrame& frame, StepResult* out);
   // Real time: the physics thread, stepping every targets frame posted to `mail` until
   // `keep_running` goes false (true), or until the world throws (false, `error` says what).
-  bool run(ServoMailboxes* mail, const std::atomic<bool>& keep_running, std::string* error);
+  [[nodiscard]] bool run(ServoMailboxes* mail, const std::atomic<bool>& keep_running, std::string* error);
 
   GodFingerWorld& world()
   {

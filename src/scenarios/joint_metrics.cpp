@@ -29,7 +29,6 @@ void JointMetrics::add(double time, const GodFingerWorld& world)
     return;
   }
   const InterfaceState& finger = world.interfaceState(0);
-  const BodyState child = world.bodyState(joint_.child);
   const Eigen::Isometry3d parent_pose =
       joint_.parent < 0 ? Eigen::Isometry3d::Identity() : world.bodyState(joint_.parent).pose;
   const Eigen::Isometry3d joint_frame = parent_pose * joint_.joint_in_parent;

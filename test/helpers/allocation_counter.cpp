@@ -1,5 +1,7 @@
 #include "allocation_counter.h"
 
+#include "god_finger/support/contract.h"
+
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -11,6 +13,13 @@ std::atomic<long> g_allocations{0};
 
 void* operator new(std::size_t size)
 {
+  // A build without NDEBUG (scripts/sanitize's): an allocation in a real-time section is a bug
+  // wherever a test runs one, whether or not that test counts allocations.
+  if (god_finger::support::inRealTimeSection())
+  {
+    god_finger::support::contractViolated(__FILE__, __LINE__, "!inRealTimeSection()",
+                                          "a real-time section allocated (support/contract.h)");
+  }
   ++g_allocations;
   void* p = std::malloc(size == 0 ? 1 : size);
   if (p == nullptr)

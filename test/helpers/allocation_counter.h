@@ -1,5 +1,6 @@
 // Counts heap allocations (operator new) in the test binary that links allocation_counter.cpp,
-// to prove that a real-time path allocates nothing.
+// to prove that a real-time path allocates nothing. In a build without NDEBUG, an allocation inside
+// a support::RealTimeSection (support/contract.h) aborts the test, naming the section's rule.
 #pragma once
 
 namespace god_finger

@@ -110,8 +110,9 @@ TEST(OverlapPush, ThePushGoesOnAcrossAnObjectAddedElsewhere)
   }
   const Eigen::Vector3d before = world.interfaceState(0).overlap_push;
   ASSERT_GT(before.norm(), 0.01);
-  world.addObject(SceneDescription{
-      "far", {boxBody("far", Eigen::Vector3d::Constant(0.02), 0.0, Eigen::Vector3d(0.2, 0.2, 0.01))}, {}, {}});
+  const SceneDescription far{
+      "far", {boxBody("far", Eigen::Vector3d::Constant(0.02), 0.0, Eigen::Vector3d(0.2, 0.2, 0.01))}, {}, {}};
+  EXPECT_TRUE(world.addObject(far).empty());
   world.step();
   const Eigen::Vector3d after = world.interfaceState(0).overlap_push;
   std::printf("overlap push across an edit: %.4f N before, %.4f N after one step\n", before.norm(), after.norm());

@@ -2,7 +2,7 @@
 """rostest (recorded_pose.test): a recording made before NAME/interface_pose still drives the
 physics as a 3-DOF finger. The physics node runs alone. A pose on /finger/pose with an
 orientation (what the nodes now send there for tools: the identity for a 3-DOF finger) is not
-taken: no proxy appears. A bag whose /finger/pose holds a 3-DOF finger's all-zero quaternion
+taken: the first proxy appears where the 3-DOF pose sent after them puts it. A bag whose /finger/pose holds a 3-DOF finger's all-zero quaternion
 (the format before), written here and played with `rosbag play`, moves the proxy onto the ball:
 the finger presses (force on the hand, a contact area) and is drawn as a 3-DOF finger (pulp
 down, world x). Then the first /finger/interface_pose takes over: /finger/pose is no longer
@@ -30,6 +30,7 @@ class RecordedPose(RosTestSupport, unittest.TestCase):
     def setUp(self):
         rospy.init_node("recorded_pose_test")
         self.proxy = None
+        self.first_proxy_z = None
         self.force = 0.0
         self.areas = 0
         self.nail = None  # the fingertip's nail marker's orientation (w, x, y, z)
@@ -42,6 +43,8 @@ class RecordedPose(RosTestSupport, unittest.TestCase):
 
     def on_proxy(self, message):
         self.proxy = message.point
+        if self.first_proxy_z is None:
+            self.first_proxy_z = message.point.z
 
     def on_feedback(self, message):
         f = message.wrench.force
@@ -84,8 +87,14 @@ class RecordedPose(RosTestSupport, unittest.TestCase):
         for _ in range(200):
             self.poses.publish(self.pose(0.2, 1.0))
             time.sleep(0.005)  # paces the poses as a 200 Hz source
-        time.sleep(0.5)  # what the physics would have made of them reaches the topics by then
-        self.assertIsNone(self.proxy, "the physics took a /finger/pose with an orientation")
+        # Then one 3-DOF pose (taken) elsewhere: the physics takes a topic's messages in order, so
+        # the first proxy it publishes is at this pose if, and only if, it took none of the above.
+        marker_z = BALL_TOP + 0.04
+        self.poses.publish(self.pose(marker_z, 0.0))
+        self.wait_for(lambda: self.first_proxy_z is not None, 10.0, "a proxy from the 3-DOF pose")
+        self.assertAlmostEqual(self.first_proxy_z, marker_z, delta=0.002,
+                               msg="the physics took a /finger/pose with an orientation (its proxy appeared at "
+                               "z %.4f m, not at the 3-DOF pose's %.4f m)" % (self.first_proxy_z, marker_z))
         bag = os.path.join(tempfile.mkdtemp(), "recorded_before_interface_pose.bag")
         self.write_old_bag(bag)
         subprocess.run(["rosbag", "play", "--quiet", bag], stdin=subprocess.DEVNULL, check=True, timeout=60)

@@ -4,15 +4,32 @@
 #include "god_finger/scenarios/soft_press_fidelity.h"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 namespace god_finger
 {
 namespace
 {
+// The pad's sink target (%) at the finest mesh within 1 kHz: bench/targets.yaml's soft.pad_sink,
+// the one place it is written.
+double padSinkGoalPercent()
+{
+  for (const YAML::Node& target : YAML::LoadFile(std::string(GOD_FINGER_SOURCE_DIR) + "/bench/targets.yaml"))
+  {
+    if (target["id"].as<std::string>() == "soft.pad_sink")
+    {
+      return target["goal"].as<double>();
+    }
+  }
+  ADD_FAILURE() << "bench/targets.yaml has no target soft.pad_sink";
+  return 0.0;
+}
+
 TEST(SoftPressFidelity, ThePadConvergesTowardBoussinesqAndThePointDoesNot)
 {
   std::vector<SoftPressResult> results;
@@ -34,14 +51,14 @@ TEST(SoftPressFidelity, ThePadConvergesTowardBoussinesqAndThePointDoesNot)
   const auto ratio = [&](std::size_t i, bool pad)
   { return (pad ? results[i].pad_centre : results[i].point_centre) / results[i].boussinesq; };
   // The pad: below w0 (a stiff discretisation of a finite block), rising, each refinement adding
-  // less than half what the one before added; within 15 % of w0 at 1,000 nodes (the finest of
-  // these whose step fits the 1 kHz budget, bench/REPORT.md section 12: the target,
-  // which constant-strain tetrahedra missed by locking, at 0.76) and 10 % at 2,744.
+  // less than half what the one before added; within the target (soft.pad_sink, 15 %) of w0 at
+  // 1,000 nodes (the finest of these whose step fits the 1 kHz budget, bench/REPORT.md section
+  // 12; constant-strain tetrahedra missed it by locking, at 0.76) and 10 % at 2,744.
   EXPECT_LT(ratio(0, true), ratio(1, true));
   EXPECT_LT(ratio(1, true), ratio(2, true));
   EXPECT_LT(ratio(2, true), 1.0);
   EXPECT_LT(ratio(2, true) - ratio(1, true), 0.5 * (ratio(1, true) - ratio(0, true)));
-  EXPECT_GT(ratio(1, true), 0.85);
+  EXPECT_GT(ratio(1, true), 1.0 - padSinkGoalPercent() / 100.0);
   EXPECT_GT(ratio(2, true), 0.90);
   // The point: past w0 already at 1,000 nodes and still growing by more than 0.8 of its last
   // step (a point load's sink has no limit).

@@ -26,11 +26,26 @@ const std::map<std::string, std::string> kBlocks = {{"experiments", "docs/experi
                                                     {"pad_fidelity", "docs/performance.md"},
                                                     {"delay", "README.md"}};
 
+// The generated blocks, made by this run's first check and read by the others (readme_figures
+// --blocks): the experiments run once, not once per copy of the docs.
+const std::string kBlocksFile = ::testing::TempDir() + "readme_figures_blocks.json";
+
 test::ToolRun checkDocs(const std::string& root)
 {
   return test::runTool("/usr/bin/python3 " + kSourceDir + "/scripts/readme_figures",
-                       "--check --root " + root + " --tool " + GOD_FINGER_EXPERIMENT_TOOL);
+                       "--check --root " + root + " --tool " + GOD_FINGER_EXPERIMENT_TOOL + " --blocks " + kBlocksFile);
 }
+
+// Every run of this binary generates the blocks afresh (from this build's experiments).
+class BlocksMadeOnce : public ::testing::Environment
+{
+ public:
+  void SetUp() override
+  {
+    std::filesystem::remove(kBlocksFile);
+  }
+};
+const ::testing::Environment* const kBlocksMadeOnce = ::testing::AddGlobalTestEnvironment(new BlocksMadeOnce);
 
 // A copy of the pages that hold the blocks under a fresh root named `name`, each page's text
 // passed through `edit` (page, text) first.

@@ -95,6 +95,6 @@ bool chooseStartFace(const TriangleMesh& mesh, const SurfaceLocation& start, con
 
 // Walks `distance` (m, >= 0) from `start` along `direction` (unit, in the plane of
 // start.face). Never allocates.
-WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start, const Eigen::Vector3d& direction,
-                       double distance, const WalkLimits& limits);
+[[nodiscard]] WalkResult walkSurface(const TriangleMesh& mesh, const SurfaceLocation& start,
+                                     const Eigen::Vector3d& direction, double distance, const WalkLimits& limits);
 }  // namespace god_finger

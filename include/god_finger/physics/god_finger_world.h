@@ -133,14 +133,15 @@ class GodFingerWorld
   // world) at its bodies' poses: from now on they are the scene's (a reset puts them back there).
   // Returns one line per body it starts inside of (start_overlaps.h). InputError, the world
   // unchanged: no body, a name the scene has already, a body or joint the world refuses.
-  std::vector<std::string> addObject(const SceneDescription& object);
+  [[nodiscard]] std::vector<std::string> addObject(const SceneDescription& object);
   // The same with its bodies made beforehand (prepareObject, with this world's walk_edge_per_max_radius
   // and contact.max_radius; bodies made with others are made again here). Its bodies are taken:
   // a second add of the same one is refused.
-  std::vector<std::string> addObject(PreparedObject* object);
+  [[nodiscard]] std::vector<std::string> addObject(PreparedObject* object);
   // Makes `object`'s bodies for a world with `params` (any thread, no world needed; not real-time).
   // InputError: no body, a body no world takes (its geometry, the scene budget, its joints).
-  static std::unique_ptr<PreparedObject> prepareObject(const SceneDescription& object, const WorldParams& params);
+  [[nodiscard]] static std::unique_ptr<PreparedObject> prepareObject(const SceneDescription& object,
+                                                                     const WorldParams& params);
   // Removes the bodies named `name` or `name/...` (an object added with several links), and the
   // joints that hold them. A finger pressing one lets go over WorldParams::let_go_time. Returns
   // how many bodies went. InputError, nothing removed: no body of that name.

@@ -214,7 +214,7 @@ class ServoLoop
 
   // Any thread. False when the queue is full or the command is invalid (then `error` says why).
   // World commands go to the physics side, hand targets and the force stop to the haptic side.
-  bool post(const ServoCommand& command, std::string* error = nullptr);
+  [[nodiscard]] bool post(const ServoCommand& command, std::string* error = nullptr);
 
   SpscQueue<ServoSample>& samples()
   {

@@ -25,7 +25,7 @@ class SpscQueue
   SpscQueue& operator=(const SpscQueue&) = delete;
 
   // False (and nothing changes) when full.
-  bool tryPush(const T& value)
+  [[nodiscard]] bool tryPush(const T& value)
   {
     const std::size_t tail = tail_.load(std::memory_order_relaxed);
     const std::size_t next = advance(tail);
@@ -55,7 +55,7 @@ class SpscQueue
   }
 
   // False when empty.
-  bool tryPop(T* value)
+  [[nodiscard]] bool tryPop(T* value)
   {
     const std::size_t head = head_.load(std::memory_order_relaxed);
     if (head == tail_.load(std::memory_order_acquire))

@@ -7,6 +7,7 @@
 #include "god_finger/contact/primitive_walk.h"
 #include "god_finger/geometry/surface_locator.h"
 #include "god_finger/physics/oriented_finger.h"
+#include "god_finger/support/contract.h"
 
 #include <algorithm>
 #include <array>
@@ -91,6 +92,10 @@ void addContactArea(WorldCore* core, const ProxyTouch& touch)
   }
   const WorldParams& params = core->params;
   const int body_index = touch.body;
+  GOD_FINGER_EXPECTS(body_index >= 0 && body_index < static_cast<int>(core->bodies.size()) &&
+                         proxy.reference_tangents.size() == core->bodies.size() &&
+                         proxy.warm_starts.size() == core->bodies.size() && proxy.pads.size() == core->bodies.size(),
+                     "a proxy's per-body state has one entry per body of the scene (sizeProxyScratch, remapBodies)");
   const bool proxy_is_a = touch.proxy_is_a;
   btManifoldPoint& contact = touch.manifold->getContactPoint(touch.point);
   const SceneBody& body = core->bodies[body_index];

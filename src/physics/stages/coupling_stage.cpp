@@ -6,6 +6,7 @@
 #include "world_queries.h"
 
 #include "god_finger/physics/oriented_finger.h"
+#include "god_finger/support/contract.h"
 
 #include <array>
 
@@ -31,6 +32,8 @@ void coupleProxy(const WorldParams& params, Proxy* proxy)
   const double dt = params.time_step;
   const Eigen::Vector3d position = toEigen(proxy->rigid->getWorldTransform().getOrigin());
   const Eigen::Vector3d velocity = toEigen(proxy->rigid->getLinearVelocity());
+  GOD_FINGER_EXPECTS(proxy->target.allFinite() && proxy->previous_target.allFinite(),
+                     "setInterfaceTarget keeps only finite targets (non-finite ones are counted, not stored)");
   const Eigen::Vector3d target_velocity = (proxy->target - proxy->previous_target) / dt;
   const CouplingForce coupled = couplingForce(proxy->coupling, proxy->target, target_velocity, position, velocity);
   const Eigen::Vector3d& force = coupled.on_proxy;
