@@ -20,6 +20,13 @@ void buildBodies(WorldCore* core);
 void buildWorld(WorldCore* core);
 // Takes everything out of Bullet's world and destroys it (rigid bodies too; shapes stay).
 void teardownWorld(WorldCore* core);
+// Which bodies core->scene's joints hold (core->jointed; they never sleep).
+void markJointed(WorldCore* core);
+// Body `index` (its SceneBody made, core->jointed marked) built at its description's pose, its
+// soft volume made and settled, its sleep prepared, into Bullet's world (not into sleep.awake).
+void addBodyToWorld(WorldCore* core, int index);
+// Joint `index` of core->scene (its bodies in the world) appended to core->joints and the world.
+void addJointToWorld(WorldCore* core, int index);
 // Proxy `index` (in core->proxies, `initial` set) into the world.
 void addProxyToWorld(WorldCore* core, int index);
 // The per-proxy and per-island scratch, sized for the proxies and bodies there are now.
