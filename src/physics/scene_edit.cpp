@@ -92,7 +92,7 @@ std::string describe(const ProxyInsideAdded& inside, const SceneDescription& sce
 void changeScene(WorldCore* core, SceneDescription next, const std::vector<int>& old_of_new,
                  std::vector<SceneBody>* made_before)
 {
-  // The new bodies' shapes first: an InputError here changes nothing.
+  // The new bodies' shapes and Bullet bodies first: an InputError here changes nothing.
   const double max_edge = walkEdge(*core);
   std::vector<SceneBody> made(next.bodies.size());
   std::size_t taken = 0;
@@ -101,6 +101,7 @@ void changeScene(WorldCore* core, SceneDescription next, const std::vector<int>&
     if (old_of_new[i] < 0)
     {
       made[i] = made_before != nullptr ? std::move((*made_before)[taken++]) : makeSceneBody(next.bodies[i], max_edge);
+      buildBody(core->params, next.bodies[i], static_cast<int>(i), &made[i]);  // a soft one may throw
     }
   }
   const int old_count = static_cast<int>(core->bodies.size());

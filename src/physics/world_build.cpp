@@ -84,14 +84,18 @@ void addJointToWorld(WorldCore* core, int index)
   core->world->addConstraint(core->joints.back().get(), true);  // no contacts between a joint's two bodies
 }
 
+void buildBody(const WorldParams& params, const BodyDescription& description, int index, SceneBody* body)
+{
+  buildRigidBody(description, index, body);
+  if (body->soft)
+  {
+    makeSoftVolume(description, params.time_step, params.gravity, body);
+  }
+}
+
 void addBodyToWorld(WorldCore* core, int index)
 {
   SceneBody& body = core->bodies[index];
-  buildRigidBody(core->scene.bodies[index], index, &body);
-  if (body.soft)
-  {
-    makeSoftVolume(core->scene.bodies[index], core->params.time_step, core->params.gravity, &body);
-  }
   prepareSleep(*core, body.rigid.get());
   core->world->addRigidBody(body.rigid.get(), kBodyGroup, btBroadphaseProxy::AllFilter);
   body.previous_velocity = Eigen::Vector3d::Zero();
@@ -140,6 +144,7 @@ void buildWorld(WorldCore* core)
   markJointed(core);
   for (std::size_t i = 0; i < core->bodies.size(); ++i)
   {
+    buildBody(core->params, core->scene.bodies[i], static_cast<int>(i), &core->bodies[i]);
     addBodyToWorld(core, static_cast<int>(i));
   }
   for (std::size_t j = 0; j < core->scene.joints.size(); ++j)

@@ -9,6 +9,8 @@
 
 #include "scene_body.h"
 
+#include "god_finger/physics/world_params.h"
+
 namespace god_finger::internal
 {
 struct WorldCore;
@@ -22,8 +24,11 @@ void buildWorld(WorldCore* core);
 void teardownWorld(WorldCore* core);
 // Which bodies core->scene's joints hold (core->jointed; they never sleep).
 void markJointed(WorldCore* core);
-// Body `index` (its SceneBody made, core->jointed marked) built at its description's pose, its
-// soft volume made and settled, its sleep prepared, into Bullet's world (not into sleep.awake).
+// `body` (made for `description`, scene index `index`) built at its description's pose: its rigid
+// body, its soft volume made and settled. InputError (a soft body its glue does not hold).
+void buildBody(const WorldParams& params, const BodyDescription& description, int index, SceneBody* body);
+// Body `index` (built, core->jointed marked): its sleep prepared, into Bullet's world (not into
+// sleep.awake).
 void addBodyToWorld(WorldCore* core, int index);
 // Joint `index` of core->scene (its bodies in the world) appended to core->joints and the world.
 void addJointToWorld(WorldCore* core, int index);
