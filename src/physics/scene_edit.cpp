@@ -1,7 +1,9 @@
 #include "scene_edit.h"
 
 #include "bullet_helpers.h"
+#include "stages/escapees.h"
 #include "start_overlaps.h"
+#include "world_bounds.h"
 #include "world_build.h"
 #include "world_core.h"
 #include "world_queries.h"
@@ -9,19 +11,13 @@
 #include "god_finger/scene/scene_budget.h"
 #include "god_finger/support/input_error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace god_finger::internal
 {
 namespace
 {
-struct Motion
-{
-  btTransform transform;
-  btVector3 linear;
-  btVector3 angular;
-};
-
 // A proxy that pressed a body that goes lets go over let_go_time: its proxy is pulled from where
 // it is to the hand.
 void letGoOfRemoved(const WorldParams& params, const std::vector<char>& kept, Proxy* proxy)
@@ -37,6 +33,54 @@ void letGoOfRemoved(const WorldParams& params, const std::vector<char>& kept, Pr
     }
   }
 }
+
+// Body `index`, which goes, is taken out of Bullet's world with what rests on it: a dormant one's
+// group wakes first (with it, what it slept on and what slept on it), then every other dormant
+// body within Bullet's contact threshold of it, so that nothing stays asleep in the air.
+void takeOut(WorldCore* core, int index)
+{
+  btRigidBody* rigid = core->bodies[index].rigid.get();
+  const auto woken = [core](int body) { wakeBody(core, body, false); };
+  if (core->sleep.dormant.dormant(index))
+  {
+    core->sleep.dormant.wakeGroupOf(index, woken);
+  }
+  core->world->updateSingleAabb(rigid);  // its broadphase box, with Bullet's contact threshold
+  const btBroadphaseProxy* handle = rigid->getBroadphaseHandle();
+  core->sleep.dormant.wakeOverlapping(handle->m_aabbMin, handle->m_aabbMax, woken);
+  // Bullet drops its pairs and returns their manifolds (btCollisionWorld::removeCollisionObject,
+  // cleanProxyFromPairs); no other pair's manifold changes.
+  core->world->removeRigidBody(rigid);
+}
+
+// The world's bounds for the scene as edited: each body's box at its initial pose, as a build
+// computes them (a moving body's from its description, not from where it is now).
+Eigen::AlignedBox3d startBox(const WorldCore& core)
+{
+  Eigen::AlignedBox3d box;
+  for (std::size_t i = 0; i < core.bodies.size(); ++i)
+  {
+    const SceneBody& body = core.bodies[i];
+    const BodyDescription& description = core.scene.bodies[i];
+    btVector3 min;
+    btVector3 max;
+    if (description.is_static || body.soft)
+    {
+      body.rigid->getAabb(min, max);
+    }
+    else
+    {
+      body.rigid->getCollisionShape()->getAabb(toBullet(description.pose * body.com_in_link), min, max);
+    }
+    box.extend(toEigen(min)).extend(toEigen(max));
+  }
+  return box;
+}
+
+bool staticRigid(const SceneDescription& scene, const std::vector<SceneBody>& bodies, int index)
+{
+  return scene.bodies[index].is_static && !bodies[index].soft;
+}
 }  // namespace
 
 std::string describe(const ProxyInsideAdded& inside, const SceneDescription& scene)
@@ -48,6 +92,7 @@ std::string describe(const ProxyInsideAdded& inside, const SceneDescription& sce
 void changeScene(WorldCore* core, SceneDescription next, const std::vector<int>& old_of_new,
                  std::vector<SceneBody>* made_before)
 {
+  // The new bodies' shapes and Bullet bodies first: an InputError here changes nothing.
   const double max_edge = walkEdge(*core);
   std::vector<SceneBody> made(next.bodies.size());
   std::size_t taken = 0;
@@ -56,67 +101,130 @@ void changeScene(WorldCore* core, SceneDescription next, const std::vector<int>&
     if (old_of_new[i] < 0)
     {
       made[i] = made_before != nullptr ? std::move((*made_before)[taken++]) : makeSceneBody(next.bodies[i], max_edge);
+      buildBody(core->params, next.bodies[i], static_cast<int>(i), &made[i]);  // a soft one may throw
     }
   }
-  std::vector<char> kept(core->bodies.size(), 0);
-  for (const int old : old_of_new)
-  {
-    if (old >= 0)
-    {
-      kept[old] = 1;
-    }
-  }
-  std::vector<Motion> motions;
-  for (const SceneBody& body : core->bodies)
-  {
-    motions.push_back(
-        {body.rigid->getWorldTransform(), body.rigid->getLinearVelocity(), body.rigid->getAngularVelocity()});
-  }
-  // The proxies leave the old world whole, and join the new one as they are.
-  for (Proxy& proxy : core->proxies)
-  {
-    letGoOfRemoved(core->params, kept, &proxy);
-    core->world->removeRigidBody(proxy.rigid.get());
-  }
-  std::vector<Proxy> proxies = std::move(core->proxies);
-  core->proxies.clear();
-  teardownWorld(core);
-  for (std::size_t i = 0; i < next.bodies.size(); ++i)
+  const int old_count = static_cast<int>(core->bodies.size());
+  std::vector<char> kept(old_count, 0);
+  std::vector<int> new_of_old(old_count, -1);
+  for (std::size_t i = 0; i < old_of_new.size(); ++i)
   {
     if (old_of_new[i] >= 0)
     {
-      made[i] = std::move(core->bodies[old_of_new[i]]);
+      kept[old_of_new[i]] = 1;
+      new_of_old[old_of_new[i]] = static_cast<int>(i);
     }
   }
+  // The last step's injected manifolds and pads point at the proxies' per-body state and may
+  // hold a body that goes; the next step makes them anew.
+  core->injector->release();
+  core->pads.clear();
+  core->touches.clear();
+  bool statics_changed = false;
+  for (Proxy& proxy : core->proxies)
+  {
+    letGoOfRemoved(core->params, kept, &proxy);
+  }
+  // The joints that hold a body that goes go first (Bullet's constraints hold their bodies).
+  std::vector<std::unique_ptr<btTypedConstraint>> joints;
+  for (std::size_t j = 0; j < core->joints.size(); ++j)
+  {
+    const JointDescription& joint = core->scene.joints[j];
+    if (kept[joint.child] && (joint.parent < 0 || kept[joint.parent]))
+    {
+      joints.push_back(std::move(core->joints[j]));
+    }
+    else
+    {
+      core->world->removeConstraint(core->joints[j].get());
+    }
+  }
+  std::vector<const btCollisionObject*> removed;
+  for (int old = 0; old < old_count; ++old)
+  {
+    if (!kept[old])
+    {
+      statics_changed = statics_changed || staticRigid(core->scene, core->bodies, old);
+      takeOut(core, old);
+      removed.push_back(core->bodies[old].rigid.get());
+    }
+  }
+  // The bodies that stay keep their Bullet bodies (in the world, or dormant), renumbered.
+  std::vector<char> was_jointed(next.bodies.size(), 0);
+  for (std::size_t i = 0; i < next.bodies.size(); ++i)
+  {
+    const int old = old_of_new[i];
+    if (old >= 0)
+    {
+      made[i] = std::move(core->bodies[old]);
+      made[i].rigid->setUserIndex2(static_cast<int>(i));
+      was_jointed[i] = core->jointed[old];
+    }
+  }
+  remapSleep(core, old_of_new, removed);
+  std::vector<SceneBody> gone = std::move(core->bodies);  // destroyed once nothing refers to them
   core->bodies = std::move(made);
   core->scene = std::move(next);
   core->shared_scene = std::make_shared<const SceneDescription>(core->scene);
-  buildWorld(core);
+  core->joints = std::move(joints);
+  markJointed(core);
   for (std::size_t i = 0; i < core->bodies.size(); ++i)
   {
-    if (old_of_new[i] < 0 || core->scene.bodies[i].is_static)
+    if (old_of_new[i] < 0 || was_jointed[i] == core->jointed[i] || core->scene.bodies[i].is_static)
     {
       continue;
     }
-    const Motion& motion = motions[old_of_new[i]];
+    // Its joint went (or it got one): it may sleep now (or never again).
     btRigidBody* rigid = core->bodies[i].rigid.get();
-    rigid->setWorldTransform(motion.transform);
-    rigid->setInterpolationWorldTransform(motion.transform);
-    rigid->setLinearVelocity(motion.linear);
-    rigid->setAngularVelocity(motion.angular);
-    rigid->setInterpolationLinearVelocity(motion.linear);
-    rigid->setInterpolationAngularVelocity(motion.angular);
-    core->world->updateSingleAabb(rigid);
+    if (core->sleep.dormant.dormant(static_cast<int>(i)))
+    {
+      core->sleep.dormant.wakeGroupOf(static_cast<int>(i), [core](int body) { wakeBody(core, body, false); });
+    }
+    rigid->forceActivationState(ACTIVE_TAG);
+    rigid->setDeactivationTime(0.0);
+    prepareSleep(*core, rigid);
   }
-  core->proxies = std::move(proxies);
+  bool soft_added = false;
+  for (std::size_t i = 0; i < core->bodies.size(); ++i)
+  {
+    if (old_of_new[i] >= 0)
+    {
+      continue;
+    }
+    const int index = static_cast<int>(i);
+    addBodyToWorld(core, index);
+    soft_added = soft_added || core->bodies[i].soft != nullptr;
+    statics_changed = statics_changed || staticRigid(core->scene, core->bodies, index);
+    if (!core->scene.bodies[i].is_static)
+    {
+      core->sleep.awake.push_back(index);
+    }
+  }
+  for (std::size_t j = core->joints.size(); j < core->scene.joints.size(); ++j)
+  {
+    addJointToWorld(core, static_cast<int>(j));
+  }
+  core->bounds = worldBounds(startBox(*core), core->params.world_margin);
+  if (statics_changed || soft_added)
+  {
+    placeSoftSupports(core);
+  }
+  core->soft_bodies.clear();
+  for (std::size_t i = 0; i < core->bodies.size(); ++i)
+  {
+    if (core->bodies[i].soft)
+    {
+      core->soft_bodies.push_back(static_cast<int>(i));
+    }
+  }
   for (Proxy& proxy : core->proxies)
   {
     remapBodies(old_of_new, &proxy);
     // Its contacts were numbered in the old scene: none until the next step finds them.
     proxy.state.contact_count = 0;
-    core->world->addRigidBody(proxy.rigid.get(), kProxyGroup, kBodyGroup);
   }
   sizeProxyScratch(core);
+  gone.clear();
 }
 
 SceneDescription sceneWithObject(const WorldCore& core, const SceneDescription& object, std::vector<int>* old_of_new)

@@ -48,31 +48,6 @@ void buildBulletWorld(WorldCore* core)
   core->injector = std::make_unique<SubGodObjectInjector>(core->dispatcher.get());
 }
 
-// Which bodies a joint holds (they never sleep).
-void markJointed(WorldCore* core)
-{
-  core->jointed.assign(core->bodies.size(), 0);
-  for (const JointDescription& joint : core->scene.joints)
-  {
-    core->jointed[joint.child] = 1;
-    if (joint.parent >= 0 && !core->scene.bodies[joint.parent].is_static)
-    {
-      core->jointed[joint.parent] = 1;  // a static parent (a cabinet) is never simulated anyway
-    }
-  }
-}
-
-// The joints' constraints, between bodies already in the world.
-void buildJoints(WorldCore* core)
-{
-  for (const JointDescription& joint : core->scene.joints)
-  {
-    core->joints.push_back(makeJointConstraint(joint, joint.parent < 0 ? nullptr : &core->bodies[joint.parent],
-                                               core->bodies[joint.child], core->world_anchor.get()));
-    core->world->addConstraint(core->joints.back().get(), true);  // no contacts between a joint's two bodies
-  }
-}
-
 Eigen::AlignedBox3d sceneBox(const WorldCore& core)
 {
   Eigen::AlignedBox3d box;
@@ -87,6 +62,45 @@ Eigen::AlignedBox3d sceneBox(const WorldCore& core)
 }
 
 }  // namespace
+
+void markJointed(WorldCore* core)
+{
+  core->jointed.assign(core->bodies.size(), 0);
+  for (const JointDescription& joint : core->scene.joints)
+  {
+    core->jointed[joint.child] = 1;
+    if (joint.parent >= 0 && !core->scene.bodies[joint.parent].is_static)
+    {
+      core->jointed[joint.parent] = 1;  // a static parent (a cabinet) is never simulated anyway
+    }
+  }
+}
+
+void addJointToWorld(WorldCore* core, int index)
+{
+  const JointDescription& joint = core->scene.joints[index];
+  core->joints.push_back(makeJointConstraint(joint, joint.parent < 0 ? nullptr : &core->bodies[joint.parent],
+                                             core->bodies[joint.child], core->world_anchor.get()));
+  core->world->addConstraint(core->joints.back().get(), true);  // no contacts between a joint's two bodies
+}
+
+void buildBody(const WorldParams& params, const BodyDescription& description, int index, SceneBody* body)
+{
+  buildRigidBody(description, index, body);
+  if (body->soft)
+  {
+    makeSoftVolume(description, params.time_step, params.gravity, body);
+  }
+}
+
+void addBodyToWorld(WorldCore* core, int index)
+{
+  SceneBody& body = core->bodies[index];
+  prepareSleep(*core, body.rigid.get());
+  core->world->addRigidBody(body.rigid.get(), kBodyGroup, btBroadphaseProxy::AllFilter);
+  body.previous_velocity = Eigen::Vector3d::Zero();
+  body.net_force = Eigen::Vector3d::Zero();
+}
 
 void sizeProxyScratch(WorldCore* core)
 {
@@ -130,18 +144,13 @@ void buildWorld(WorldCore* core)
   markJointed(core);
   for (std::size_t i = 0; i < core->bodies.size(); ++i)
   {
-    SceneBody& body = core->bodies[i];
-    buildRigidBody(core->scene.bodies[i], static_cast<int>(i), &body);
-    if (body.soft)
-    {
-      makeSoftVolume(core->scene.bodies[i], core->params.time_step, core->params.gravity, &body);
-    }
-    prepareSleep(*core, body.rigid.get());
-    core->world->addRigidBody(body.rigid.get(), kBodyGroup, btBroadphaseProxy::AllFilter);
-    body.previous_velocity = Eigen::Vector3d::Zero();
-    body.net_force = Eigen::Vector3d::Zero();
+    buildBody(core->params, core->scene.bodies[i], static_cast<int>(i), &core->bodies[i]);
+    addBodyToWorld(core, static_cast<int>(i));
   }
-  buildJoints(core);
+  for (std::size_t j = 0; j < core->scene.joints.size(); ++j)
+  {
+    addJointToWorld(core, static_cast<int>(j));
+  }
   core->bounds = worldBounds(sceneBox(*core), core->params.world_margin);
   placeSoftSupports(core);
   for (std::size_t i = 0; i < core->proxies.size(); ++i)

@@ -9,6 +9,8 @@
 
 #include "scene_body.h"
 
+#include "god_finger/physics/world_params.h"
+
 namespace god_finger::internal
 {
 struct WorldCore;
@@ -20,6 +22,16 @@ void buildBodies(WorldCore* core);
 void buildWorld(WorldCore* core);
 // Takes everything out of Bullet's world and destroys it (rigid bodies too; shapes stay).
 void teardownWorld(WorldCore* core);
+// Which bodies core->scene's joints hold (core->jointed; they never sleep).
+void markJointed(WorldCore* core);
+// `body` (made for `description`, scene index `index`) built at its description's pose: its rigid
+// body, its soft volume made and settled. InputError (a soft body its glue does not hold).
+void buildBody(const WorldParams& params, const BodyDescription& description, int index, SceneBody* body);
+// Body `index` (built, core->jointed marked): its sleep prepared, into Bullet's world (not into
+// sleep.awake).
+void addBodyToWorld(WorldCore* core, int index);
+// Joint `index` of core->scene (its bodies in the world) appended to core->joints and the world.
+void addJointToWorld(WorldCore* core, int index);
 // Proxy `index` (in core->proxies, `initial` set) into the world.
 void addProxyToWorld(WorldCore* core, int index);
 // The per-proxy and per-island scratch, sized for the proxies and bodies there are now.

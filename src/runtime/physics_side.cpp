@@ -11,7 +11,8 @@ namespace god_finger::internal
 {
 namespace
 {
-// The commands whose application rebuilds Bullet's world (and so allocates) on this thread.
+// The commands whose application rebuilds Bullet's world (a reset) or edits it (a spawn, a
+// delete), and so allocates, on this thread.
 bool rebuildsTheWorld(ServoCommand::Kind kind)
 {
   return kind == ServoCommand::Kind::kReset || kind == ServoCommand::Kind::kAddObject ||

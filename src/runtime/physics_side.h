@@ -13,10 +13,9 @@
 // the consumer). Outputs: results, snapshots (SpscQueue, the producer), its counters.
 // Real-time: once warmed (its buffers grown to the scene's contacts) a step allocates nothing,
 // and the haptic side never waits for it. What allocates, on this thread: a reset (a command or
-// button 1), a spawn or a delete (Bullet's world rebuilt, the scene copied, the edit answered),
-// each counted in world_rebuilds, and the snapshots after a spawn or a delete (their vectors take
-// the new body count).
-// Units: s, m, N, world frame.
+// button 1), a spawn or a delete (Bullet's world rebuilt, or bodies added to or removed from it; the scene copied, the
+// edit answered), each counted in world_rebuilds, and the snapshots after a spawn or a delete (their vectors take the
+// new body count). Units: s, m, N, world frame.
 #pragma once
 
 #include "servo_mailboxes.h"

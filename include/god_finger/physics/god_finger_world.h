@@ -56,7 +56,7 @@ class ProxyInsideBodyError : public InputError
 // An object made ready to add to a world (GodFingerWorld::prepareObject): its bodies' shapes,
 // walk meshes, trees and hulls built, the costly part of adding it (a first load decomposes a
 // concave mesh), so that it can be done in another thread (a service's) than the world's, whose
-// addObject then only rebuilds Bullet's world. Opaque.
+// addObject then only adds its bodies to Bullet's world. Opaque.
 class PreparedObject
 {
  public:
@@ -123,11 +123,11 @@ class GodFingerWorld
   // start: a hand holding a device feels no jump (the servo loop's reset).
   void resetAtInterfaces();
 
-  // Scene edits while running (the spawn_object and delete_object services): Bullet's world is
-  // rebuilt around the new scene, every other body and every proxy kept where it is and moving
-  // as it moved (contacts restart: one step without warm start; sleeping bodies wake and sleep
-  // again). The time and step count go on. Not real-time safe: it allocates and makes the new
-  // bodies' shapes.
+  // Scene edits while running (the spawn_object and delete_object services): the object's bodies
+  // join or leave Bullet's world as it runs, every other body and every proxy kept where it is
+  // and moving as it moved, with its contacts and their warm starts, and asleep if it slept
+  // (what rested on a removed body wakes). The time and step count go on. Not real-time safe: it
+  // allocates and makes the new bodies' shapes (src/physics/scene_edit.h).
   //
   // Adds `object` (scene_file.h loadPlacedObject: its joints index its own bodies, parent -1 the
   // world) at its bodies' poses: from now on they are the scene's (a reset puts them back there).

@@ -24,7 +24,7 @@ namespace god_finger
 struct ObjectEdit
 {
   // kAddObject: scene_file.h loadPlacedObject's, its bodies made beforehand in the caller's thread
-  // (GodFingerWorld::prepareObject): the world's thread only rebuilds Bullet's world.
+  // (GodFingerWorld::prepareObject): the world's thread only adds its bodies to Bullet's world.
   std::unique_ptr<PreparedObject> object;
   std::string name;  // kRemoveObject: a body's name, or an object's (its NAME/... bodies)
   struct Outcome

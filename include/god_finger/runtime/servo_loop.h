@@ -161,8 +161,8 @@ struct ServoCounters
   std::atomic<long> physics_steps{0};    // steps taken
   std::atomic<long> skipped_targets{0};  // targets the physics skipped, being late
   // Resets (a command or button 1), spawns and deletes the physics side applied, refused ones
-  // included: what allocates on the physics thread (Bullet's world rebuilt, the scene copied, the
-  // edit answered), so the step that applies one may be late.
+  // included: what allocates on the physics thread (Bullet's world rebuilt for a reset, bodies
+  // added or removed in it for an edit, the scene copied, the edit answered), so the step that applies one may be late.
   std::atomic<long> world_rebuilds{0};
   // The multi-rate hold's passivity controller (multirate_render.h): interface-ticks it damped
   // or cut at, the energy it took out (J), and the lowest its observer saw (J, any interface;

@@ -51,6 +51,15 @@ class DormantBodies
       wakeGroup(hit, woken);
     }
   }
+  // Dormant `body` and every body of its group leave the set, each passed to `woken`.
+  template <class Woken>
+  void wakeGroupOf(int body, Woken woken)
+  {
+    wakeGroup(body, woken);
+  }
+  // The bodies renumbered for a scene edit (scene_edit.h): body i is old_of_new[i] of before
+  // (-1: a new body, awake). A body that goes must not be dormant (wake it first). Allocates.
+  void remap(const std::vector<int>& old_of_new);
   // Every dormant body leaves the set, passed to `woken`.
   template <class Woken>
   void wakeAll(Woken woken)

@@ -2,6 +2,8 @@
 
 #include "bullet_helpers.h"
 
+#include <algorithm>
+
 namespace god_finger::internal
 {
 namespace
@@ -93,5 +95,38 @@ void SleptContacts::restore(btCollisionDispatcher* dispatcher)
     saved_[index].clear();
   }
   woken_.clear();
+}
+
+void SleptContacts::remap(const std::vector<int>& old_of_new, const std::vector<const btCollisionObject*>& removed)
+{
+  std::vector<int> new_of_old(saved_.size(), -1);
+  std::vector<std::vector<SavedContact>> saved(old_of_new.size());
+  for (std::size_t i = 0; i < old_of_new.size(); ++i)
+  {
+    const int old = old_of_new[i];
+    if (old < 0)
+    {
+      continue;
+    }
+    new_of_old[old] = static_cast<int>(i);
+    saved[i] = std::move(saved_[old]);
+    // A body that goes may leave a new one its address: a contact with it would be put back there.
+    saved[i].erase(std::remove_if(saved[i].begin(), saved[i].end(),
+                                  [&removed](const SavedContact& contact) {
+                                    return std::find(removed.begin(), removed.end(), contact.other) != removed.end();
+                                  }),
+                   saved[i].end());
+  }
+  saved_ = std::move(saved);
+  std::vector<int> woken;
+  woken.reserve(saved_.size());
+  for (const int old : woken_)
+  {
+    if (new_of_old[old] >= 0)
+    {
+      woken.push_back(new_of_old[old]);
+    }
+  }
+  woken_ = std::move(woken);
 }
 }  // namespace god_finger::internal

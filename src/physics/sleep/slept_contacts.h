@@ -26,6 +26,10 @@ class SleptContacts
   {
     woken_.push_back(body);
   }
+  // The bodies renumbered for a scene edit (scene_edit.h): body i is old_of_new[i] of before (-1:
+  // a new body, nothing saved); the contacts saved with a body that goes (`removed`, not in
+  // Bullet's world any more), on either side, are forgotten. Allocates.
+  void remap(const std::vector<int>& old_of_new, const std::vector<const btCollisionObject*>& removed);
   // After the narrow phase, before the islands and the solver: the step's woken bodies get back
   // the contacts they slept on, where the new manifold lacks them and they still touch; their
   // saved contacts are then forgotten.

@@ -25,6 +25,33 @@ void resetSleep(WorldCore* core)
   sleep.falling_asleep.assign(core->bodies.size(), 0);
 }
 
+void remapSleep(WorldCore* core, const std::vector<int>& old_of_new,
+                const std::vector<const btCollisionObject*>& removed)
+{
+  WorldSleep& sleep = core->sleep;
+  std::vector<int> new_of_old(core->bodies.size(), -1);
+  for (std::size_t i = 0; i < old_of_new.size(); ++i)
+  {
+    if (old_of_new[i] >= 0)
+    {
+      new_of_old[old_of_new[i]] = static_cast<int>(i);
+    }
+  }
+  sleep.dormant.remap(old_of_new);
+  std::vector<int> awake;
+  awake.reserve(old_of_new.size());
+  for (const int old : sleep.awake)
+  {
+    if (new_of_old[old] >= 0)
+    {
+      awake.push_back(new_of_old[old]);  // in the order they were: the wake stage's order
+    }
+  }
+  sleep.awake = std::move(awake);
+  sleep.slept_contacts.remap(old_of_new, removed);
+  sleep.falling_asleep.assign(old_of_new.size(), 0);
+}
+
 void prepareSleep(const WorldCore& core, btRigidBody* rigid)
 {
   const SleepParams& sleep = core.params.sleep;

@@ -34,6 +34,12 @@ struct WorldSleep
 
 // Every dynamic body awake, nothing dormant (a world just built: its bodies are in Bullet's world).
 void resetSleep(WorldCore* core);
+// Sleep's per-body state renumbered for a scene edit (scene_edit.h), before core->bodies is: body
+// i becomes old_of_new[i] of before (-1: a new body, not yet awake: the edit adds it). Bodies that
+// go must be awake (not dormant), their contacts saved by sleepers forgotten (`removed`: their
+// Bullet bodies). Dormant bodies stay dormant, with their groups and slept contacts.
+void remapSleep(WorldCore* core, const std::vector<int>& old_of_new,
+                const std::vector<const btCollisionObject*>& removed);
 // A dynamic body starts with a full sleep timer, less the time a free fall from rest takes to
 // exceed twice the sleep speed: placed at rest it sleeps within that time (its island with it),
 // placed in the air it falls. A jointed body, or sleep.time 0: never sleeps.
