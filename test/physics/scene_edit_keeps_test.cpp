@@ -119,7 +119,7 @@ TEST(SceneEditKeeps, ASpawnFarAwayLeavesALoadedStackBitForBit)
   record(&edited, kSettle);
   record(&plain, kSettle);
   // In the air far from the stack: it falls 0.2 m in the compared steps, touching nothing.
-  edited.addObject(block("far", Eigen::Vector3d(0.4, 0.4, 0.35)));
+  EXPECT_TRUE(edited.addObject(block("far", Eigen::Vector3d(0.4, 0.4, 0.35))).empty());
   ASSERT_EQ(edited.bodyCount(), 4);
   const Difference difference = compare(record(&edited, kAfter), record(&plain, kAfter));
   std::printf("spawn far away: %d of %d stack values differ from the run without it, largest %.3e\n",
@@ -240,7 +240,7 @@ TEST(SceneEditKeeps, SleepingBodiesStayAsleepAcrossASpawnAndADeleteElsewhere)
   settleAsleep(&world);
   const int side = world.scene().find("side");
   const Eigen::Isometry3d side_pose = world.bodyState(side).pose;
-  world.addObject(block("far", Eigen::Vector3d(0.4, 0.4, 0.2)));
+  EXPECT_TRUE(world.addObject(block("far", Eigen::Vector3d(0.4, 0.4, 0.2))).empty());
   for (const char* name : {"cube", "top", "side"})
   {
     EXPECT_TRUE(world.bodyState(world.scene().find(name)).asleep) << name << " after the spawn";
