@@ -6,8 +6,8 @@
 // settles (peak-to-peak over the last 0.3 s under 10 um). The test finds the first unstable k
 // for each delay and checks that the profile's k stays a factor of 4 below it.
 #include "device_profile_file.h"
-#include "god_finger/haptics/device_profile.h"
 #include "god_finger/devices/fake_device.h"
+#include "god_finger/haptics/device_profile.h"
 
 #include <gtest/gtest.h>
 
@@ -45,7 +45,8 @@ bool settles(const FakeDeviceParams& params, double stiffness, double damping, i
       return false;
     }
     readings.push_back(reading);
-    const DeviceReading& seen = readings.front();  // what the loop knows `delay` ticks later
+    // What the loop knows `delay` ticks later: a copy, as pop_front frees the element.
+    const DeviceReading seen = readings.front();
     readings.pop_front();
     CouplingProfile wall;
     wall.stiffness = stiffness;
