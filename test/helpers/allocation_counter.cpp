@@ -13,13 +13,9 @@ std::atomic<long> g_allocations{0};
 
 void* operator new(std::size_t size)
 {
-  // A build without NDEBUG (scripts/sanitize's): an allocation in a real-time section is a bug
-  // wherever a test runs one, whether or not that test counts allocations.
-  if (god_finger::support::inRealTimeSection())
-  {
-    god_finger::support::contractViolated(__FILE__, __LINE__, "!inRealTimeSection()",
-                                          "a real-time section allocated (support/contract.h)");
-  }
+  // A build without NDEBUG (scripts/sanitize's): a real-time section that completes after an
+  // allocation is a bug wherever a test runs one, whether or not that test counts allocations.
+  god_finger::support::noteAllocation();
   ++g_allocations;
   void* p = std::malloc(size == 0 ? 1 : size);
   if (p == nullptr)

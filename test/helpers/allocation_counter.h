@@ -1,6 +1,6 @@
 // Counts heap allocations (operator new) in the test binary that links allocation_counter.cpp,
-// to prove that a real-time path allocates nothing. In a build without NDEBUG, an allocation inside
-// a support::RealTimeSection (support/contract.h) aborts the test, naming the section's rule.
+// to prove that a real-time path allocates nothing. In a build without NDEBUG, a
+// support::RealTimeSection (support/contract.h) that completes after an allocation aborts the test.
 #pragma once
 
 namespace god_finger

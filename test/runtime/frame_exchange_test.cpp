@@ -27,7 +27,11 @@ const std::string kScene = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/scenes/ta
 struct MovedOmni : OmniIo
 {
   OmniFrame stylus;
-  std::vector<std::array<double, 3>> forces;  // Omni frame, one per servo frame
+  std::vector<std::array<double, 3>> forces;  // Omni frame, one per servo frame; reserved: a tick allocates nothing
+  MovedOmni()
+  {
+    forces.reserve(1 << 14);
+  }
   bool open(const std::string&) override
   {
     return true;

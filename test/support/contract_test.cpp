@@ -1,7 +1,8 @@
 // support/contract.h: a contract is checked, and aborts naming itself, in a build without NDEBUG
 // (scripts/sanitize's), and costs nothing, its condition not even evaluated, with NDEBUG (the
-// nodes' and the bench's RelWithDebInfo); an allocation inside a real-time section aborts the
-// test binary that links allocation_counter (this one) in the first kind of build.
+// nodes' and the bench's RelWithDebInfo); a real-time section that allocated aborts, when it
+// ends, the test binary that links allocation_counter (this one) in the first kind of build,
+// unless an exception ends it.
 #include "allocation_counter.h"
 
 #include "god_finger/support/contract.h"
@@ -9,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <stdexcept>
 
 namespace god_finger
 {
@@ -29,7 +31,7 @@ TEST(ContractDeathTest, ABrokenContractAbortsNamingWhatItGuards)
                "\\(value > 0\\)");
 }
 
-TEST(ContractDeathTest, AnAllocationInARealTimeSectionAborts)
+TEST(ContractDeathTest, ARealTimeSectionThatAllocatedAbortsWhenItEnds)
 {
   const long before = test::allocationCount();
   auto outside = std::make_unique<int>(1);  // outside any section: counted, allowed
@@ -41,6 +43,18 @@ TEST(ContractDeathTest, AnAllocationInARealTimeSectionAborts)
         (void)inside;
       },
       "a real-time section allocated");
+}
+
+TEST(Contract, ASectionLeftByAnExceptionMayAllocateItsMessage)
+{
+  // A device fault that stops the loop: its DeviceError's message allocates on the way out.
+  EXPECT_THROW(
+      {
+        const support::RealTimeSection real_time;
+        throw std::runtime_error("a device fault, with a message long enough to allocate its text");
+      },
+      std::runtime_error);
+  EXPECT_FALSE(support::inRealTimeSection());
 }
 
 TEST(Contract, RealTimeSectionsNestAndEnd)

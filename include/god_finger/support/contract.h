@@ -14,6 +14,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 
 namespace god_finger::support
 {
@@ -24,41 +25,68 @@ namespace god_finger::support
   std::abort();
 }
 
-// Marks the calling thread's real-time sections (a haptic tick, a warmed physics step) in a
-// build without NDEBUG, so that an allocation inside one is caught (the tests' operator new,
-// test/helpers/allocation_counter.cpp, aborts on one). Sections nest. With NDEBUG: nothing.
+// Marks the calling thread's real-time sections (a haptic tick) in a build without NDEBUG: a
+// section that completes must have allocated nothing. A test binary's operator new
+// (test/helpers/allocation_counter.cpp) reports each allocation with noteAllocation(); the
+// section checks the count when it ends, unless it ends by an exception (a device fault that
+// stops the loop may allocate its message). Sections nest. With NDEBUG: nothing.
 #ifndef NDEBUG
-inline int& realTimeSectionDepth() noexcept
+struct RealTimeThreadState
 {
-  thread_local int depth = 0;
-  return depth;
+  int depth = 0;
+  long allocations = 0;  // in any section of this thread, since it started
+};
+inline RealTimeThreadState& realTimeThreadState() noexcept
+{
+  thread_local RealTimeThreadState state;
+  return state;
 }
 #endif
 inline bool inRealTimeSection() noexcept
 {
 #ifndef NDEBUG
-  return realTimeSectionDepth() > 0;
+  return realTimeThreadState().depth > 0;
 #else
   return false;
+#endif
+}
+// An allocation on the calling thread (operator new's hook); counted only inside a section.
+inline void noteAllocation() noexcept
+{
+#ifndef NDEBUG
+  RealTimeThreadState& state = realTimeThreadState();
+  state.allocations += state.depth > 0 ? 1 : 0;
 #endif
 }
 class RealTimeSection
 {
  public:
 #ifndef NDEBUG
-  RealTimeSection() noexcept
+  RealTimeSection() noexcept : allocations_(realTimeThreadState().allocations), exceptions_(std::uncaught_exceptions())
   {
-    ++realTimeSectionDepth();
+    ++realTimeThreadState().depth;
   }
   ~RealTimeSection()
   {
-    --realTimeSectionDepth();
+    RealTimeThreadState& state = realTimeThreadState();
+    --state.depth;
+    if (std::uncaught_exceptions() == exceptions_ && state.allocations != allocations_)
+    {
+      contractViolated(__FILE__, __LINE__, "no allocation in a completed real-time section",
+                       "a real-time section allocated");
+    }
   }
 #else
   RealTimeSection() noexcept {}  // user-provided: a section is never an "unused variable"
 #endif
   RealTimeSection(const RealTimeSection&) = delete;
   RealTimeSection& operator=(const RealTimeSection&) = delete;
+
+ private:
+#ifndef NDEBUG
+  long allocations_;
+  int exceptions_;
+#endif
 };
 }  // namespace god_finger::support
 
