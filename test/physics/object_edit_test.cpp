@@ -6,6 +6,7 @@
 #include "god_finger/physics/god_finger_world.h"
 #include "god_finger/scene/scene_file.h"
 #include "god_finger/scene/urdf_scene.h"
+#include "placed_block.h"
 
 #include <gtest/gtest.h>
 
@@ -19,14 +20,6 @@ namespace god_finger
 namespace
 {
 const std::string kUrdf = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/";
-
-SceneDescription block(const std::string& name, const Eigen::Vector3d& at)
-{
-  ObjectPlacement placement;
-  placement.name = name;
-  placement.pose.translation() = at;
-  return loadPlacedObject(kUrdf + "objects/block.urdf", placement);
-}
 
 void expectSameMotion(const BodyState& before, const BodyState& after)
 {
@@ -48,7 +41,8 @@ TEST(ObjectEdit, AnAddedObjectFallsRestsAndTheOthersKeepTheirMotion)
   const BodyState sliding = world.bodyState(cube);
   ASSERT_GT(sliding.linear_velocity.x(), 0.01);
   const double time = world.time();
-  const std::vector<std::string> warnings = world.addObject(block("block", Eigen::Vector3d(0.2, 0.0, 0.05)));
+  const std::vector<std::string> warnings =
+      world.addObject(test::placedBlock("block", Eigen::Vector3d(0.2, 0.0, 0.05)));
   EXPECT_TRUE(warnings.empty());
   ASSERT_EQ(world.bodyCount(), 3);
   EXPECT_EQ(world.scene().bodies[2].name, "block");
@@ -88,7 +82,7 @@ LetGo pressAndRemove(double let_go_time)
   WorldParams params;
   params.let_go_time = let_go_time;
   GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), params);
-  EXPECT_TRUE(world.addObject(block("block", Eigen::Vector3d(0.2, 0.0, 0.015))).empty());
+  EXPECT_TRUE(world.addObject(test::placedBlock("block", Eigen::Vector3d(0.2, 0.0, 0.015))).empty());
   const double radius = params.coupling.proxy_radius;
   const int finger = world.addInterface(Eigen::Vector3d(0.2, 0.0, 0.06));
   // The hand 25 mm above the table: through the block's top (3 cm), not into the table.
@@ -138,7 +132,7 @@ TEST(ObjectEdit, AFingerPressingARemovedObjectLetsGoOverLetGoTime)
 TEST(ObjectEdit, EditsBetweenTwoStepsSeeNoStaleContacts)
 {
   GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
-  EXPECT_TRUE(world.addObject(block("block", Eigen::Vector3d(0.2, 0.0, 0.015))).empty());
+  EXPECT_TRUE(world.addObject(test::placedBlock("block", Eigen::Vector3d(0.2, 0.0, 0.015))).empty());
   const double radius = world.params().coupling.proxy_radius;
   const int finger = world.addInterface(Eigen::Vector3d(0.2, 0.0, 0.05));
   world.setInterfaceTarget(finger, Eigen::Vector3d(0.2, 0.0, 0.026 + radius));
@@ -154,7 +148,7 @@ TEST(ObjectEdit, EditsBetweenTwoStepsSeeNoStaleContacts)
   EXPECT_EQ(snapshot.interfaces[0].contact_count, 0);  // none numbered in the old scene
   EXPECT_EQ(snapshot.scene->bodies.size(), 2u);
   world.removeObject("cube");
-  EXPECT_TRUE(world.addObject(block("block", Eigen::Vector3d(-0.2, 0.0, 0.015))).empty());
+  EXPECT_TRUE(world.addObject(test::placedBlock("block", Eigen::Vector3d(-0.2, 0.0, 0.015))).empty());
   for (int i = 0; i < 200; ++i)
   {
     world.step();
@@ -171,7 +165,10 @@ TEST(ObjectEdit, AnObjectPreparedInAnotherThreadIsAddedOnce)
   std::unique_ptr<PreparedObject> prepared;
   std::thread service(
       [&prepared, &world]
-      { prepared = GodFingerWorld::prepareObject(block("block", Eigen::Vector3d(0.2, 0, 0.05)), world.params()); });
+      {
+        prepared =
+            GodFingerWorld::prepareObject(test::placedBlock("block", Eigen::Vector3d(0.2, 0, 0.05)), world.params());
+      });
   service.join();
   ASSERT_TRUE(prepared != nullptr);
   EXPECT_EQ(prepared->object().bodies.size(), 1u);
@@ -185,14 +182,14 @@ TEST(ObjectEdit, AnObjectPreparedInAnotherThreadIsAddedOnce)
 TEST(ObjectEdit, BadEditsChangeNothing)
 {
   GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
-  EXPECT_THROW(world.addObject(block("cube", Eigen::Vector3d(0.2, 0, 0.05))), InputError);  // a name taken
+  EXPECT_THROW(world.addObject(test::placedBlock("cube", Eigen::Vector3d(0.2, 0, 0.05))), InputError);  // a name taken
   EXPECT_THROW(world.removeObject("nothing"), InputError);
   EXPECT_THROW(world.removeObject(""), InputError);
   EXPECT_THROW(world.addObject(SceneDescription()), InputError);
   EXPECT_EQ(world.bodyCount(), 2);
   try
   {
-    EXPECT_TRUE(world.addObject(block("cube", Eigen::Vector3d(0.2, 0, 0.05))).empty());
+    EXPECT_TRUE(world.addObject(test::placedBlock("cube", Eigen::Vector3d(0.2, 0, 0.05))).empty());
   }
   catch (const InputError& error)
   {
@@ -208,7 +205,8 @@ TEST(ObjectEdit, BadEditsChangeNothing)
 TEST(ObjectEdit, AnObjectStartingInsideAnotherIsWarnedAbout)
 {
   GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
-  const std::vector<std::string> warnings = world.addObject(block("block", Eigen::Vector3d(0.0, 0.0, 0.03)));
+  const std::vector<std::string> warnings =
+      world.addObject(test::placedBlock("block", Eigen::Vector3d(0.0, 0.0, 0.03)));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("'block'"), std::string::npos) << warnings[0];
   EXPECT_NE(warnings[0].find("'cube'"), std::string::npos) << warnings[0];
@@ -218,7 +216,8 @@ TEST(ObjectEdit, AnObjectAddedOverAFingerIsWarnedAbout)
 {
   GodFingerWorld world(loadUrdfScene(kUrdf + "scenes/table_box.urdf"), WorldParams());
   world.addInterface(Eigen::Vector3d(0.2, 0.0, 0.015));
-  const std::vector<std::string> warnings = world.addObject(block("block", Eigen::Vector3d(0.2, 0.0, 0.015)));
+  const std::vector<std::string> warnings =
+      world.addObject(test::placedBlock("block", Eigen::Vector3d(0.2, 0.0, 0.015)));
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("finger 0 starts"), std::string::npos) << warnings[0];
 }

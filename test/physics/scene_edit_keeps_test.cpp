@@ -2,6 +2,7 @@
 // bodies it did not touch keep their points and warm starts, sleeping bodies stay asleep (and
 // renumbered, still wake as they should), and what rested on a removed body falls. Real numbers:
 // a loaded stack's trajectory after an edit far away is the trajectory without it, bit for bit.
+#include "placed_block.h"
 #include "scene_edit.h"
 #include "world_build.h"
 #include "world_core.h"
@@ -22,20 +23,11 @@ namespace
 {
 const std::string kUrdf = std::string(GOD_FINGER_SOURCE_DIR) + "/urdf/";
 
-// A 6 x 4 x 3 cm block of 80 g centred at `at`.
-SceneDescription block(const std::string& name, const Eigen::Vector3d& at)
-{
-  ObjectPlacement placement;
-  placement.name = name;
-  placement.pose.translation() = at;
-  return loadPlacedObject(kUrdf + "objects/block.urdf", placement);
-}
-
 // table_box (a 6 cm cube on the table) with a block resting on the cube: a stack; `more` appended.
 SceneDescription stack(const std::vector<SceneDescription>& more = {})
 {
   SceneDescription scene = loadUrdfScene(kUrdf + "scenes/table_box.urdf");
-  scene.bodies.push_back(block("top", Eigen::Vector3d(0.0, 0.0, 0.075)).bodies[0]);
+  scene.bodies.push_back(test::placedBlock("top", Eigen::Vector3d(0.0, 0.0, 0.075)).bodies[0]);
   for (const SceneDescription& object : more)
   {
     scene.bodies.insert(scene.bodies.end(), object.bodies.begin(), object.bodies.end());
@@ -119,7 +111,7 @@ TEST(SceneEditKeeps, ASpawnFarAwayLeavesALoadedStackBitForBit)
   record(&edited, kSettle);
   record(&plain, kSettle);
   // In the air far from the stack: it falls 0.2 m in the compared steps, touching nothing.
-  EXPECT_TRUE(edited.addObject(block("far", Eigen::Vector3d(0.4, 0.4, 0.35))).empty());
+  EXPECT_TRUE(edited.addObject(test::placedBlock("far", Eigen::Vector3d(0.4, 0.4, 0.35))).empty());
   ASSERT_EQ(edited.bodyCount(), 4);
   const Difference difference = compare(record(&edited, kAfter), record(&plain, kAfter));
   std::printf("spawn far away: %d of %d stack values differ from the run without it, largest %.3e\n",
@@ -133,8 +125,8 @@ TEST(SceneEditKeeps, ADeleteFarAwayLeavesALoadedStackBitForBit)
   // The far block (body 0, before the stack: the stack's bodies are renumbered by the delete)
   // starts high enough to fall through both runs without touching anything.
   SceneDescription scene = loadUrdfScene(kUrdf + "scenes/table_box.urdf");
-  scene.bodies.insert(scene.bodies.begin(), block("far", Eigen::Vector3d(0.4, 0.4, 4.0)).bodies[0]);
-  scene.bodies.push_back(block("top", Eigen::Vector3d(0.0, 0.0, 0.075)).bodies[0]);
+  scene.bodies.insert(scene.bodies.begin(), test::placedBlock("far", Eigen::Vector3d(0.4, 0.4, 4.0)).bodies[0]);
+  scene.bodies.push_back(test::placedBlock("top", Eigen::Vector3d(0.0, 0.0, 0.075)).bodies[0]);
   GodFingerWorld edited(scene, awake());
   GodFingerWorld plain(scene, awake());
   record(&edited, kSettle);
@@ -195,7 +187,8 @@ TEST(SceneEditKeeps, AnEditKeepsTheUntouchedManifoldsAndTheirImpulses)
   const std::vector<ManifoldPoints> before = bodyManifolds(core);
   ASSERT_EQ(before.size(), 2u);  // cube-table, top-cube
   std::vector<int> old_of_new;
-  SceneDescription next = internal::sceneWithObject(core, block("far", Eigen::Vector3d(0.4, 0.4, 0.35)), &old_of_new);
+  SceneDescription next =
+      internal::sceneWithObject(core, test::placedBlock("far", Eigen::Vector3d(0.4, 0.4, 0.35)), &old_of_new);
   internal::changeScene(&core, std::move(next), old_of_new, nullptr);
   next = internal::sceneWithout(core, "far", &old_of_new);
   internal::changeScene(&core, std::move(next), old_of_new, nullptr);
@@ -236,11 +229,11 @@ void settleAsleep(GodFingerWorld* world)
 TEST(SceneEditKeeps, SleepingBodiesStayAsleepAcrossASpawnAndADeleteElsewhere)
 {
   // A block resting on the table beside the stack: body 3, renumbered to 2 when "top" goes.
-  GodFingerWorld world(stack({block("side", Eigen::Vector3d(-0.3, 0.0, 0.015))}), WorldParams());
+  GodFingerWorld world(stack({test::placedBlock("side", Eigen::Vector3d(-0.3, 0.0, 0.015))}), WorldParams());
   settleAsleep(&world);
   const int side = world.scene().find("side");
   const Eigen::Isometry3d side_pose = world.bodyState(side).pose;
-  EXPECT_TRUE(world.addObject(block("far", Eigen::Vector3d(0.4, 0.4, 0.2))).empty());
+  EXPECT_TRUE(world.addObject(test::placedBlock("far", Eigen::Vector3d(0.4, 0.4, 0.2))).empty());
   for (const char* name : {"cube", "top", "side"})
   {
     EXPECT_TRUE(world.bodyState(world.scene().find(name)).asleep) << name << " after the spawn";
